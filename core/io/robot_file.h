@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+// Loading robots: Klamp't `.rob` files and URDF (through urdfdom), and writing `.rob`.
+#pragma once
+
+#include <string>
+
+#include "core/io/load_context.h"
+#include "core/model/world_desc.h"
+
+namespace lamina::core {
+
+/// Loads a `.rob` or `.urdf` robot from `path` (absolute), by extension. `where` is the place
+/// that referenced it (for a missing file). Mass properties are final (automass applied),
+/// `config`/`velocity` are set from the file. The name is the file stem unless set later.
+bool LoadRobotFile(const std::string& path, const SourceLocation& where, LoadContext& context,
+                   RobotDesc* out);
+
+/// Parses `.rob` text; `path` is used for messages and to resolve relative file names.
+bool ParseRob(const std::string& text, const std::string& path, LoadContext& context,
+              RobotDesc* out);
+
+/// Parses URDF text; `path` is used for messages and to resolve mesh file names
+/// (relative to the file, or package://NAME/... searched upward from the file's directory).
+bool ParseUrdf(const std::string& text, const std::string& path, LoadContext& context,
+               RobotDesc* out);
+
+/// `.rob` text that ParseRob turns back into an identical RobotDesc (name, config and velocity
+/// aside). Mesh paths are written relative to directory `rob_dir`.
+std::string WriteRob(const RobotDesc& robot, const std::string& rob_dir);
+
+}  // namespace lamina::core

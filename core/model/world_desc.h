@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: MIT
+// WorldDesc: the editable, serializable description of a world — terrains, rigid objects,
+// robots and simulation settings — in SI units. Loaders fill it, the editor edits it, the
+// simulator is built from it and the XML writer saves it. Values that Klamp't allows to be
+// infinite (stiffness, damping, joint limits) may be +/-inf here too.
+#pragma once
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/geometry/geometry_desc.h"
+#include "core/math_types.h"
+
+namespace lamina::core {
+
+/// Contact surface of one body; two bodies' surfaces are blended per contact pair.
+struct SurfaceDesc {
+  double restitution = 0.5;  ///< kRestitution, coefficient of restitution in [0, 1]
+  double friction = 0.5;     ///< kFriction, Coulomb coefficient >= 0
+  double stiffness = kInf;   ///< kStiffness, N/m; inf = rigid contact
+  double damping = kInf;     ///< kDamping, N·s/m; inf = rigid contact
+
+  bool operator==(const SurfaceDesc&) const = default;
+};
+
+/// How the boundary layer is laid: without shrinking, or by shrinking the geometry by the
+/// padding so that the padded surface matches the original one.
+enum class Preshrink {
+  kNone = 0,     ///< geometry as is, layer outside it
+  kCopy = 1,     ///< simulate a shrunk copy; the displayed geometry is unchanged
+  kInPlace = 2,  ///< replace the geometry itself with the shrunk one
+};
+
+/// A body's rigid-body velocity at the start of a simulation, in world coordinates.
+struct Twist {
+  Vec3 linear = Vec3::Zero();   ///< m/s, of the body origin
+  Vec3 angular = Vec3::Zero();  ///< rad/s
+
+  bool operator==(const Twist&) const = default;
+};
+
+/// Per-body simulation parameters (the `<simulation>` block of a world file).
+struct BodySimParams {
+  double padding = 0.0025;  ///< boundary-layer thickness, m
+  Preshrink preshrink = Preshrink::kNone;
+  SurfaceDesc surface;
+
+  bool operator==(const BodySimParams&) const = default;
+};
+
+struct TerrainDesc {
+  std::string name;
+  GeometryDesc geometry;  ///< in world coordinates (terrains do not move)
+  BodySimParams sim;      ///< defaults: padding 0, restitution 0.1, friction 0.5, rigid
+};
+
+struct RigidObjectDesc {
+  std::string name;
+  Pose pose = Pose::Identity();  ///< object frame in the world
+  GeometryDesc geometry;         ///< in the object frame
+  double mass = 1.0;             ///< kg
+  Vec3 com = Vec3::Zero();       ///< centre of mass in the object frame, m
+  Mat3 inertia = Mat3::Zero();   ///< about the COM, object axes, kg·m²
+  BodySimParams sim;             ///< surface, padding, preshrink
+  Twist initial_velocity;        ///< velocity at simulation start
+};
+
+/// The motion a link's joint axis allows relative to its parent (`.rob` `jointtype`).
+enum class LinkJointAxis { kRevolute, kPrismatic };
+
+struct LinkDesc {
+  std::string name;
+  int parent = -1;  ///< index of the parent link, -1 for a root
+  LinkJointAxis axis_type = LinkJointAxis::kRevolute;
+  Vec3 axis = Vec3::UnitZ();                 ///< joint axis in the link frame
+  Pose parent_transform = Pose::Identity();  ///< link frame in the parent frame at q = 0
+  double q_min = -kInf, q_max = kInf;        ///< position limits, rad or m
+  double q_initial = 0.0;                    ///< configuration in the robot file
+  double velocity_min = -kInf, velocity_max = kInf;  ///< rad/s or m/s
+  double acceleration_max = kInf;                    ///< rad/s² or m/s²
+  double torque_max = kInf;                          ///< N·m or N
+  double power_max = kInf;                           ///< W
+  double mass = 1.0;                                 ///< kg
+  Vec3 com = Vec3::Zero();                           ///< in the link frame, m
+  Mat3 inertia = Mat3::Identity();                   ///< about the COM, link axes, kg·m²
+  /// Geometry in the link frame: [0] is the link's own file, later entries are mounted
+  /// meshes (`.rob` `mount`). Empty entries are allowed.
+  std::vector<GeometryDesc> geometry;
+  BodySimParams sim;  ///< defaults: padding 0.0025, restitution 0.1, friction 1, rigid
+
+  bool has_geometry() const;
+};
+
+enum class JointType { kNormal, kSpin, kWeld, kFloating, kFloatingPlanar, kBallAndSocket };
+
+/// Groups links into a joint (`.rob` `joint`). Floating joints span the virtual links from
+/// `base` (exclusive) up to `link`.
+struct JointDesc {
+  JointType type = JointType::kNormal;
+  int link = 0;
+  int base = -1;  ///< floating, floating-planar and ball-and-socket joints only; -1 = world
+};
+
+enum class DriverType { kNormal, kAffine, kTranslation, kRotation };
+
+/// An actuator (`.rob` `driver`) with its limits, servo gains and friction.
+struct DriverDesc {
+  std::string name;
+  DriverType type = DriverType::kNormal;
+  /// normal: {link}; affine: the driven links; translation/rotation: {axis link, body link}.
+  std::vector<int> links;
+  std::vector<double> affine_scale;   ///< affine: q_link = offset + scale * value
+  std::vector<double> affine_offset;  ///< affine
+  double q_min = -kInf, q_max = kInf;
+  double velocity_min = -kInf, velocity_max = kInf;
+  double torque_min = -kInf, torque_max = kInf;
+  double acceleration_min = -kInf, acceleration_max = kInf;
+  double servo_p = 0.0;           ///< proportional gain, N·m/rad
+  double servo_i = 0.0;           ///< integral gain, N·m/(rad·s)
+  double servo_d = 0.0;           ///< derivative gain, N·m·s/rad
+  double dry_friction = 0.0;      ///< Coulomb joint friction, N·m
+  double viscous_friction = 0.0;  ///< N·m·s/rad
+};
+
+struct RobotDesc {
+  std::string name;
+  /// Absolute path of the robot file it was loaded from (.rob or .urdf); "" if built in code.
+  std::string source_path;
+  std::vector<LinkDesc> links;
+  std::vector<JointDesc> joints;
+  std::vector<DriverDesc> drivers;
+  /// `selfcollision` pairs (link indices). When non-empty only these pairs may collide.
+  std::vector<std::pair<int, int>> self_collision;
+  /// `noselfcollision` pairs (link indices), removed from the default set.
+  std::vector<std::pair<int, int>> no_self_collision;
+  /// `property` lines: name -> value text (controller, sensors, ...).
+  std::map<std::string, std::string> properties;
+  VecX config;    ///< initial configuration, one entry per link
+  VecX velocity;  ///< initial joint velocities, one entry per link
+
+  int dof() const { return static_cast<int>(links.size()); }
+  /// Sum of link masses, kg.
+  double TotalMass() const;
+  /// Link pairs (i < j) that may collide with each other: all pairs of links with geometry
+  /// except parent-child, or the `selfcollision` list, minus `noselfcollision`.
+  std::vector<std::pair<int, int>> SelfCollisionPairs() const;
+};
+
+/// Global simulation settings (`<simulation><globals>`).
+struct SimSettings {
+  double timestep = 0.001;                   ///< s, largest physics sub-step
+  Vec3 gravity = Vec3(0.0, 0.0, -9.8);       ///< m/s²
+  double erp = 0.95;                         ///< global error reduction parameter
+  double cfm = 1e-6;                         ///< global constraint force mixing
+  int max_contacts = 20;                     ///< contacts kept per body pair after clustering
+  bool adaptive_time_stepping = true;        ///< roll back and halve the step when needed
+  bool rigid_object_collisions = true;       ///< object-object contacts
+  bool robot_self_collisions = false;        ///< robot self-contacts (allowed pairs only)
+  bool robot_robot_collisions = true;        ///< contacts between different robots
+
+  bool operator==(const SimSettings&) const = default;
+};
+
+/// Numbering of world elements as Klamp't numbers them: terrains, then rigid objects, then
+/// for each robot its own id followed by one id per link.
+struct WorldId {
+  enum class Kind { kTerrain, kRigidObject, kRobot, kRobotLink, kInvalid };
+  Kind kind = Kind::kInvalid;
+  int index = -1;  ///< terrain / object / robot index
+  int link = -1;   ///< link index for kRobotLink
+};
+
+struct WorldDesc {
+  std::string name;         ///< from the file name when loaded
+  std::string source_path;  ///< absolute path of the world file; "" if built in code
+  std::vector<TerrainDesc> terrains;
+  std::vector<RigidObjectDesc> objects;
+  std::vector<RobotDesc> robots;
+  SimSettings settings;
+
+  /// Klamp't world id of a terrain, object, robot or robot link.
+  int TerrainId(int terrain) const;
+  int ObjectId(int object) const;
+  int RobotId(int robot) const;
+  int RobotLinkId(int robot, int link) const;
+  /// Total number of ids (terrains + objects + sum over robots of links + 1).
+  int IdCount() const;
+  /// What a world id refers to; kind kInvalid when out of range.
+  WorldId Resolve(int id) const;
+};
+
+/// Default simulation parameters of each kind of body (Klamp't's defaults, except that
+/// terrains are rigid rather than soft; see docs/file-formats.md).
+BodySimParams DefaultTerrainSimParams();
+BodySimParams DefaultObjectSimParams();
+BodySimParams DefaultLinkSimParams();
+
+}  // namespace lamina::core

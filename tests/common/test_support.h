@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+// Helpers shared by the tests: data paths, scratch files, loading with collected diagnostics.
+#pragma once
+
+#include <string>
+
+#include "core/diagnostics.h"
+#include "core/io/load_context.h"
+#include "core/model/world_desc.h"
+
+namespace lamina::test {
+
+/// Absolute path of `relative` under tests/data.
+std::string DataPath(const std::string& relative);
+/// Absolute path of `relative` under worlds/.
+std::string WorldsPath(const std::string& relative);
+/// A fresh directory for this test (removed at exit is not guaranteed; under the system temp).
+std::string ScratchDir();
+/// Writes `text` to `name` inside ScratchDir() (subdirectories created) and returns its path.
+std::string WriteScratchFile(const std::string& name, const std::string& text);
+
+/// A world loaded with its diagnostics kept for assertions.
+struct LoadedWorld {
+  core::WorldDesc world;
+  core::Diagnostics diagnostics;
+  core::MeshCache meshes;
+  bool ok = false;
+};
+/// Loads the world file at `path` (absolute).
+void LoadWorld(const std::string& path, LoadedWorld* out);
+
+}  // namespace lamina::test
