@@ -12,7 +12,7 @@
 namespace lamina::core {
 
 /// Loads the mesh in `path`. Polygons are triangulated. Errors name `path` (and the line for
-/// OFF); `where` is the referencing location, reported as a note when the file is missing.
+/// OFF); a missing file is reported at `where`, the place that referenced it.
 std::optional<TriangleMesh> ReadMeshFile(const std::string& path, const SourceLocation& where,
                                          Diagnostics& diagnostics);
 /// Parses OFF text; `file` names it in diagnostics.

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/io/load_context.h"
 #include "core/model/world_desc.h"
@@ -23,7 +25,8 @@ bool ParseWorldXml(const std::string& text, const std::string& path, LoadContext
 /// robot as a `.rob` in `<stem>_robots/` beside it (listed in `robot_files`: path -> text).
 struct WorldFileSet {
   std::string world_xml;
-  std::vector<std::pair<std::string, std::string>> robot_files;
+  std::vector<std::pair<std::string, std::string>> robot_files;  ///< absolute path -> text
+  std::vector<std::string> errors;  ///< what the files cannot express (nothing is saved then)
 };
 WorldFileSet WriteWorld(const WorldDesc& world, const std::string& path);
 

@@ -50,14 +50,20 @@ struct BodySimParams {
   bool operator==(const BodySimParams&) const = default;
 };
 
+/// `<display>` attributes exactly as written (color, faceColor, texture, ...), kept so that
+/// saving loses nothing; the renderer interprets them.
+using DisplayAttributes = std::map<std::string, std::string>;
+
 struct TerrainDesc {
   std::string name;
+  DisplayAttributes display;
   GeometryDesc geometry;  ///< in world coordinates (terrains do not move)
   BodySimParams sim;      ///< defaults: padding 0, restitution 0.1, friction 0.5, rigid
 };
 
 struct RigidObjectDesc {
   std::string name;
+  DisplayAttributes display;
   Pose pose = Pose::Identity();  ///< object frame in the world
   GeometryDesc geometry;         ///< in the object frame
   double mass = 1.0;             ///< kg
@@ -139,6 +145,8 @@ struct RobotDesc {
   std::map<std::string, std::string> properties;
   VecX config;    ///< initial configuration, one entry per link
   VecX velocity;  ///< initial joint velocities, one entry per link
+  /// `<display>` children of the world's `<robot>` element: (link name or "" for all, attributes).
+  std::vector<std::pair<std::string, DisplayAttributes>> link_display;
 
   int dof() const { return static_cast<int>(links.size()); }
   /// Sum of link masses, kg.
@@ -179,6 +187,9 @@ struct WorldDesc {
   std::vector<RigidObjectDesc> objects;
   std::vector<RobotDesc> robots;
   SimSettings settings;
+  /// `<simulation>` children Lamina does not model yet (`<joint>`, `<state>`), kept verbatim as
+  /// XML so that saving writes them back.
+  std::vector<std::string> preserved_simulation_xml;
 
   /// Klamp't world id of a terrain, object, robot or robot link.
   int TerrainId(int terrain) const;

@@ -1,0 +1,214 @@
+// SPDX-License-Identifier: MIT
+// `.rob` assembly, second half: joints, drivers and the per-driver servo/friction vectors.
+#include <string>
+#include <vector>
+
+#include "core/io/rob_statements.h"
+#include "core/io/text_statements.h"
+
+namespace lamina::core::rob {
+
+namespace {
+
+const char* JointTypeName(JointType type) {
+  switch (type) {
+    case JointType::kNormal:
+      return "normal";
+    case JointType::kSpin:
+      return "spin";
+    case JointType::kWeld:
+      return "weld";
+    case JointType::kFloating:
+      return "floating";
+    case JointType::kFloatingPlanar:
+      return "floatingplanar";
+    case JointType::kBallAndSocket:
+      return "ballandsocket";
+  }
+  return "normal";
+}
+
+bool SpansChain(JointType type) {
+  return type == JointType::kFloating || type == JointType::kFloatingPlanar ||
+         type == JointType::kBallAndSocket;
+}
+
+// the links a joint moves, from `link` up to (excluding) `base`; empty after reporting a
+// problem
+std::vector<int> JointChain(const RobBuild& b, const JointStatement& statement) {
+  const JointDesc& joint = statement.joint;
+  const int n = b.link_count;
+  if (joint.link < 0 || joint.link >= n) {
+    b.Error(statement.line, OutOfRangeMessage("joint", joint.link, n));
+    return {};
+  }
+  if (!SpansChain(joint.type)) return {joint.link};
+  if (joint.base < -1 || joint.base >= n) {
+    b.Error(statement.line, OutOfRangeMessage("joint", joint.base, n));
+    return {};
+  }
+  std::vector<int> chain;
+  for (int link = joint.link; link != joint.base; link = b.robot.links[link].parent) {
+    if (link < 0) {
+      b.Error(statement.line, "joint base " + std::to_string(joint.base) +
+                                  " is not an ancestor of link " + std::to_string(joint.link));
+      return {};
+    }
+    chain.push_back(link);
+  }
+  const size_t expected = joint.type == JointType::kFloating ? 6 : 3;
+  const bool bad_count =
+      joint.type == JointType::kFloating ? chain.size() > expected : chain.size() != expected;
+  if (bad_count) {
+    b.Error(statement.line, "'" + std::string(JointTypeName(joint.type)) + "' joint must span " +
+                                (joint.type == JointType::kFloating ? "at most " : "") +
+                                std::to_string(expected) + " links, got " +
+                                std::to_string(chain.size()));
+    return {};
+  }
+  return chain;
+}
+
+std::vector<JointStatement> DefaultJoints(const RobotDesc& robot) {
+  std::vector<JointStatement> joints;
+  for (int i = 0; i < robot.dof(); ++i) {
+    const LinkDesc& link = robot.links[i];
+    JointStatement joint;
+    joint.joint.link = i;
+    const bool fixed_root =
+        link.parent < 0 && link.velocity_min == 0.0 && link.velocity_max == 0.0;
+    joint.joint.type = fixed_root ? JointType::kWeld : JointType::kNormal;
+    joints.push_back(joint);
+  }
+  return joints;
+}
+
+std::vector<DriverStatement> DefaultDrivers(const RobotDesc& robot) {
+  std::vector<DriverStatement> drivers;
+  for (const JointDesc& joint : robot.joints) {
+    if (joint.type != JointType::kNormal && joint.type != JointType::kSpin) continue;
+    DriverStatement driver;
+    driver.driver.links = {joint.link};
+    drivers.push_back(driver);
+  }
+  return drivers;
+}
+
+// link range and "driven twice" checks; false after reporting a problem
+bool CheckDriver(const RobBuild& b, const DriverStatement& statement,
+                 std::vector<int>* driven_on_line) {
+  const DriverDesc& driver = statement.driver;
+  for (int link : driver.links) {
+    if (link < 0 || link >= b.link_count) {
+      b.Error(statement.line, OutOfRangeMessage("driver", link, b.link_count));
+      return false;
+    }
+  }
+  // translation and rotation drivers drive only their first link
+  const bool all = driver.type == DriverType::kNormal || driver.type == DriverType::kAffine;
+  const size_t driven = all ? driver.links.size() : 1;
+  for (size_t i = 0; i < driven; ++i) {
+    int& line = (*driven_on_line)[driver.links[i]];
+    if (line != 0) {
+      b.Error(statement.line, "link " + std::to_string(driver.links[i]) +
+                                  " is already driven by the driver on line " +
+                                  std::to_string(line));
+      return false;
+    }
+    line = statement.line > 0 ? statement.line : -1;
+  }
+  return true;
+}
+
+// one per-driver vector: checked against the driver count, then copied when it fits
+void ApplyDriverVector(RobBuild& b, const NumberList& list, int driver_count,
+                       double DriverDesc::*field) {
+  if (list.empty()) return;
+  if (list.size() != driver_count) {
+    b.Error(list.line, "'" + list.keyword + "' expects " + CountOf(driver_count, "value") +
+                           " (one per driver), got " + std::to_string(list.size()));
+    return;
+  }
+  for (int i = 0; i < list.size(); ++i) {
+    if (list.values[i] < 0.0) {
+      b.Error(list.lines[i], "'" + list.keyword + "' values must be >= 0, got '" +
+                                 FormatDouble(list.values[i]) + "'");
+    }
+  }
+  if (static_cast<int>(b.robot.drivers.size()) != driver_count) return;  // already reported
+  for (int i = 0; i < driver_count; ++i) b.robot.drivers[i].*field = list.values[i];
+}
+
+}  // namespace
+
+void CopyLinkLimits(const LinkDesc& link, DriverDesc* driver) {
+  driver->q_min = link.q_min;
+  driver->q_max = link.q_max;
+  driver->velocity_min = link.velocity_min;
+  driver->velocity_max = link.velocity_max;
+  driver->torque_min = -link.torque_max;
+  driver->torque_max = link.torque_max;
+  driver->acceleration_min = -link.acceleration_max;
+  driver->acceleration_max = link.acceleration_max;
+}
+
+void BuildJoints(RobBuild& build) {
+  const std::vector<JointStatement> joints =
+      build.statements.joints.empty() ? DefaultJoints(build.robot) : build.statements.joints;
+  // line of the joint that claimed each link (-1 for a default joint, 0 for none)
+  std::vector<int> claimed(build.link_count, 0);
+  for (const JointStatement& joint : joints) {
+    const std::vector<int> chain = JointChain(build, joint);
+    bool ok = !chain.empty();
+    for (int link : chain) {
+      if (claimed[link] != 0) {
+        build.Error(joint.line, "link " + std::to_string(link) +
+                                    " is already part of the joint on line " +
+                                    std::to_string(claimed[link]));
+        ok = false;
+        break;
+      }
+    }
+    if (!ok) continue;
+    for (int link : chain) claimed[link] = joint.line > 0 ? joint.line : -1;
+    build.robot.joints.push_back(joint.joint);
+  }
+  for (int i = 0; i < build.link_count; ++i) {
+    if (claimed[i] == 0) build.Warning(0, "link " + std::to_string(i) + " is not part of any joint");
+  }
+}
+
+void BuildDrivers(RobBuild& build) {
+  const RobStatements& s = build.statements;
+  const std::vector<DriverStatement> drivers =
+      s.drivers.empty() ? DefaultDrivers(build.robot) : s.drivers;
+  std::vector<int> driven_on_line(build.link_count, 0);
+  for (const DriverStatement& statement : drivers) {
+    if (!CheckDriver(build, statement, &driven_on_line)) continue;
+    DriverDesc driver = statement.driver;
+    const LinkDesc& first = build.robot.links[driver.links.front()];
+    if (driver.type != DriverType::kAffine) CopyLinkLimits(first, &driver);
+    driver.name = first.name;
+    build.robot.drivers.push_back(driver);
+  }
+  const int driver_count = static_cast<int>(drivers.size());
+  if (!s.driver_names.empty()) {
+    if (s.driver_names.size() != driver_count) {
+      build.Error(s.driver_names.line, "'" + s.driver_names.keyword + "' expects " +
+                                           CountOf(driver_count, "name") +
+                                           " (one per driver), got " +
+                                           std::to_string(s.driver_names.size()));
+    } else if (static_cast<int>(build.robot.drivers.size()) == driver_count) {
+      for (int i = 0; i < driver_count; ++i) {
+        build.robot.drivers[i].name = s.driver_names.values[i];
+      }
+    }
+  }
+  ApplyDriverVector(build, s.servo_p, driver_count, &DriverDesc::servo_p);
+  ApplyDriverVector(build, s.servo_i, driver_count, &DriverDesc::servo_i);
+  ApplyDriverVector(build, s.servo_d, driver_count, &DriverDesc::servo_d);
+  ApplyDriverVector(build, s.dry_friction, driver_count, &DriverDesc::dry_friction);
+  ApplyDriverVector(build, s.viscous_friction, driver_count, &DriverDesc::viscous_friction);
+}
+
+}  // namespace lamina::core::rob

@@ -1,0 +1,298 @@
+// SPDX-License-Identifier: MIT
+// Reading Klamp't world XML into a WorldDesc: `<robot>`, `<rigidObject>`, `<terrain>` and
+// `<display>` here, the `<simulation>` block in world_simulation_reader.cpp.
+#include <tinyxml2.h>
+
+#include "core/geometry/mass_properties.h"
+#include "core/io/geometry_file.h"
+#include "core/io/object_file.h"
+#include "core/io/paths.h"
+#include "core/io/robot_file.h"
+#include "core/io/trajectory_file.h"
+#include "core/io/world_file.h"
+#include "core/io/world_simulation_reader.h"
+#include "core/io/world_xml_transform.h"
+#include "core/io/xml_element_reader.h"
+
+namespace lamina::core {
+
+namespace {
+
+using tinyxml2::XMLElement;
+
+// Klamp't's default `automassSurfaceFraction` for world XML objects
+constexpr double kDefaultSurfaceFraction = 1.0;
+
+DisplayAttributes ReadDisplay(const XMLElement& element) {
+  DisplayAttributes display;
+  for (const tinyxml2::XMLAttribute* a = element.FirstAttribute(); a; a = a->Next()) {
+    display[a->Name()] = a->Value();
+  }
+  return display;
+}
+
+class WorldReader {
+ public:
+  WorldReader(const std::string& path, LoadContext& context, WorldDesc* world)
+      : path_(path), dir_(DirectoryOf(path)), context_(context), world_(world) {}
+
+  void ReadWorld(const XMLElement& root);
+
+ private:
+  XmlElementReader Reader(const XMLElement& e) const {
+    return XmlElementReader(e, path_, context_.diagnostics);
+  }
+  void ReadRobot(const XMLElement& element);
+  void ReadRobotChildren(const XMLElement& element, RobotDesc* robot);
+  void ReadRobotConfig(const XmlElementReader& reader, RobotDesc* robot);
+  void ReadObject(const XMLElement& element);
+  void ReadObjectGeometry(const XMLElement& element, RigidObjectDesc* object);
+  void ReadObjectPhysics(const XMLElement& element, RigidObjectDesc* object);
+  void ReadTerrain(const XMLElement& element);
+
+  std::string path_;
+  std::string dir_;
+  LoadContext& context_;
+  WorldDesc* world_;
+};
+
+void WorldReader::ReadWorld(const XMLElement& root) {
+  // Klamp't reads robots, then objects, then terrains, whatever the order in the file
+  for (const char* kind : {"robot", "rigidObject", "terrain"}) {
+    for (const XMLElement* e = root.FirstChildElement(kind); e; e = e->NextSiblingElement(kind)) {
+      if (std::string(kind) == "robot") ReadRobot(*e);
+      if (std::string(kind) == "rigidObject") ReadObject(*e);
+      if (std::string(kind) == "terrain") ReadTerrain(*e);
+    }
+  }
+  for (const XMLElement* e = root.FirstChildElement(); e; e = e->NextSiblingElement()) {
+    const std::string name = e->Name();
+    if (name == "robot" || name == "rigidObject" || name == "terrain") continue;
+    if (name == "simulation") {
+      ReadSimulationBlock(*e, path_, context_.diagnostics, world_);
+    } else if (name == "display" || name == "appearance" || name == "goal") {
+      // viewer settings of Klamp't's own GUI; nothing in the world depends on them
+      Reader(*e).Warning("element ignored (viewer setting)");
+    } else {
+      Reader(*e).Warning("unknown element ignored");
+    }
+  }
+}
+
+void WorldReader::ReadRobot(const XMLElement& element) {
+  const XmlElementReader reader = Reader(element);
+  reader.WarnUnknownAttributes({"name", "file", "config", "configfile", "translation", "position",
+                                "rotateRPY", "rotateMoment", "rotateX", "rotateY", "rotateZ"});
+  const auto file = reader.String("file");
+  if (!file) {
+    reader.Error("missing attribute 'file'");
+    return;
+  }
+  RobotDesc robot;
+  if (!LoadRobotFile(ResolvePath(dir_, *file), reader.location(), context_, &robot)) return;
+  robot.name = reader.String("name").value_or("Robot");
+  ReadRobotConfig(reader, &robot);
+  Pose pose;
+  if (ReadPose(reader, &pose)) {
+    for (LinkDesc& link : robot.links) {
+      if (link.parent < 0) link.parent_transform = pose * link.parent_transform;
+    }
+  }
+  ReadRobotChildren(element, &robot);
+  world_->robots.push_back(std::move(robot));
+}
+
+void WorldReader::ReadRobotConfig(const XmlElementReader& reader, RobotDesc* robot) {
+  std::optional<VecX> config = reader.CountedVector("config");
+  if (const auto file = reader.String("configfile")) {
+    config = ReadConfigFile(ResolvePath(dir_, *file), context_.diagnostics);
+  }
+  if (!config) return;
+  if (config->size() != robot->dof()) {
+    reader.Error("configuration has " + std::to_string(config->size()) + " values but robot '" +
+                 robot->name + "' has " + std::to_string(robot->dof()) + " links");
+    return;
+  }
+  robot->config = *config;
+}
+
+void WorldReader::ReadRobotChildren(const XMLElement& element, RobotDesc* robot) {
+  for (const XMLElement* e = element.FirstChildElement(); e; e = e->NextSiblingElement()) {
+    const std::string name = e->Name();
+    if (name == "display") {
+      DisplayAttributes display = ReadDisplay(*e);
+      const std::string link = display.count("link") ? display["link"] : "";
+      display.erase("link");
+      robot->link_display.emplace_back(link, std::move(display));
+    } else if (name == "sensors") {
+      tinyxml2::XMLPrinter printer(nullptr, true);
+      e->Accept(&printer);
+      robot->properties["sensors"] =
+          e->Attribute("file") ? std::string(e->Attribute("file")) : printer.CStr();
+    } else {
+      Reader(*e).Warning("unknown element ignored");
+    }
+  }
+}
+
+void WorldReader::ReadObject(const XMLElement& element) {
+  const XmlElementReader reader = Reader(element);
+  reader.WarnUnknownAttributes({"name", "file", "translation", "position", "rotateRPY",
+                                "rotateMoment", "rotateX", "rotateY", "rotateZ"});
+  RigidObjectDesc object;
+  object.inertia = Mat3::Zero();
+  object.sim = DefaultObjectSimParams();
+  if (const auto file = reader.String("file")) {
+    if (!LoadRigidObjectFile(ResolvePath(dir_, *file), reader.location(), context_, &object)) {
+      return;
+    }
+  }
+  object.name = reader.String("name").value_or("Object");
+  if (const XMLElement* geometry = element.FirstChildElement("geometry")) {
+    ReadObjectGeometry(*geometry, &object);
+  }
+  if (object.geometry.empty()) {
+    reader.Error("has no geometry (give 'file' or a <geometry mesh=...> child)");
+    return;
+  }
+  Pose pose;
+  if (ReadPose(reader, &pose)) object.pose = pose;
+  if (const XMLElement* physics = element.FirstChildElement("physics")) {
+    ReadObjectPhysics(*physics, &object);
+  }
+  if (object.inertia.isZero(0.0) && object.mass > 0.0) {
+    reader.Warning("no inertia given; computed from the geometry (Klamp't would leave it zero)");
+    const MassProperties mass =
+        ComputeMassProperties(object.geometry, object.mass, kDefaultSurfaceFraction);
+    if (mass.valid) object.inertia = mass.inertia;
+  }
+  for (const XMLElement* e = element.FirstChildElement(); e; e = e->NextSiblingElement()) {
+    const std::string name = e->Name();
+    if (name == "display") {
+      object.display = ReadDisplay(*e);
+    } else if (name != "geometry" && name != "physics") {
+      Reader(*e).Warning("unknown element ignored");
+    }
+  }
+  world_->objects.push_back(std::move(object));
+}
+
+void WorldReader::ReadObjectGeometry(const XMLElement& element, RigidObjectDesc* object) {
+  const XmlElementReader reader = Reader(element);
+  reader.WarnUnknownAttributes({"mesh", "file", "scale", "margin", "translation", "position",
+                                "rotateRPY", "rotateMoment", "rotateX", "rotateY", "rotateZ"});
+  auto file = reader.String("mesh");
+  if (!file) file = reader.String("file");
+  if (file) {
+    GeometryDesc geometry;
+    if (!LoadGeometryFile(ResolvePath(dir_, *file), reader.location(), context_, &geometry)) {
+      return;
+    }
+    object->geometry = std::move(geometry);
+  }
+  ApplyGeometryTransform(reader, &object->geometry);
+  if (const auto margin = reader.Number("margin", false)) {
+    if (*margin < 0) {
+      reader.Error("margin", "must be >= 0, got '" + *reader.String("margin") + "'");
+    } else {
+      object->geometry.margin = *margin;
+    }
+  }
+}
+
+void WorldReader::ReadObjectPhysics(const XMLElement& element, RigidObjectDesc* object) {
+  const XmlElementReader reader = Reader(element);
+  reader.WarnUnknownAttributes({"mass", "com", "inertia", "automass", "automassSurfaceFraction",
+                                "kRestitution", "kFriction", "kStiffness", "kDamping"});
+  if (const auto mass = reader.Number("mass", false)) {
+    if (*mass < 0) {
+      reader.Error("mass", "must be >= 0, got '" + *reader.String("mass") + "'");
+    } else {
+      object->mass = *mass;
+    }
+  }
+  if (const auto com = reader.Vector3("com")) object->com = *com;
+  if (const auto inertia = reader.Numbers("inertia", 9)) {
+    object->inertia = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(
+        inertia->data());
+  }
+  double fraction = kDefaultSurfaceFraction;
+  if (const auto value = reader.Number("automassSurfaceFraction", false)) {
+    if (*value < 0 || *value > 1) {
+      reader.Error("automassSurfaceFraction", "must be in [0, 1], got '" +
+                                                  *reader.String("automassSurfaceFraction") + "'");
+    } else {
+      fraction = *value;
+    }
+  }
+  if (reader.Boolean("automass").value_or(false)) {
+    const MassProperties mass = ComputeMassProperties(object->geometry, object->mass, fraction);
+    if (mass.valid) {
+      object->com = mass.com;
+      object->inertia = mass.inertia;
+    } else {
+      reader.Error("automass: cannot compute mass properties from degenerate geometry");
+    }
+  }
+  ReadSurfaceAttributes(reader, &object->sim.surface);
+}
+
+void WorldReader::ReadTerrain(const XMLElement& element) {
+  const XmlElementReader reader = Reader(element);
+  reader.WarnUnknownAttributes({"name", "file", "kFriction", "margin", "scale", "translation",
+                                "position", "rotateRPY", "rotateMoment", "rotateX", "rotateY",
+                                "rotateZ"});
+  const auto file = reader.String("file");
+  if (!file) {
+    reader.Error("missing attribute 'file'");
+    return;
+  }
+  TerrainDesc terrain;
+  if (!LoadTerrainFile(ResolvePath(dir_, *file), reader.location(), context_, &terrain)) return;
+  terrain.name = reader.String("name").value_or("Terrain" + std::to_string(world_->terrains.size()));
+  ApplyGeometryTransform(reader, &terrain.geometry);
+  if (const auto margin = reader.Number("margin", false)) terrain.geometry.margin = *margin;
+  if (const auto friction = reader.Number("kFriction")) {
+    if (*friction < 0) {
+      reader.Error("kFriction", "must be >= 0, got '" + *reader.String("kFriction") + "'");
+    } else {
+      terrain.sim.surface.friction = *friction;
+    }
+  }
+  for (const XMLElement* e = element.FirstChildElement(); e; e = e->NextSiblingElement()) {
+    if (std::string(e->Name()) == "display") {
+      terrain.display = ReadDisplay(*e);
+    } else {
+      Reader(*e).Warning("unknown element ignored");
+    }
+  }
+  world_->terrains.push_back(std::move(terrain));
+}
+
+}  // namespace
+
+bool ParseWorldXml(const std::string& text, const std::string& path, LoadContext& context,
+                   WorldDesc* out) {
+  const int errors_before = context.diagnostics.error_count();
+  *out = WorldDesc();
+  out->name = StemOf(path);
+  out->source_path = path;
+  tinyxml2::XMLDocument document;
+  if (document.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS) {
+    context.diagnostics.Error({path, document.ErrorLineNum(), 0},
+                              std::string("malformed XML: ") +
+                                  tinyxml2::XMLDocument::ErrorIDToName(document.ErrorID()));
+    return false;
+  }
+  const XMLElement* root = document.RootElement();
+  if (!root || std::string(root->Name()) != "world") {
+    context.diagnostics.Error({path, root ? root->GetLineNum() : 1, 0},
+                              "root element must be <world>, got <" +
+                                  std::string(root ? root->Name() : "") + ">");
+    return false;
+  }
+  WorldReader(path, context, out).ReadWorld(*root);
+  return context.diagnostics.error_count() == errors_before;
+}
+
+}  // namespace lamina::core

@@ -1,0 +1,190 @@
+// SPDX-License-Identifier: MIT
+#include "core/io/xml_element_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/io/text_statements.h"
+
+namespace lamina::core {
+
+namespace {
+
+std::vector<std::string> SplitWhitespace(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<std::string> words;
+  std::string word;
+  while (in >> word) words.push_back(word);
+  return words;
+}
+
+int EditDistance(const std::string& a, const std::string& b) {
+  std::vector<int> previous(b.size() + 1), current(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) previous[j] = static_cast<int>(j);
+  for (size_t i = 1; i <= a.size(); ++i) {
+    current[0] = static_cast<int>(i);
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const int substitution = previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      current[j] = std::min({previous[j] + 1, current[j - 1] + 1, substitution});
+    }
+    std::swap(previous, current);
+  }
+  return previous[b.size()];
+}
+
+std::string MakeLabel(const tinyxml2::XMLElement& element) {
+  std::string label = "<" + std::string(element.Name());
+  for (const char* key : {"name", "index"}) {
+    if (const char* value = element.Attribute(key)) {
+      label += " " + std::string(key) + "=\"" + value + "\"";
+      break;
+    }
+  }
+  return label + ">";
+}
+
+}  // namespace
+
+std::string SuggestName(const std::string& name, const std::vector<std::string>& known) {
+  const std::string lower = ToLower(name);
+  std::string best;
+  // long names tolerate one more edit ("translate" -> "translation")
+  int best_distance = lower.size() >= 8 ? 4 : 3;
+  for (const std::string& candidate : known) {
+    const std::string candidate_lower = ToLower(candidate);
+    if (candidate_lower == "k" + lower) return candidate;
+    const int distance = EditDistance(lower, candidate_lower);
+    if (distance < best_distance) {
+      best_distance = distance;
+      best = candidate;
+    }
+  }
+  return best;
+}
+
+XmlElementReader::XmlElementReader(const tinyxml2::XMLElement& element, const std::string& file,
+                                   Diagnostics& diagnostics)
+    : element_(element), file_(file), diagnostics_(diagnostics), label_(MakeLabel(element)) {}
+
+std::optional<std::string> XmlElementReader::String(const char* name) const {
+  const char* value = element_.Attribute(name);
+  if (!value) return std::nullopt;
+  return std::string(value);
+}
+
+std::optional<std::vector<double>> XmlElementReader::AllNumbers(const char* name) const {
+  const char* value = element_.Attribute(name);
+  if (!value) return std::nullopt;
+  std::vector<double> numbers;
+  for (const std::string& word : SplitWhitespace(value)) {
+    double number = 0.0;
+    if (!ParseDouble(word, &number)) {
+      Error(name, "has '" + word + "', which is not a number");
+      return std::nullopt;
+    }
+    numbers.push_back(number);
+  }
+  return numbers;
+}
+
+std::optional<double> XmlElementReader::Number(const char* name, bool allow_infinite) const {
+  const auto numbers = AllNumbers(name);
+  if (!numbers) return std::nullopt;
+  if (numbers->size() != 1) {
+    Error(name, "expects 1 number, got '" + std::string(element_.Attribute(name)) + "'");
+    return std::nullopt;
+  }
+  if (!allow_infinite && std::isinf(numbers->front())) {
+    Error(name, "must be finite, got '" + std::string(element_.Attribute(name)) + "'");
+    return std::nullopt;
+  }
+  return numbers->front();
+}
+
+std::optional<std::vector<double>> XmlElementReader::Numbers(const char* name, int count) const {
+  auto numbers = AllNumbers(name);
+  if (!numbers) return std::nullopt;
+  if (static_cast<int>(numbers->size()) != count) {
+    Error(name, "expects " + std::to_string(count) + " numbers, got '" +
+                    std::string(element_.Attribute(name)) + "'");
+    return std::nullopt;
+  }
+  for (double number : *numbers) {
+    if (std::isinf(number)) {
+      Error(name, "must be finite, got '" + std::string(element_.Attribute(name)) + "'");
+      return std::nullopt;
+    }
+  }
+  return numbers;
+}
+
+std::optional<Vec3> XmlElementReader::Vector3(const char* name) const {
+  const auto numbers = Numbers(name, 3);
+  if (!numbers) return std::nullopt;
+  return Vec3((*numbers)[0], (*numbers)[1], (*numbers)[2]);
+}
+
+std::optional<int> XmlElementReader::Integer(const char* name) const {
+  const char* value = element_.Attribute(name);
+  if (!value) return std::nullopt;
+  const std::vector<std::string> words = SplitWhitespace(value);
+  int number = 0;
+  if (words.size() != 1 || !ParseInt(words[0], &number)) {
+    Error(name, "expects an integer, got '" + std::string(value) + "'");
+    return std::nullopt;
+  }
+  return number;
+}
+
+std::optional<bool> XmlElementReader::Boolean(const char* name) const {
+  const char* value = element_.Attribute(name);
+  if (!value) return std::nullopt;
+  const std::string word = ToLower(value);
+  if (word == "1" || word == "true") return true;
+  if (word == "0" || word == "false") return false;
+  Error(name, "expects 0 or 1, got '" + std::string(value) + "'");
+  return std::nullopt;
+}
+
+std::optional<VecX> XmlElementReader::CountedVector(const char* name) const {
+  const auto numbers = AllNumbers(name);
+  if (!numbers) return std::nullopt;
+  const int declared = numbers->empty() ? -1 : static_cast<int>(numbers->front());
+  const int given = static_cast<int>(numbers->size()) - 1;
+  if (numbers->empty() || numbers->front() != declared || declared != given) {
+    Error(name, "declares " + std::to_string(std::max(declared, 0)) + " values but gives " +
+                    std::to_string(std::max(given, 0)));
+    return std::nullopt;
+  }
+  VecX vector(given);
+  for (int i = 0; i < given; ++i) vector[i] = (*numbers)[i + 1];
+  return vector;
+}
+
+void XmlElementReader::Error(const char* name, const std::string& message) const {
+  diagnostics_.Error(location(), label_ + ": attribute '" + name + "' " + message);
+}
+
+void XmlElementReader::Error(const std::string& message) const {
+  diagnostics_.Error(location(), label_ + ": " + message);
+}
+
+void XmlElementReader::Warning(const std::string& message) const {
+  diagnostics_.Warning(location(), label_ + ": " + message);
+}
+
+void XmlElementReader::WarnUnknownAttributes(std::initializer_list<const char*> known) const {
+  const std::vector<std::string> names(known.begin(), known.end());
+  for (const tinyxml2::XMLAttribute* attribute = element_.FirstAttribute(); attribute;
+       attribute = attribute->Next()) {
+    const std::string name = attribute->Name();
+    if (std::find(names.begin(), names.end(), name) != names.end()) continue;
+    std::string message = "unknown attribute '" + name + "' ignored";
+    const std::string suggestion = SuggestName(name, names);
+    if (!suggestion.empty()) message += " (did you mean '" + suggestion + "'?)";
+    Warning(message);
+  }
+}
+
+}  // namespace lamina::core

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// Typed, located reading of XML attributes for the world loader: every bad value becomes a
+// `file:line: error:` naming the element and attribute, every unknown attribute a warning with
+// a "did you mean" suggestion.
+#pragma once
+
+#include <tinyxml2.h>
+
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/diagnostics.h"
+#include "core/math_types.h"
+
+namespace lamina::core {
+
+class XmlElementReader {
+ public:
+  XmlElementReader(const tinyxml2::XMLElement& element, const std::string& file,
+                   Diagnostics& diagnostics);
+
+  /// `<tag name="...">` (or index="..." when unnamed, else `<tag>`), for messages.
+  const std::string& label() const { return label_; }
+  SourceLocation location() const { return {file_, element_.GetLineNum(), 0}; }
+  const tinyxml2::XMLElement& element() const { return element_; }
+
+  bool Has(const char* name) const { return element_.Attribute(name) != nullptr; }
+  std::optional<std::string> String(const char* name) const;
+  /// A finite number, or inf when `allow_infinite`.
+  std::optional<double> Number(const char* name, bool allow_infinite = true) const;
+  /// Exactly `count` numbers.
+  std::optional<std::vector<double>> Numbers(const char* name, int count) const;
+  std::optional<Vec3> Vector3(const char* name) const;
+  std::optional<int> Integer(const char* name) const;
+  /// "0"/"1"/"true"/"false".
+  std::optional<bool> Boolean(const char* name) const;
+  /// A Klamp't vector "N v1 ... vN": the count must match the values that follow.
+  std::optional<VecX> CountedVector(const char* name) const;
+
+  /// Reports an error about attribute `name` of this element.
+  void Error(const char* name, const std::string& message) const;
+  void Error(const std::string& message) const;
+  void Warning(const std::string& message) const;
+
+  /// Warns about every attribute not in `known`, suggesting the closest known name.
+  void WarnUnknownAttributes(std::initializer_list<const char*> known) const;
+
+ private:
+  std::optional<std::vector<double>> AllNumbers(const char* name) const;
+
+  const tinyxml2::XMLElement& element_;
+  std::string file_;
+  Diagnostics& diagnostics_;
+  std::string label_;
+};
+
+/// The known name closest to `name` (case-insensitive edit distance <= 2, or `name` with a
+/// Klamp't `k` prefix), or "" when none is close.
+std::string SuggestName(const std::string& name, const std::vector<std::string>& known);
+
+}  // namespace lamina::core

@@ -1,0 +1,260 @@
+// SPDX-License-Identifier: MIT
+#include "core/model/world_compare.h"
+
+#include <cmath>
+
+#include "core/io/text_statements.h"
+
+namespace lamina::core {
+
+namespace {
+
+class Comparer {
+ public:
+  explicit Comparer(double tolerance) : tolerance_(tolerance) {}
+
+  void Number(const std::string& field, double a, double b) {
+    const bool same = (a == b) || (std::isfinite(a) && std::isfinite(b) &&
+                                   std::abs(a - b) <= tolerance_);
+    if (!same) Add(field, FormatDouble(a), FormatDouble(b));
+  }
+  template <typename Derived>
+  void Matrix(const std::string& field, const Eigen::MatrixBase<Derived>& a,
+              const Eigen::MatrixBase<Derived>& b) {
+    if (a.rows() != b.rows() || a.cols() != b.cols()) {
+      Add(field + ".size", std::to_string(a.size()), std::to_string(b.size()));
+      return;
+    }
+    for (Eigen::Index i = 0; i < a.rows(); ++i) {
+      for (Eigen::Index j = 0; j < a.cols(); ++j) {
+        Number(field + "(" + std::to_string(i) + "," + std::to_string(j) + ")", a(i, j), b(i, j));
+      }
+    }
+  }
+  template <typename T>
+  void Exact(const std::string& field, const T& a, const T& b, const std::string& a_text,
+             const std::string& b_text) {
+    if (!(a == b)) Add(field, a_text, b_text);
+  }
+  void Text(const std::string& field, const std::string& a, const std::string& b) {
+    if (a != b) Add(field, "'" + a + "'", "'" + b + "'");
+  }
+  void Integer(const std::string& field, long a, long b) {
+    if (a != b) Add(field, std::to_string(a), std::to_string(b));
+  }
+  bool Count(const std::string& field, size_t a, size_t b) {
+    Integer(field + ".size", static_cast<long>(a), static_cast<long>(b));
+    return a == b;
+  }
+  void Add(const std::string& field, const std::string& a, const std::string& b) {
+    differences_.push_back(field + ": " + a + " vs " + b);
+  }
+
+  void Geometry(const std::string& f, const GeometryDesc& a, const GeometryDesc& b);
+  void Sim(const std::string& f, const BodySimParams& a, const BodySimParams& b);
+  void Link(const std::string& f, const LinkDesc& a, const LinkDesc& b);
+  void Driver(const std::string& f, const DriverDesc& a, const DriverDesc& b);
+  void Robot(const std::string& f, const RobotDesc& a, const RobotDesc& b);
+  void Object(const std::string& f, const RigidObjectDesc& a, const RigidObjectDesc& b);
+  void Settings(const SimSettings& a, const SimSettings& b);
+
+  std::vector<std::string> differences_;
+
+ private:
+  double tolerance_;
+};
+
+void Comparer::Geometry(const std::string& f, const GeometryDesc& a, const GeometryDesc& b) {
+  Integer(f + ".kind", static_cast<int>(a.kind), static_cast<int>(b.kind));
+  Text(f + ".path", a.path, b.path);
+  Number(f + ".margin", a.margin, b.margin);
+  Matrix(f + ".matrix", a.Matrix().matrix(), b.Matrix().matrix());
+  if (a.kind == GeometryKind::kPrimitive && b.kind == GeometryKind::kPrimitive) {
+    Integer(f + ".primitive.type", static_cast<int>(a.primitive.type),
+            static_cast<int>(b.primitive.type));
+    Matrix(f + ".primitive.pose", a.primitive.pose.matrix(), b.primitive.pose.matrix());
+    Number(f + ".primitive.radius", a.primitive.radius, b.primitive.radius);
+    Number(f + ".primitive.length", a.primitive.length, b.primitive.length);
+    Matrix(f + ".primitive.size", a.primitive.size, b.primitive.size);
+  }
+  if (a.kind == GeometryKind::kMesh && b.kind == GeometryKind::kMesh) {
+    Integer(f + ".triangles", a.triangle_count(), b.triangle_count());
+  }
+}
+
+void Comparer::Sim(const std::string& f, const BodySimParams& a, const BodySimParams& b) {
+  Number(f + ".padding", a.padding, b.padding);
+  Integer(f + ".preshrink", static_cast<int>(a.preshrink), static_cast<int>(b.preshrink));
+  Number(f + ".kRestitution", a.surface.restitution, b.surface.restitution);
+  Number(f + ".kFriction", a.surface.friction, b.surface.friction);
+  Number(f + ".kStiffness", a.surface.stiffness, b.surface.stiffness);
+  Number(f + ".kDamping", a.surface.damping, b.surface.damping);
+}
+
+void Comparer::Link(const std::string& f, const LinkDesc& a, const LinkDesc& b) {
+  Text(f + ".name", a.name, b.name);
+  Integer(f + ".parent", a.parent, b.parent);
+  Integer(f + ".axis_type", static_cast<int>(a.axis_type), static_cast<int>(b.axis_type));
+  Matrix(f + ".axis", a.axis, b.axis);
+  Matrix(f + ".parent_transform", a.parent_transform.matrix(), b.parent_transform.matrix());
+  Number(f + ".q_min", a.q_min, b.q_min);
+  Number(f + ".q_max", a.q_max, b.q_max);
+  Number(f + ".q_initial", a.q_initial, b.q_initial);
+  Number(f + ".velocity_min", a.velocity_min, b.velocity_min);
+  Number(f + ".velocity_max", a.velocity_max, b.velocity_max);
+  Number(f + ".acceleration_max", a.acceleration_max, b.acceleration_max);
+  Number(f + ".torque_max", a.torque_max, b.torque_max);
+  Number(f + ".power_max", a.power_max, b.power_max);
+  Number(f + ".mass", a.mass, b.mass);
+  Matrix(f + ".com", a.com, b.com);
+  Matrix(f + ".inertia", a.inertia, b.inertia);
+  if (Count(f + ".geometry", a.geometry.size(), b.geometry.size())) {
+    for (size_t i = 0; i < a.geometry.size(); ++i) {
+      Geometry(f + ".geometry[" + std::to_string(i) + "]", a.geometry[i], b.geometry[i]);
+    }
+  }
+  Sim(f + ".sim", a.sim, b.sim);
+}
+
+void Comparer::Driver(const std::string& f, const DriverDesc& a, const DriverDesc& b) {
+  Text(f + ".name", a.name, b.name);
+  Integer(f + ".type", static_cast<int>(a.type), static_cast<int>(b.type));
+  if (Count(f + ".links", a.links.size(), b.links.size())) {
+    for (size_t i = 0; i < a.links.size(); ++i) {
+      Integer(f + ".links[" + std::to_string(i) + "]", a.links[i], b.links[i]);
+    }
+  }
+  if (Count(f + ".affine_scale", a.affine_scale.size(), b.affine_scale.size())) {
+    for (size_t i = 0; i < a.affine_scale.size(); ++i) {
+      Number(f + ".affine_scale[" + std::to_string(i) + "]", a.affine_scale[i],
+             b.affine_scale[i]);
+    }
+  }
+  if (Count(f + ".affine_offset", a.affine_offset.size(), b.affine_offset.size())) {
+    for (size_t i = 0; i < a.affine_offset.size(); ++i) {
+      Number(f + ".affine_offset[" + std::to_string(i) + "]", a.affine_offset[i],
+             b.affine_offset[i]);
+    }
+  }
+  Number(f + ".q_min", a.q_min, b.q_min);
+  Number(f + ".q_max", a.q_max, b.q_max);
+  Number(f + ".velocity_min", a.velocity_min, b.velocity_min);
+  Number(f + ".velocity_max", a.velocity_max, b.velocity_max);
+  Number(f + ".torque_min", a.torque_min, b.torque_min);
+  Number(f + ".torque_max", a.torque_max, b.torque_max);
+  Number(f + ".acceleration_min", a.acceleration_min, b.acceleration_min);
+  Number(f + ".acceleration_max", a.acceleration_max, b.acceleration_max);
+  Number(f + ".servo_p", a.servo_p, b.servo_p);
+  Number(f + ".servo_i", a.servo_i, b.servo_i);
+  Number(f + ".servo_d", a.servo_d, b.servo_d);
+  Number(f + ".dry_friction", a.dry_friction, b.dry_friction);
+  Number(f + ".viscous_friction", a.viscous_friction, b.viscous_friction);
+}
+
+std::string PairsText(const std::vector<std::pair<int, int>>& pairs) {
+  std::string text;
+  for (const auto& [i, j] : pairs) text += "(" + std::to_string(i) + "," + std::to_string(j) + ")";
+  return text;
+}
+
+void Comparer::Robot(const std::string& f, const RobotDesc& a, const RobotDesc& b) {
+  if (Count(f + ".links", a.links.size(), b.links.size())) {
+    for (size_t i = 0; i < a.links.size(); ++i) {
+      Link(f + ".links[" + std::to_string(i) + "]", a.links[i], b.links[i]);
+    }
+  }
+  if (Count(f + ".joints", a.joints.size(), b.joints.size())) {
+    for (size_t i = 0; i < a.joints.size(); ++i) {
+      const std::string g = f + ".joints[" + std::to_string(i) + "]";
+      Integer(g + ".type", static_cast<int>(a.joints[i].type), static_cast<int>(b.joints[i].type));
+      Integer(g + ".link", a.joints[i].link, b.joints[i].link);
+      Integer(g + ".base", a.joints[i].base, b.joints[i].base);
+    }
+  }
+  if (Count(f + ".drivers", a.drivers.size(), b.drivers.size())) {
+    for (size_t i = 0; i < a.drivers.size(); ++i) {
+      Driver(f + ".drivers[" + std::to_string(i) + "]", a.drivers[i], b.drivers[i]);
+    }
+  }
+  Exact(f + ".self_collision", a.self_collision, b.self_collision, PairsText(a.self_collision),
+        PairsText(b.self_collision));
+  Exact(f + ".no_self_collision", a.no_self_collision, b.no_self_collision,
+        PairsText(a.no_self_collision), PairsText(b.no_self_collision));
+  Exact(f + ".properties", a.properties, b.properties, std::to_string(a.properties.size()),
+        std::to_string(b.properties.size()));
+  Matrix(f + ".config", a.config, b.config);
+  Matrix(f + ".velocity", a.velocity, b.velocity);
+  Exact(f + ".link_display", a.link_display, b.link_display,
+        std::to_string(a.link_display.size()), std::to_string(b.link_display.size()));
+}
+
+void Comparer::Object(const std::string& f, const RigidObjectDesc& a, const RigidObjectDesc& b) {
+  Text(f + ".name", a.name, b.name);
+  Matrix(f + ".pose", a.pose.matrix(), b.pose.matrix());
+  Geometry(f + ".geometry", a.geometry, b.geometry);
+  Number(f + ".mass", a.mass, b.mass);
+  Matrix(f + ".com", a.com, b.com);
+  Matrix(f + ".inertia", a.inertia, b.inertia);
+  Sim(f + ".sim", a.sim, b.sim);
+  Matrix(f + ".initial_velocity.linear", a.initial_velocity.linear, b.initial_velocity.linear);
+  Matrix(f + ".initial_velocity.angular", a.initial_velocity.angular,
+         b.initial_velocity.angular);
+  Exact(f + ".display", a.display, b.display, std::to_string(a.display.size()),
+        std::to_string(b.display.size()));
+}
+
+void Comparer::Settings(const SimSettings& a, const SimSettings& b) {
+  Number("settings.timestep", a.timestep, b.timestep);
+  Matrix("settings.gravity", a.gravity, b.gravity);
+  Number("settings.erp", a.erp, b.erp);
+  Number("settings.cfm", a.cfm, b.cfm);
+  Integer("settings.max_contacts", a.max_contacts, b.max_contacts);
+  Integer("settings.adaptive_time_stepping", a.adaptive_time_stepping, b.adaptive_time_stepping);
+  Integer("settings.rigid_object_collisions", a.rigid_object_collisions,
+          b.rigid_object_collisions);
+  Integer("settings.robot_self_collisions", a.robot_self_collisions, b.robot_self_collisions);
+  Integer("settings.robot_robot_collisions", a.robot_robot_collisions, b.robot_robot_collisions);
+}
+
+}  // namespace
+
+std::vector<std::string> CompareRobots(const RobotDesc& a, const RobotDesc& b, double tolerance,
+                                       const std::string& prefix) {
+  Comparer comparer(tolerance);
+  comparer.Robot(prefix, a, b);
+  return comparer.differences_;
+}
+
+std::vector<std::string> CompareWorlds(const WorldDesc& a, const WorldDesc& b, double tolerance) {
+  Comparer c(tolerance);
+  if (c.Count("terrains", a.terrains.size(), b.terrains.size())) {
+    for (size_t i = 0; i < a.terrains.size(); ++i) {
+      const std::string f = "terrains[" + std::to_string(i) + "]";
+      c.Text(f + ".name", a.terrains[i].name, b.terrains[i].name);
+      c.Geometry(f + ".geometry", a.terrains[i].geometry, b.terrains[i].geometry);
+      c.Sim(f + ".sim", a.terrains[i].sim, b.terrains[i].sim);
+      c.Exact(f + ".display", a.terrains[i].display, b.terrains[i].display,
+              std::to_string(a.terrains[i].display.size()),
+              std::to_string(b.terrains[i].display.size()));
+    }
+  }
+  if (c.Count("objects", a.objects.size(), b.objects.size())) {
+    for (size_t i = 0; i < a.objects.size(); ++i) {
+      c.Object("objects[" + std::to_string(i) + "]", a.objects[i], b.objects[i]);
+    }
+  }
+  if (c.Count("robots", a.robots.size(), b.robots.size())) {
+    for (size_t i = 0; i < a.robots.size(); ++i) {
+      const std::string f = "robots[" + std::to_string(i) + "]";
+      c.Text(f + ".name", a.robots[i].name, b.robots[i].name);
+      c.Robot(f, a.robots[i], b.robots[i]);
+    }
+  }
+  c.Settings(a.settings, b.settings);
+  c.Exact("preserved_simulation_xml", a.preserved_simulation_xml, b.preserved_simulation_xml,
+          std::to_string(a.preserved_simulation_xml.size()),
+          std::to_string(b.preserved_simulation_xml.size()));
+  return c.differences_;
+}
+
+}  // namespace lamina::core

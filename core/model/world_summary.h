@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: MIT
+// What `lamina-headless info` prints: every terrain, object and robot with its counts, mass
+// and the simulation parameters in force, as text or as JSON.
+#pragma once
+
+#include <string>
+
+#include "core/model/world_desc.h"
+
+namespace lamina::core {
+
+/// Human-readable summary, one block per element.
+std::string WorldSummaryText(const WorldDesc& world);
+/// The same facts as a JSON document (infinite values as the strings "inf" / "-inf").
+std::string WorldSummaryJson(const WorldDesc& world);
+
+/// Triangles of all of a robot's link geometry.
+int RobotTriangleCount(const RobotDesc& robot);
+
+}  // namespace lamina::core

@@ -1,0 +1,3 @@
+Primitve
+Sphere
+0 0 0 1

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// The editor's window: GLFW with an OpenGL 3.3 core context and a Dear ImGui frame around
+// whatever the caller draws.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace lamina::ui {
+
+class GlfwWindow {
+ public:
+  GlfwWindow() = default;
+  GlfwWindow(const GlfwWindow&) = delete;
+  GlfwWindow& operator=(const GlfwWindow&) = delete;
+  ~GlfwWindow();
+
+  /// Opens the window; false (with `error` set) when GLFW or the GL context fails.
+  bool Open(const std::string& title, int width, int height, std::string* error);
+  bool ShouldClose() const;
+  /// Polls events and starts an ImGui frame.
+  void BeginFrame();
+  /// Clears the framebuffer to `rgb` and draws the ImGui frame; does not swap.
+  void EndFrame(float red, float green, float blue);
+  void Swap();
+  /// The back buffer as RGBA8, bottom row first.
+  std::vector<std::uint8_t> ReadPixels(int* width, int* height) const;
+  /// "4.5 (Core Profile) Mesa ..." of the current context.
+  std::string GlVersion() const;
+
+ private:
+  GLFWwindow* window_ = nullptr;
+  bool imgui_ready_ = false;
+};
+
+}  // namespace lamina::ui
