@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // lamina: the desktop editor. Argument parsing and wiring only. This first version opens the
 // window and shows what was loaded; rendering and the editing panels come next.
-#include <imgui.h>
-
-#include <CLI/CLI.hpp>
 #include <iostream>
 #include <string>
+
+#include <CLI/CLI.hpp>
+#include <imgui.h>
 
 #include "core/io/world_file.h"
 #include "core/model/world_summary.h"
@@ -22,8 +22,8 @@ void DrawWorldPanel(const WorldDesc& world, const lamina::core::Diagnostics& dia
   ImGui::Begin("World");
   ImGui::Text("%s", world.name.c_str());
   ImGui::Separator();
-  ImGui::Text("%zu terrains, %zu objects, %zu robots", world.terrains.size(),
-              world.objects.size(), world.robots.size());
+  ImGui::Text("%zu terrains, %zu objects, %zu robots", world.terrains.size(), world.objects.size(),
+              world.robots.size());
   for (const auto& robot : world.robots) {
     ImGui::BulletText("robot '%s': %d links, %.3f kg", robot.name.c_str(), robot.dof(),
                       robot.TotalMass());

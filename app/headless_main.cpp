@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // lamina-headless: the command-line tool (no window). Argument parsing and wiring only.
-#include <CLI/CLI.hpp>
 #include <iostream>
 #include <string>
+
+#include <CLI/CLI.hpp>
 
 #include "core/io/world_file.h"
 #include "core/model/world_summary.h"

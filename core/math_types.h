@@ -3,10 +3,11 @@
 // Units are SI and radians everywhere in core/.
 #pragma once
 
-#include <Eigen/Core>
-#include <Eigen/Geometry>
 #include <array>
 #include <limits>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace lamina::core {
 

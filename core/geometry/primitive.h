@@ -19,9 +19,9 @@ enum class PrimitiveType { kSphere, kBox, kCylinder, kCapsule, kPlane };
 struct Primitive {
   PrimitiveType type = PrimitiveType::kSphere;
   Pose pose = Pose::Identity();
-  double radius = 0.0;        ///< m (sphere, cylinder, capsule)
-  double length = 0.0;        ///< m (cylinder, capsule)
-  Vec3 size = Vec3::Zero();   ///< m (box)
+  double radius = 0.0;       ///< m (sphere, cylinder, capsule)
+  double length = 0.0;       ///< m (cylinder, capsule)
+  Vec3 size = Vec3::Zero();  ///< m (box)
 
   static Primitive Sphere(double radius, const Vec3& center = Vec3::Zero());
   static Primitive Box(const Vec3& size, const Pose& pose = Pose::Identity());

@@ -2,9 +2,10 @@
 // An indexed triangle mesh in the coordinates of the file it came from.
 #pragma once
 
-#include <Eigen/Core>
 #include <string>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "core/math_types.h"
 

@@ -20,4 +20,8 @@ bool LoadGeometryFile(const std::string& path, const SourceLocation& where, Load
 std::optional<Primitive> ParseGeomText(const std::string& text, const std::string& file,
                                        Diagnostics& diagnostics);
 
+/// `.geom` text that ParseGeomText reads back as the same shape (spheres, boxes, cylinders,
+/// capsules); std::nullopt for a plane, which the format cannot hold.
+std::optional<std::string> WriteGeomText(const Primitive& primitive);
+
 }  // namespace lamina::core

@@ -16,8 +16,8 @@ bool LooksLikeKlamptObject(const std::string& text);
 /// Loads a rigid object from `path`: a Klamp't `.obj`, or any mesh file (then mass 1 with
 /// automass, friction 0.5, restitution 0.5, rigid). Sets pose, geometry, mass properties,
 /// surface and initial velocity; the name is the file stem.
-bool LoadRigidObjectFile(const std::string& path, const SourceLocation& where,
-                         LoadContext& context, RigidObjectDesc* out);
+bool LoadRigidObjectFile(const std::string& path, const SourceLocation& where, LoadContext& context,
+                         RigidObjectDesc* out);
 
 /// Loads a terrain from `path`: a `.env` file or any mesh file (friction 0.5).
 bool LoadTerrainFile(const std::string& path, const SourceLocation& where, LoadContext& context,

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "core/io/paths.h"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include <unistd.h>
 
 #include "core/io/text_statements.h"
 
@@ -39,7 +39,9 @@ std::string LowerExtension(const std::string& path) {
   return ToLower(extension);
 }
 
-std::string StemOf(const std::string& path) { return fs::path(path).stem().string(); }
+std::string StemOf(const std::string& path) {
+  return fs::path(path).stem().string();
+}
 
 bool ReadFileText(const std::string& path, std::string* text) {
   std::error_code error;

@@ -17,6 +17,9 @@ namespace rob {
 
 namespace {
 
+// robots mounted in robots mounted in ...; deeper means a loop (e.g. through symlinks)
+constexpr size_t kMaxMountDepth = 16;
+
 // the link of each `mount`, or -2 after reporting a bad reference
 std::vector<int> ResolveMountLinks(const RobBuild& build) {
   std::vector<int> links;
@@ -89,7 +92,7 @@ bool ParseRobNested(const std::string& text, const std::string& path, LoadContex
   robot.source_path = path;
   const int link_count = VoteLinkCount(statements, path, context.diagnostics);
   if (link_count > 0) {
-    stack.push_back(path);
+    stack.push_back(ResolvePath("", path));
     RobBuild build{statements, path, context, stack, robot, link_count};
     AssembleRobot(build);
     stack.pop_back();
@@ -98,12 +101,19 @@ bool ParseRobNested(const std::string& text, const std::string& path, LoadContex
   return context.diagnostics.error_count() == errors_before;
 }
 
-bool LoadRobotFileNested(const std::string& path, const SourceLocation& where,
+bool LoadRobotFileNested(const std::string& path, const SourceLocation& given_where,
                          LoadContext& context, RobotFileStack& stack, RobotDesc* out) {
+  const SourceLocation where = given_where.file.empty() ? SourceLocation{path, 0, 0} : given_where;
   const std::string extension = LowerExtension(path);
+  if (stack.size() >= kMaxMountDepth) {
+    context.diagnostics.Error(where, "robot mounts nest more than " +
+                                         std::to_string(kMaxMountDepth) + " deep at '" + path +
+                                         "'");
+    return false;
+  }
   if (extension != "rob" && extension != "urdf") {
-    context.diagnostics.Error(where, "unsupported robot file '" + path +
-                                         "': expected a .rob or .urdf file");
+    context.diagnostics.Error(
+        where, "unsupported robot file '" + path + "': expected a .rob or .urdf file");
     return false;
   }
   std::string text;

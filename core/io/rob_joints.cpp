@@ -75,8 +75,7 @@ std::vector<JointStatement> DefaultJoints(const RobotDesc& robot) {
     const LinkDesc& link = robot.links[i];
     JointStatement joint;
     joint.joint.link = i;
-    const bool fixed_root =
-        link.parent < 0 && link.velocity_min == 0.0 && link.velocity_max == 0.0;
+    const bool fixed_root = link.parent < 0 && link.velocity_min == 0.0 && link.velocity_max == 0.0;
     joint.joint.type = fixed_root ? JointType::kWeld : JointType::kNormal;
     joints.push_back(joint);
   }
@@ -174,7 +173,8 @@ void BuildJoints(RobBuild& build) {
     build.robot.joints.push_back(joint.joint);
   }
   for (int i = 0; i < build.link_count; ++i) {
-    if (claimed[i] == 0) build.Warning(0, "link " + std::to_string(i) + " is not part of any joint");
+    if (claimed[i] == 0)
+      build.Warning(0, "link " + std::to_string(i) + " is not part of any joint");
   }
 }
 
@@ -194,10 +194,9 @@ void BuildDrivers(RobBuild& build) {
   const int driver_count = static_cast<int>(drivers.size());
   if (!s.driver_names.empty()) {
     if (s.driver_names.size() != driver_count) {
-      build.Error(s.driver_names.line, "'" + s.driver_names.keyword + "' expects " +
-                                           CountOf(driver_count, "name") +
-                                           " (one per driver), got " +
-                                           std::to_string(s.driver_names.size()));
+      build.Error(s.driver_names.line,
+                  "'" + s.driver_names.keyword + "' expects " + CountOf(driver_count, "name") +
+                      " (one per driver), got " + std::to_string(s.driver_names.size()));
     } else if (static_cast<int>(build.robot.drivers.size()) == driver_count) {
       for (int i = 0; i < driver_count; ++i) {
         build.robot.drivers[i].name = s.driver_names.values[i];

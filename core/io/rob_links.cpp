@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // `.rob` assembly, first half: the link count, the links themselves and their geometry files.
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <map>
+
+#include <Eigen/Eigenvalues>
 
 #include "core/io/geometry_file.h"
 #include "core/io/paths.h"
@@ -24,12 +25,24 @@ struct PerLinkVector {
 };
 
 std::vector<PerLinkVector> PerLinkVectors(const RobStatements& s) {
-  return {{&s.parents, 1, true},       {&s.mass, 1, true},         {&s.com, 3, true},
-          {&s.inertia, 9, true},       {&s.inertia_diag, 3, true}, {&s.a, 1, true},
-          {&s.d, 1, true},             {&s.alpha, 1, true},        {&s.theta, 1, true},
-          {&s.tparent, 12, true},      {&s.axis, 3, true},         {&s.q, 1, true},
-          {&s.q_min, 1, true},         {&s.q_max, 1, true},        {&s.velocity_min, 1, true},
-          {&s.velocity_max, 1, true},  {&s.torque_max, 1, true},   {&s.power_max, 1, true},
+  return {{&s.parents, 1, true},
+          {&s.mass, 1, true},
+          {&s.com, 3, true},
+          {&s.inertia, 9, true},
+          {&s.inertia_diag, 3, true},
+          {&s.a, 1, true},
+          {&s.d, 1, true},
+          {&s.alpha, 1, true},
+          {&s.theta, 1, true},
+          {&s.tparent, 12, true},
+          {&s.axis, 3, true},
+          {&s.q, 1, true},
+          {&s.q_min, 1, true},
+          {&s.q_max, 1, true},
+          {&s.velocity_min, 1, true},
+          {&s.velocity_max, 1, true},
+          {&s.torque_max, 1, true},
+          {&s.power_max, 1, true},
           {&s.acceleration_max, 1, false}};
 }
 
@@ -64,8 +77,9 @@ std::string Expected(const std::string& keyword, int n, int group, const char* u
 // Klamp't's Denavit-Hartenberg frame: Trans_x(a) Rot_x(alpha) Trans_z(d) Rot_z(theta)
 Pose DenavitHartenberg(double alpha, double a, double d, double theta) {
   Pose pose = Pose::Identity();
-  pose.linear() = (Eigen::AngleAxisd(alpha, Vec3::UnitX()) * Eigen::AngleAxisd(theta, Vec3::UnitZ()))
-                      .toRotationMatrix();
+  pose.linear() =
+      (Eigen::AngleAxisd(alpha, Vec3::UnitX()) * Eigen::AngleAxisd(theta, Vec3::UnitZ()))
+          .toRotationMatrix();
   pose.translation() = Vec3(a, -std::sin(alpha) * d, std::cos(alpha) * d);
   return pose;
 }
@@ -123,8 +137,8 @@ void BuildFrames(RobBuild& b) {
     if (!s.axis.empty()) {
       link.axis = Triple(s.axis, i);
       if (link.axis.norm() == 0.0) {
-        b.Error(s.axis.lines[3 * i], "'" + s.axis.keyword + "' of link " + std::to_string(i) +
-                                         " is zero");
+        b.Error(s.axis.lines[3 * i],
+                "'" + s.axis.keyword + "' of link " + std::to_string(i) + " is zero");
       }
     }
   }
@@ -176,8 +190,8 @@ void CheckInertia(const RobBuild& b, int link, int line) {
                                                    Eigen::EigenvaluesOnly);
   const double smallest = solver.eigenvalues().minCoeff();
   if (smallest < -(1e-12 + 1e-9 * size)) {
-    b.Error(line, "inertia of link " + std::to_string(link) +
-                      " has a negative principal moment (" + FormatDouble(smallest) + ")");
+    b.Error(line, "inertia of link " + std::to_string(link) + " has a negative principal moment (" +
+                      FormatDouble(smallest) + ")");
   }
 }
 
@@ -236,8 +250,8 @@ int VoteLinkCount(const RobStatements& s, const std::string& path, Diagnostics& 
   }
   for (const NumberList* list : {&s.geom_scale, &s.geom_margin}) {
     if (!list->empty() && list->size() != 1 && list->size() != n) {
-      error(list->line, "'" + list->keyword + "' expects 1 or " + CountOf(n, "value") +
-                            ", got " + std::to_string(list->size()));
+      error(list->line, "'" + list->keyword + "' expects 1 or " + CountOf(n, "value") + ", got " +
+                            std::to_string(list->size()));
     }
   }
   return diagnostics.error_count() == errors_before ? n : 0;
@@ -269,8 +283,8 @@ void LoadLinkGeometry(RobBuild& build) {
     }
     const double scale = per_link(s.geom_scale, i, 1.0);
     if (scale == 0.0) {
-      build.Error(s.geom_scale.line, "'" + s.geom_scale.keyword + "' of link " +
-                                         std::to_string(i) + " must not be 0");
+      build.Error(s.geom_scale.line,
+                  "'" + s.geom_scale.keyword + "' of link " + std::to_string(i) + " must not be 0");
     }
     geometry.scale = Vec3::Constant(scale);
     geometry.margin = per_link(s.geom_margin, i, 0.0);
@@ -302,9 +316,9 @@ void ApplyAutotorque(RobBuild& build) {
     const double previous_distance = com_distance + link.parent_transform.translation().norm();
     mass_below += link.mass;
     const double total = link.mass + previous_mass;
-    com_distance =
-        total > 0.0 ? (link.com.norm() * link.mass + previous_distance * previous_mass) / total
-                    : 0.0;
+    com_distance = total > 0.0
+                       ? (link.com.norm() * link.mass + previous_distance * previous_mass) / total
+                       : 0.0;
     link.torque_max = com_distance * mass_below * gravity;
   }
 }

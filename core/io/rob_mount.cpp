@@ -144,8 +144,8 @@ void MountGeometry(RobBuild& build, const std::vector<int>& mount_links) {
       build.Warning(mount.line, "'as " + mount.prefix + "' is ignored for a geometry file");
     }
     GeometryDesc geometry;
-    if (!LoadGeometryFile(ResolvePath(directory, mount.file), build.At(mount.line),
-                          build.context, &geometry)) {
+    if (!LoadGeometryFile(ResolvePath(directory, mount.file), build.At(mount.line), build.context,
+                          &geometry)) {
       continue;
     }
     LinkDesc& link = build.robot.links[mount_links[m]];
@@ -175,8 +175,8 @@ void ApplyAutomass(RobBuild& build) {
     const double mass = link.mass > 0.0 ? link.mass : 1.0;
     const MassProperties properties = LinkMassProperties(link, mass, s.surface_fraction);
     if (!properties.valid) {
-      build.Warning(s.automass_line, "automass: the geometry of link " + std::to_string(i) +
-                                         " ('" + link.name +
+      build.Warning(s.automass_line, "automass: the geometry of link " + std::to_string(i) + " ('" +
+                                         link.name +
                                          "') has no volume or area; its mass properties are "
                                          "left as they were");
       continue;
@@ -200,7 +200,7 @@ void MountRobots(RobBuild& build, const std::vector<int>& mount_links) {
   for (size_t m = 0; m < mounts.size(); ++m) {
     const MountStatement& mount = mounts[m];
     if (!IsRobotFile(mount.file) || mount_links[m] < -1) continue;
-    const std::string file = ResolvePath(directory, mount.file);
+    const std::string file = ResolvePath(directory, mount.file);  // normalized, as the stack
     if (std::find(build.stack.begin(), build.stack.end(), file) != build.stack.end()) {
       build.Error(mount.line, "'mount' of '" + file + "' would mount a robot inside itself");
       continue;
@@ -216,8 +216,8 @@ void MountRobots(RobBuild& build, const std::vector<int>& mount_links) {
   }
 }
 
-void MountSubRobot(const RobotDesc& sub, int link, const Pose& transform,
-                   const std::string& prefix, RobotDesc* robot) {
+void MountSubRobot(const RobotDesc& sub, int link, const Pose& transform, const std::string& prefix,
+                   RobotDesc* robot) {
   const int offset = robot->dof();
   const std::string name_prefix = prefix.empty() ? "" : prefix + ":";
   for (LinkDesc child : sub.links) {

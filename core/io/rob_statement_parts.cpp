@@ -17,8 +17,10 @@ struct JointTypeName {
 };
 
 constexpr JointTypeName kJointTypes[] = {
-    {"normal", JointType::kNormal, false},       {"spin", JointType::kSpin, false},
-    {"weld", JointType::kWeld, false},           {"floating", JointType::kFloating, true},
+    {"normal", JointType::kNormal, false},
+    {"spin", JointType::kSpin, false},
+    {"weld", JointType::kWeld, false},
+    {"floating", JointType::kFloating, true},
     {"floatingplanar", JointType::kFloatingPlanar, true},
     {"ballandsocket", JointType::kBallAndSocket, true},
 };
@@ -36,7 +38,9 @@ constexpr DriverTypeName kDriverTypes[] = {
     {"rotation", DriverType::kRotation, 2},
 };
 
-std::string Values(size_t count) { return CountOf(static_cast<int>(count), "value"); }
+std::string Values(size_t count) {
+  return CountOf(static_cast<int>(count), "value");
+}
 
 class PartReader {
  public:
@@ -218,8 +222,8 @@ void ReadMountStatement(const Statement& statement, const std::string& path,
   if (rest == 2 && ToLower(tokens[next].text) == "as") {
     mount.prefix = tokens[next + 1].text;
   } else if (rest != 0) {
-    reader.Error(tokens[next].line, "unexpected '" + tokens[next].text + "' in '" +
-                                        tokens[0].text + "', expected 'as PREFIX'");
+    reader.Error(tokens[next].line, "unexpected '" + tokens[next].text + "' in '" + tokens[0].text +
+                                        "', expected 'as PREFIX'");
     return;
   }
   out.mounts.push_back(mount);

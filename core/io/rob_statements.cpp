@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: MIT
+// Reading the statements of a `.rob` file: the keyword tables, numbers with their lines, and
+// the split of numeric statements that a trailing backslash ran into the next keyword.
 #include "core/io/rob_statements.h"
 
 #include <algorithm>
@@ -58,19 +60,78 @@ constexpr NumberKeyword kNumberKeywords[] = {
     {"viscousfriction", &RobStatements::viscous_friction, 1, false, false},
 };
 
-// keywords handled by their own reader; `numeric` ones take only numbers (or r/p letters)
+class StatementReader {
+ public:
+  StatementReader(const std::string& text, const std::string& path, Diagnostics& diagnostics,
+                  RobStatements& out)
+      : text_(text), path_(path), diagnostics_(diagnostics), out_(out) {}
+
+  void Read(const Statement& statement);
+
+  // the readers of kSpecialKeywords
+  void ReadLinkNames(const Statement& s) { ReadWords(s, &out_.link_names); }
+  void ReadDriverNames(const Statement& s) { ReadWords(s, &out_.driver_names); }
+  void ReadGeometry(const Statement& s) { ReadWords(s, &out_.geometry_files); }
+  void ReadJointTypes(const Statement& statement);
+  void ReadTranslation(const Statement& statement);
+  void ReadRotation(const Statement& statement);
+  void ReadScale(const Statement& statement);
+  void ReadAutomass(const Statement& statement);
+  void ReadAutotorque(const Statement& statement);
+  void ReadGeomTransform(const Statement& statement);
+  void ReadJoint(const Statement& s) { ReadJointStatement(s, path_, diagnostics_, out_); }
+  void ReadDriver(const Statement& s) { ReadDriverStatement(s, path_, diagnostics_, out_); }
+  void ReadMount(const Statement& s) { ReadMountStatement(s, path_, diagnostics_, out_); }
+  void ReadProperty(const Statement& statement);
+  void ReadSelfCollision(const Statement& s) { ReadPairs(s, &out_.self_collision); }
+  void ReadNoSelfCollision(const Statement& s) { ReadPairs(s, &out_.no_self_collision); }
+  void ReadUnsupported(const Statement& statement);
+
+ private:
+  void Error(int line, std::string message) {
+    diagnostics_.Error({path_, line, 0}, std::move(message));
+  }
+  bool Number(const Token& token, double* value);
+  bool Integer(const Token& token, int* value);
+  // the values of tokens [first, end) as numbers; false (after reporting) on a bad one
+  bool Numbers(const Statement& statement, size_t first, std::vector<double>* values);
+  std::string RawText(const Statement& statement, size_t first) const;
+  void ReadNumbers(const Statement& statement, const NumberKeyword& keyword);
+  void ReadWords(const Statement& statement, WordList* list);
+  void ReadPairs(const Statement& statement, std::vector<PairStatement>* pairs);
+
+  const std::string& text_;
+  const std::string& path_;
+  Diagnostics& diagnostics_;
+  RobStatements& out_;
+};
+
+// keywords with their own reader; `numeric` ones take only numbers (or r/p letters)
 struct SpecialKeyword {
   const char* name;
   bool numeric;
+  void (StatementReader::*read)(const Statement&);
 };
 
 constexpr SpecialKeyword kSpecialKeywords[] = {
-    {"links", false},          {"drivers", false},       {"geometry", false},
-    {"jointtype", true},       {"translation", true},    {"rotation", true},
-    {"scale", true},           {"automass", true},       {"autotorque", true},
-    {"geomtransform", true},   {"joint", false},         {"driver", false},
-    {"mount", false},          {"property", false},      {"selfcollision", false},
-    {"noselfcollision", false}, {"collision", false},    {"nocollision", false},
+    {"links", false, &StatementReader::ReadLinkNames},
+    {"drivers", false, &StatementReader::ReadDriverNames},
+    {"geometry", false, &StatementReader::ReadGeometry},
+    {"jointtype", true, &StatementReader::ReadJointTypes},
+    {"translation", true, &StatementReader::ReadTranslation},
+    {"rotation", true, &StatementReader::ReadRotation},
+    {"scale", true, &StatementReader::ReadScale},
+    {"automass", true, &StatementReader::ReadAutomass},
+    {"autotorque", true, &StatementReader::ReadAutotorque},
+    {"geomtransform", true, &StatementReader::ReadGeomTransform},
+    {"joint", false, &StatementReader::ReadJoint},
+    {"driver", false, &StatementReader::ReadDriver},
+    {"mount", false, &StatementReader::ReadMount},
+    {"property", false, &StatementReader::ReadProperty},
+    {"selfcollision", false, &StatementReader::ReadSelfCollision},
+    {"noselfcollision", false, &StatementReader::ReadNoSelfCollision},
+    {"collision", false, &StatementReader::ReadUnsupported},
+    {"nocollision", false, &StatementReader::ReadUnsupported},
 };
 
 const NumberKeyword* FindNumberKeyword(const std::string& lower) {
@@ -115,18 +176,18 @@ std::vector<Statement> SplitAtKeywords(std::vector<Statement> statements, const 
       const std::string keyword = ToLower(current.tokens.front().text);
       if (!ExpectsNumbers(keyword)) break;
       double unused = 0.0;
-      const auto split = std::find_if(
-          current.tokens.begin() + 1, current.tokens.end(), [&](const Token& token) {
+      const auto split =
+          std::find_if(current.tokens.begin() + 1, current.tokens.end(), [&](const Token& token) {
             return !token.quoted && !ParseDouble(token.text, &unused) &&
                    IsKeyword(ToLower(token.text));
           });
       if (split == current.tokens.end()) break;
       const Token& previous = *(split - 1);
-      const std::string how = split->line != previous.line
-                                  ? "continues the '" + current.tokens.front().text +
-                                        "' statement through a trailing backslash"
-                                  : "follows the '" + current.tokens.front().text +
-                                        "' values on the same line";
+      const std::string how =
+          split->line != previous.line
+              ? "continues the '" + current.tokens.front().text +
+                    "' statement through a trailing backslash"
+              : "follows the '" + current.tokens.front().text + "' values on the same line";
       diagnostics.Warning({path, split->line, 0},
                           "'" + split->text + "' " + how + "; read as a new statement");
       Statement rest;
@@ -142,79 +203,6 @@ std::vector<Statement> SplitAtKeywords(std::vector<Statement> statements, const 
   return out;
 }
 
-class StatementReader {
- public:
-  StatementReader(const std::string& text, const std::string& path, Diagnostics& diagnostics,
-                  RobStatements& out)
-      : text_(text), path_(path), diagnostics_(diagnostics), out_(out) {}
-
-  void Read(const Statement& statement);
-
- private:
-  using Handler = void (StatementReader::*)(const Statement&);
-  struct HandlerEntry {
-    const char* name;
-    Handler handler;
-  };
-  static const HandlerEntry kHandlers[];
-
-  void Error(int line, std::string message) {
-    diagnostics_.Error({path_, line, 0}, std::move(message));
-  }
-  bool Number(const Token& token, double* value);
-  bool Integer(const Token& token, int* value);
-  // the values of tokens [first, end) as numbers; false (after reporting) on a bad one
-  bool Numbers(const Statement& statement, size_t first, std::vector<double>* values);
-  std::string RawText(const Statement& statement, size_t first) const;
-
-  void ReadNumbers(const Statement& statement, const NumberKeyword& keyword);
-  void ReadWords(const Statement& statement, WordList* list);
-  void ReadLinkNames(const Statement& s) { ReadWords(s, &out_.link_names); }
-  void ReadDriverNames(const Statement& s) { ReadWords(s, &out_.driver_names); }
-  void ReadGeometry(const Statement& s) { ReadWords(s, &out_.geometry_files); }
-  void ReadJointTypes(const Statement& statement);
-  void ReadTranslation(const Statement& statement);
-  void ReadRotation(const Statement& statement);
-  void ReadScale(const Statement& statement);
-  void ReadAutomass(const Statement& statement);
-  void ReadAutotorque(const Statement& statement);
-  void ReadGeomTransform(const Statement& statement);
-  void ReadJoint(const Statement& s) { ReadJointStatement(s, path_, diagnostics_, out_); }
-  void ReadDriver(const Statement& s) { ReadDriverStatement(s, path_, diagnostics_, out_); }
-  void ReadMount(const Statement& s) { ReadMountStatement(s, path_, diagnostics_, out_); }
-  void ReadProperty(const Statement& statement);
-  void ReadSelfCollision(const Statement& s) { ReadPairs(s, &out_.self_collision); }
-  void ReadNoSelfCollision(const Statement& s) { ReadPairs(s, &out_.no_self_collision); }
-  void ReadPairs(const Statement& statement, std::vector<PairStatement>* pairs);
-  void ReadUnsupported(const Statement& statement);
-
-  const std::string& text_;
-  const std::string& path_;
-  Diagnostics& diagnostics_;
-  RobStatements& out_;
-};
-
-const StatementReader::HandlerEntry StatementReader::kHandlers[] = {
-    {"links", &StatementReader::ReadLinkNames},
-    {"drivers", &StatementReader::ReadDriverNames},
-    {"geometry", &StatementReader::ReadGeometry},
-    {"jointtype", &StatementReader::ReadJointTypes},
-    {"translation", &StatementReader::ReadTranslation},
-    {"rotation", &StatementReader::ReadRotation},
-    {"scale", &StatementReader::ReadScale},
-    {"automass", &StatementReader::ReadAutomass},
-    {"autotorque", &StatementReader::ReadAutotorque},
-    {"geomtransform", &StatementReader::ReadGeomTransform},
-    {"joint", &StatementReader::ReadJoint},
-    {"driver", &StatementReader::ReadDriver},
-    {"mount", &StatementReader::ReadMount},
-    {"property", &StatementReader::ReadProperty},
-    {"selfcollision", &StatementReader::ReadSelfCollision},
-    {"noselfcollision", &StatementReader::ReadNoSelfCollision},
-    {"collision", &StatementReader::ReadUnsupported},
-    {"nocollision", &StatementReader::ReadUnsupported},
-};
-
 void StatementReader::Read(const Statement& statement) {
   const Token& first = statement.tokens.front();
   const std::string keyword = ToLower(first.text);
@@ -222,11 +210,9 @@ void StatementReader::Read(const Statement& statement) {
     ReadNumbers(statement, *number_keyword);
     return;
   }
-  for (const HandlerEntry& entry : kHandlers) {
-    if (keyword == entry.name) {
-      (this->*entry.handler)(statement);
-      return;
-    }
+  if (const SpecialKeyword* special = FindSpecialKeyword(keyword)) {
+    (this->*special->read)(statement);
+    return;
   }
   std::string message = "unknown keyword '" + first.text + "'";
   const std::string suggestion = SuggestName(keyword, AllKeywordNames());
@@ -259,6 +245,7 @@ bool StatementReader::Numbers(const Statement& statement, size_t first,
 
 // the text of tokens [first, end) as written: spacing kept within a line, lines joined by '\n'
 std::string StatementReader::RawText(const Statement& statement, size_t first) const {
+  if (first + 1 == statement.tokens.size()) return statement.tokens[first].text;
   std::string out;
   size_t line_start = 0;  // offset of the current token's physical line in text_
   int line = 1;
@@ -364,8 +351,8 @@ void StatementReader::ReadScale(const Statement& statement) {
                               std::to_string(values.size()));
   } else if (values[0] != 1.0) {
     Error(statement.line, "'" + statement.tokens.front().text +
-                              "' other than 1 is not supported, got '" +
-                              statement.tokens[1].text + "'");
+                              "' other than 1 is not supported, got '" + statement.tokens[1].text +
+                              "'");
   }
 }
 
@@ -426,8 +413,7 @@ void StatementReader::ReadUnsupported(const Statement& statement) {
 
 void StatementReader::ReadProperty(const Statement& statement) {
   if (statement.tokens.size() < 3) {
-    Error(statement.line,
-          "'" + statement.tokens.front().text + "' expects a name and a value");
+    Error(statement.line, "'" + statement.tokens.front().text + "' expects a name and a value");
     return;
   }
   out_.properties.push_back({statement.tokens[1].text, RawText(statement, 2), statement.line});
@@ -436,14 +422,13 @@ void StatementReader::ReadProperty(const Statement& statement) {
 void StatementReader::ReadPairs(const Statement& statement, std::vector<PairStatement>* pairs) {
   const size_t count = statement.tokens.size() - 1;
   if (count % 2 != 0) {
-    Error(statement.line, "'" + statement.tokens.front().text +
-                              "' expects pairs of links, got " + std::to_string(count) +
-                              " names");
+    Error(statement.line, "'" + statement.tokens.front().text + "' expects pairs of links, got " +
+                              std::to_string(count) + " names");
     return;
   }
   for (size_t i = 1; i + 1 < statement.tokens.size(); i += 2) {
-    pairs->push_back({statement.tokens[i].text, statement.tokens[i + 1].text,
-                      statement.tokens[i].line});
+    pairs->push_back(
+        {statement.tokens[i].text, statement.tokens[i + 1].text, statement.tokens[i].line});
   }
 }
 

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Internal to the `.rob` reader: the statements of a file, each read and checked on its own
-// but not yet combined into a robot (rob_statements.cpp), and the steps that build the
-// RobotDesc from them (rob_links.cpp, rob_joints.cpp, rob_mount.cpp, rob_file.cpp).
+// Internal to the robot loaders: the statements of a `.rob` file, each read and checked on its
+// own but not yet combined into a robot (rob_statements.cpp, rob_statement_parts.cpp), the
+// steps that build the RobotDesc from them (rob_links.cpp, rob_joints.cpp, rob_mount.cpp,
+// rob_file.cpp), and what the URDF reader shares with them (self-collision pairs, mounting).
 #pragma once
 
 #include <optional>
@@ -179,16 +180,16 @@ std::vector<PairStatement> ResolvePairs(const RobotDesc& robot,
 
 /// Appends `sub` to `robot` with its roots attached to link `link` (-1 = world) through
 /// `transform`, names prefixed "prefix:" when `prefix` is not empty.
-void MountSubRobot(const RobotDesc& sub, int link, const Pose& transform,
-                   const std::string& prefix, RobotDesc* robot);
+void MountSubRobot(const RobotDesc& sub, int link, const Pose& transform, const std::string& prefix,
+                   RobotDesc* robot);
 
 /// A driver's position, velocity, torque and acceleration limits from its link, as Klamp't
 /// sets them for normal, translation and rotation drivers.
 void CopyLinkLimits(const LinkDesc& link, DriverDesc* driver);
 
 /// The loaders behind LoadRobotFile / ParseRob / ParseUrdf, with the stack of open files.
-bool LoadRobotFileNested(const std::string& path, const SourceLocation& where,
-                         LoadContext& context, RobotFileStack& stack, RobotDesc* out);
+bool LoadRobotFileNested(const std::string& path, const SourceLocation& where, LoadContext& context,
+                         RobotFileStack& stack, RobotDesc* out);
 bool ParseRobNested(const std::string& text, const std::string& path, LoadContext& context,
                     RobotFileStack& stack, RobotDesc* out);
 bool ParseUrdfNested(const std::string& text, const std::string& path, LoadContext& context,

@@ -15,13 +15,17 @@ namespace lamina::core {
 
 namespace {
 
-std::string Quote(const std::string& text) { return "\"" + text + "\""; }
+std::string Quote(const std::string& text) {
+  return "\"" + text + "\"";
+}
 
 std::string Numbers(const std::vector<double>& values) {
   return FormatDoubles(values.data(), static_cast<int>(values.size()));
 }
 
-std::string Vector3Text(const Vec3& v) { return FormatDoubles(v.data(), 3); }
+std::string Vector3Text(const Vec3& v) {
+  return FormatDoubles(v.data(), 3);
+}
 
 std::string RowMajor(const Eigen::MatrixXd& m) {
   std::vector<double> values;
@@ -50,7 +54,9 @@ std::string PerDriver(const RobotDesc& robot, const std::string& keyword,
   return keyword + " " + Numbers(values) + "\n";
 }
 
-bool IsUniform(const Vec3& scale) { return scale.x() == scale.y() && scale.y() == scale.z(); }
+bool IsUniform(const Vec3& scale) {
+  return scale.x() == scale.y() && scale.y() == scale.z();
+}
 
 // the first geometry of a link that is not empty, or nullptr
 const GeometryDesc* FirstGeometry(const LinkDesc& link) {
@@ -99,11 +105,11 @@ class RobWriter {
 std::string RobWriter::FileOf(const GeometryDesc& geometry, int link) {
   if (!geometry.path.empty()) return RelativePath(geometry.path, rob_dir_);
   if (!geometry.empty()) {
-    notes_ += "# link " + std::to_string(link) + " ('" + robot_.links[link].name +
-              "'): an inline " + (geometry.kind == GeometryKind::kPrimitive
-                                      ? std::string(geometry.primitive.TypeName())
-                                      : std::string("mesh")) +
-              " without a file is not saved\n";
+    notes_ +=
+        "# link " + std::to_string(link) + " ('" + robot_.links[link].name + "'): an inline " +
+        (geometry.kind == GeometryKind::kPrimitive ? std::string(geometry.primitive.TypeName())
+                                                   : std::string("mesh")) +
+        " without a file is not saved\n";
   }
   return "";
 }

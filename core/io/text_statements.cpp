@@ -2,8 +2,8 @@
 #include "core/io/text_statements.h"
 
 #include <cctype>
-#include <charconv>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 
@@ -11,7 +11,9 @@ namespace lamina::core {
 
 namespace {
 
-bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+bool IsSpace(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+}
 
 // scans one physical line starting at `pos`; appends tokens; returns true when the line
 // ends with a continuation backslash

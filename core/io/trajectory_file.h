@@ -15,9 +15,9 @@ namespace lamina::core {
 /// A timed or untimed sequence of milestones. `times` is empty when untimed; `velocities` is
 /// empty when the file gave none.
 struct MilestoneSequence {
-  std::vector<double> times;      ///< s, nondecreasing
-  std::vector<VecX> configs;      ///< all the same length
-  std::vector<VecX> velocities;   ///< same count and length as configs, or empty
+  std::vector<double> times;     ///< s, nondecreasing
+  std::vector<VecX> configs;     ///< all the same length
+  std::vector<VecX> velocities;  ///< same count and length as configs, or empty
 };
 
 /// A `.config` file: one "N q1 ... qN" vector.

@@ -3,15 +3,15 @@
 // (links in depth-first order, a root link that is not the world frame gets a 6-DOF floating
 // base, one normal driver per moving joint with Klamp't's import gains), with the `<klampt>`
 // extension and located diagnostics from a tinyxml2 pass over the same text.
-#include <console_bridge/console.h>
-#include <urdf_parser/urdf_parser.h>
-
 #include <algorithm>
 #include <cctype>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <console_bridge/console.h>
+#include <urdf_parser/urdf_parser.h>
 
 #include "core/io/geometry_file.h"
 #include "core/io/paths.h"
@@ -75,14 +75,16 @@ urdf::ModelInterfaceSharedPtr ParseWithUrdfdom(const std::string& text, const st
   return model;
 }
 
-Vec3 ToVec3(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
+Vec3 ToVec3(const urdf::Vector3& v) {
+  return {v.x, v.y, v.z};
+}
 
 Pose ToPose(const urdf::Pose& pose) {
   Pose out = Pose::Identity();
-  out.linear() = Eigen::Quaterniond(pose.rotation.w, pose.rotation.x, pose.rotation.y,
-                                    pose.rotation.z)
-                     .normalized()
-                     .toRotationMatrix();
+  out.linear() =
+      Eigen::Quaterniond(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z)
+          .normalized()
+          .toRotationMatrix();
   out.translation() = ToVec3(pose.position);
   return out;
 }
@@ -116,8 +118,8 @@ class UrdfConverter {
   void AddTree(const urdf::Link& link, int parent);
   int AddJointLinks(const urdf::Link& link, const urdf::Joint& joint, int parent);
   int AddVirtualChain(const std::string& name, int parent, const Pose& origin,
-                      const std::vector<std::pair<LinkJointAxis, Vec3>>& axes,
-                      JointType joint_type, LinkDesc* last);
+                      const std::vector<std::pair<LinkJointAxis, Vec3>>& axes, JointType joint_type,
+                      LinkDesc* last);
   int AddLink(LinkDesc link);
   LinkDesc MakeLink(const urdf::Link& link) const;
   void SetMass(const urdf::Link& link, LinkDesc* out) const;
@@ -158,14 +160,14 @@ void UrdfConverter::SetMass(const urdf::Link& link, LinkDesc* out) const {
     out->mass = inertial.mass;
     out->com = ToVec3(inertial.origin.position);
     Mat3 tensor;
-    tensor << inertial.ixx, inertial.ixy, inertial.ixz, inertial.ixy, inertial.iyy,
-        inertial.iyz, inertial.ixz, inertial.iyz, inertial.izz;
+    tensor << inertial.ixx, inertial.ixy, inertial.ixz, inertial.ixy, inertial.iyy, inertial.iyz,
+        inertial.ixz, inertial.iyz, inertial.izz;
     // the tensor is given in the inertial frame; rotate it into the link frame
     const Mat3 rotation = ToPose(inertial.origin).linear();
     out->inertia = rotation * tensor * rotation.transpose();
     if (out->mass < 0.0) {
-      Error(xml_.LinkLine(link.name), "mass of link '" + link.name + "' must be >= 0, got '" +
-                                          FormatDouble(out->mass) + "'");
+      Error(xml_.LinkLine(link.name),
+            "mass of link '" + link.name + "' must be >= 0, got '" + FormatDouble(out->mass) + "'");
     }
   } else {
     out->mass = extras_.default_mass.value_or(0.0);
@@ -209,14 +211,15 @@ GeometryDesc UrdfConverter::ConvertGeometry(const urdf::Geometry& geometry, int 
 void UrdfConverter::LoadGeometry(const urdf::Link& link, LinkDesc* out) const {
   std::vector<std::pair<urdf::GeometrySharedPtr, urdf::Pose>> shapes;
   for (const urdf::CollisionSharedPtr& collision : link.collision_array) {
-    if (collision && collision->geometry) shapes.emplace_back(collision->geometry, collision->origin);
+    if (collision && collision->geometry)
+      shapes.emplace_back(collision->geometry, collision->origin);
   }
   const char* kind = "collision";
   if (extras_.use_visual_geometry || shapes.empty()) {
     if (shapes.empty() && !link.visual_array.empty() && !extras_.use_visual_geometry) {
-      context_.diagnostics.Note({path_, xml_.LinkLine(link.name), 0},
-                                "link '" + link.name +
-                                    "' has no <collision>; its <visual> geometry is used");
+      context_.diagnostics.Note(
+          {path_, xml_.LinkLine(link.name), 0},
+          "link '" + link.name + "' has no <collision>; its <visual> geometry is used");
     }
     shapes.clear();
     kind = "visual";
@@ -251,7 +254,7 @@ int UrdfConverter::AddVirtualChain(const std::string& name, int parent, const Po
     parent = AddLink(virtual_link);
   }
   last->parent = parent;
-  last->parent_transform = axes.size() > 1 ? Pose::Identity() : origin;
+  last->parent_transform = Pose::Identity();
   last->axis_type = axes.back().first;
   last->axis = axes.back().second;
   last->torque_max = 0.0;
@@ -359,19 +362,22 @@ void UrdfConverter::Convert(const urdf::ModelInterface& model) {
                                        "are ignored");
     }
     for (const urdf::LinkSharedPtr& child : root->child_links) AddTree(*child, -1);
+    if (robot_.links.empty()) {
+      Error(xml_.LinkLine(root->name),
+            "the robot has no links besides the world frame '" + root->name + "'");
+    }
     return;
   }
   // a floating base: Klamp't's virtual links x, y, z, yaw, pitch with the root link as roll
   LinkDesc base = MakeLink(*root);
-  const int index =
-      AddVirtualChain("base", -1, Pose::Identity(),
-                      {{LinkJointAxis::kPrismatic, Vec3::UnitX()},
-                       {LinkJointAxis::kPrismatic, Vec3::UnitY()},
-                       {LinkJointAxis::kPrismatic, Vec3::UnitZ()},
-                       {LinkJointAxis::kRevolute, Vec3::UnitZ()},
-                       {LinkJointAxis::kRevolute, Vec3::UnitY()},
-                       {LinkJointAxis::kRevolute, Vec3::UnitX()}},
-                      JointType::kFloating, &base);
+  const int index = AddVirtualChain("base", -1, Pose::Identity(),
+                                    {{LinkJointAxis::kPrismatic, Vec3::UnitX()},
+                                     {LinkJointAxis::kPrismatic, Vec3::UnitY()},
+                                     {LinkJointAxis::kPrismatic, Vec3::UnitZ()},
+                                     {LinkJointAxis::kRevolute, Vec3::UnitZ()},
+                                     {LinkJointAxis::kRevolute, Vec3::UnitY()},
+                                     {LinkJointAxis::kRevolute, Vec3::UnitX()}},
+                                    JointType::kFloating, &base);
   if (extras_.freeze_root_link) {
     robot_.joints.pop_back();
     for (int i = 0; i <= index; ++i) robot_.joints.push_back({JointType::kWeld, i, -1});
@@ -381,34 +387,44 @@ void UrdfConverter::Convert(const urdf::ModelInterface& model) {
 }
 
 // A joint that mimics another (q = multiplier * q_other + offset) loses its driver and joins
-// the other joint's driver, which becomes affine (Klamp't's conversion).
+// the driver of the joint at the end of its mimic chain, which becomes affine (as Klamp't).
 void UrdfConverter::ApplyMimicJoints(const urdf::ModelInterface& model) {
+  const auto driver_of = [this](const std::string& link) {
+    const auto index = link_index_.find(link);
+    return std::find_if(robot_.drivers.begin(), robot_.drivers.end(), [&](const DriverDesc& d) {
+      return index != link_index_.end() && d.links.front() == index->second;
+    });
+  };
   for (const auto& [name, joint] : model.joints_) {
     if (!joint->mimic) continue;
-    const urdf::JointConstSharedPtr target = model.getJoint(joint->mimic->joint_name);
-    const auto driver_of = [&](const std::string& link) {
-      const auto index = link_index_.find(link);
-      return std::find_if(robot_.drivers.begin(), robot_.drivers.end(), [&](const DriverDesc& d) {
-        return index != link_index_.end() && d.links.front() == index->second;
-      });
-    };
+    // q = scale * q_target + offset, following mimics of mimics (a loop stops the walk)
+    double scale = 1.0, offset = 0.0;
+    urdf::JointConstSharedPtr target = joint;
+    for (size_t step = 0; target && target->mimic && step <= model.joints_.size(); ++step) {
+      offset += scale * target->mimic->offset;
+      scale *= target->mimic->multiplier;
+      target = model.getJoint(target->mimic->joint_name);
+    }
     const auto own = driver_of(joint->child_link_name);
-    const auto other = target ? driver_of(target->child_link_name) : robot_.drivers.end();
-    if (own == robot_.drivers.end() || other == robot_.drivers.end() || own == other) {
+    const auto other =
+        target && !target->mimic ? driver_of(target->child_link_name) : robot_.drivers.end();
+    if (own == robot_.drivers.end() || other == robot_.drivers.end()) {
       context_.diagnostics.Warning({path_, xml_.JointLine(name), 0},
                                    "joint '" + name + "' mimics '" + joint->mimic->joint_name +
                                        "', which has no driver; it keeps its own driver");
       continue;
     }
-    DriverDesc& driver = *other;
-    if (driver.type != DriverType::kAffine) {
-      driver.type = DriverType::kAffine;
-      driver.affine_scale = {1.0};
-      driver.affine_offset = {0.0};
+    if (other->type != DriverType::kAffine) {
+      other->type = DriverType::kAffine;
+      other->affine_scale = {1.0};
+      other->affine_offset = {0.0};
+      // affine drivers carry no acceleration limit (as in Klamp't and the .rob format)
+      other->acceleration_min = -kInf;
+      other->acceleration_max = kInf;
     }
-    driver.links.push_back(own->links.front());
-    driver.affine_scale.push_back(joint->mimic->multiplier);
-    driver.affine_offset.push_back(joint->mimic->offset);
+    other->links.push_back(own->links.front());
+    other->affine_scale.push_back(scale);
+    other->affine_offset.push_back(offset);
     robot_.drivers.erase(own);
   }
 }
@@ -437,7 +453,8 @@ void MountAll(const KlamptExtras& extras, const std::string& path, LoadContext& 
     if (extension == "rob" || extension == "urdf") {
       RobotDesc sub;
       if (std::find(stack.begin(), stack.end(), file) != stack.end()) {
-        context.diagnostics.Error(where, "'mount' of '" + file + "' would mount a robot inside itself");
+        context.diagnostics.Error(where,
+                                  "'mount' of '" + file + "' would mount a robot inside itself");
       } else if (LoadRobotFileNested(file, where, context, stack, &sub)) {
         MountSubRobot(sub, link, mount.transform, mount.prefix, robot);
       }
@@ -480,7 +497,7 @@ bool ParseUrdfNested(const std::string& text, const std::string& path, LoadConte
                                    diagnostics, &robot.self_collision);
     const auto no_self = ResolvePairs(robot, extras.no_self_collision, "noselfcollision", false,
                                       path, diagnostics, &robot.no_self_collision);
-    stack.push_back(path);
+    stack.push_back(ResolvePath("", path));
     MountAll(extras, path, context, stack, &robot);
     stack.pop_back();
     ResolvePairs(robot, self, "selfcollision", true, path, diagnostics, &robot.self_collision);

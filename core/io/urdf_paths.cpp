@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // URDF mesh file names: relative, file:// and package:// references.
-#include <tinyxml2.h>
-
 #include <filesystem>
 #include <string>
+
+#include <tinyxml2.h>
 
 #include "core/io/paths.h"
 #include "core/io/urdf_xml.h"
@@ -37,12 +37,15 @@ bool PackageXmlNames(const fs::path& directory, const std::string& name) {
 // the package directory NAME found from `start` upward: the directory itself, a child
 // directory called NAME, or a child (or itself) whose package.xml names NAME; "" if none
 std::string FindPackage(const std::string& name, const std::string& start) {
-  std::error_code error;
   for (fs::path directory = fs::path(start);; directory = directory.parent_path()) {
+    std::error_code error;
     if (directory.filename() == name || PackageXmlNames(directory, name)) return directory;
     if (fs::is_directory(directory / name, error)) return directory / name;
-    for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
-      if (entry.is_directory(error) && PackageXmlNames(entry.path(), name)) return entry.path();
+    // incremented with an error code: an unreadable directory ends its scan, never throws
+    std::error_code scan_error;
+    for (fs::directory_iterator it(directory, scan_error), end; !scan_error && it != end;
+         it.increment(scan_error)) {
+      if (it->is_directory(error) && PackageXmlNames(it->path(), name)) return it->path();
     }
     if (directory == directory.parent_path()) return "";
   }

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: MIT
+// The tinyxml2 pass over a URDF: elements by name for line numbers, the link checks, and
+// Klamp't's <klampt> extension.
 #include "core/io/urdf_xml.h"
 
 #include <sstream>
@@ -59,13 +61,13 @@ bool CheckJointLinks(const XMLElement& joint, const std::string& joint_name,
     const XMLElement* element = joint.FirstChildElement(role);
     const char* link = element ? element->Attribute("link") : nullptr;
     if (!link) {
-      diagnostics.Error({path, joint.GetLineNum(), 0}, "joint '" + joint_name + "' has no <" +
-                                                           role + " link=...>");
+      diagnostics.Error({path, joint.GetLineNum(), 0},
+                        "joint '" + joint_name + "' has no <" + role + " link=...>");
       ok = false;
     } else if (xml.links.count(link) == 0) {
-      diagnostics.Error({path, element->GetLineNum(), 0},
-                        "joint '" + joint_name + "' names " + role + " link '" + link +
-                            "', which is not defined");
+      diagnostics.Error({path, element->GetLineNum(), 0}, "joint '" + joint_name + "' names " +
+                                                              role + " link '" + link +
+                                                              "', which is not defined");
       ok = false;
     }
   }
@@ -101,7 +103,8 @@ std::optional<Mat3> DefaultInertia(const XmlElementReader& reader) {
     if (values) return Mat3(values->asDiagonal());
   } else {
     const auto values = reader.Numbers("default_inertia", 9);
-    if (values) return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(values->data());
+    if (values)
+      return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(values->data());
   }
   return std::nullopt;
 }
@@ -124,8 +127,8 @@ void ReadProperty(const XmlElementReader& reader, const char* name, const std::s
   }
 }
 
-void ReadLinkSettings(const XMLElement& element, const std::string& path,
-                      Diagnostics& diagnostics, KlamptExtras* out) {
+void ReadLinkSettings(const XMLElement& element, const std::string& path, Diagnostics& diagnostics,
+                      KlamptExtras* out) {
   const XmlElementReader reader(element, path, diagnostics);
   reader.WarnUnknownAttributes({"name", "physical", "servoP", "servoI", "servoD", "dryFriction",
                                 "viscousFriction", "accMax"});
@@ -153,8 +156,8 @@ void ReadPairs(const XMLElement& element, const std::string& path, Diagnostics& 
   if (const auto text = reader.String("pairs")) {
     const std::vector<std::string> names = Words(*text);
     if (names.size() % 2 != 0) {
-      reader.Error("pairs", "expects pairs of links, got " + std::to_string(names.size()) +
-                                " names");
+      reader.Error("pairs",
+                   "expects pairs of links, got " + std::to_string(names.size()) + " names");
       return;
     }
     for (size_t i = 0; i < names.size(); i += 2) pairs->push_back({names[i], names[i + 1], line});
@@ -248,9 +251,9 @@ bool ReadUrdfXml(const std::string& text, const std::string& path, Diagnostics& 
   }
   const XMLElement* robot = document.RootElement();
   if (robot == nullptr || std::string(robot->Name()) != "robot") {
-    diagnostics.Error({path, robot ? robot->GetLineNum() : 0, 0},
-                      "expected a <robot> root element, got <" +
-                          std::string(robot ? robot->Name() : "") + ">");
+    diagnostics.Error(
+        {path, robot ? robot->GetLineNum() : 0, 0},
+        "expected a <robot> root element, got <" + std::string(robot ? robot->Name() : "") + ">");
     return false;
   }
   out->robot_line = robot->GetLineNum();

@@ -5,12 +5,12 @@
 // resolution of mesh file names (relative, file://, package://).
 #pragma once
 
-#include <tinyxml2.h>
-
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <tinyxml2.h>
 
 #include "core/diagnostics.h"
 #include "core/io/rob_statements.h"
@@ -51,8 +51,8 @@ struct KlamptExtras {
   std::string world_frame = "world";  ///< a root link of this name is the fixed world
   bool use_visual_geometry = false;
   bool freeze_root_link = false;
-  std::string package_root;        ///< absolute; "" = search for packages
-  double default_acc_max = 10.0;   ///< rad/s² (or m/s²) of every moving joint
+  std::string package_root;            ///< absolute; "" = search for packages
+  double default_acc_max = 10.0;       ///< rad/s² (or m/s²) of every moving joint
   std::optional<double> default_mass;  ///< of links without `<inertial>`
   std::optional<Mat3> default_inertia;
   std::map<std::string, KlamptLinkSettings> links;

@@ -12,8 +12,8 @@ namespace lamina::core {
 
 namespace {
 
-bool LoadSingleElement(const std::string& path, const std::string& extension,
-                       LoadContext& context, WorldDesc* out) {
+bool LoadSingleElement(const std::string& path, const std::string& extension, LoadContext& context,
+                       WorldDesc* out) {
   const SourceLocation where{path, 0, 0};
   if (extension == "rob" || extension == "urdf") {
     RobotDesc robot;
@@ -33,8 +33,9 @@ bool LoadSingleElement(const std::string& path, const std::string& extension,
     out->terrains.push_back(std::move(terrain));
     return true;
   }
-  context.diagnostics.Error(where, "unsupported file type '." + extension +
-                                       "' (expected a world .xml, .rob, .urdf, .obj, .env or mesh)");
+  context.diagnostics.Error(where,
+                            "unsupported file type '." + extension +
+                                "' (expected a world .xml, .rob, .urdf, .obj, .env or mesh)");
   return false;
 }
 

@@ -22,10 +22,12 @@ bool ParseWorldXml(const std::string& text, const std::string& path, LoadContext
                    WorldDesc* out);
 
 /// The XML of `world` for a file at `path`: file references relative to its directory, each
-/// robot as a `.rob` in `<stem>_robots/` beside it (listed in `robot_files`: path -> text).
+/// robot as a `.rob` in `<stem>_robots/` beside it, inline primitives as `.geom` files there.
 struct WorldFileSet {
   std::string world_xml;
   std::vector<std::pair<std::string, std::string>> robot_files;  ///< absolute path -> text
+  /// `.geom` files for robot primitives that had no file (from URDF): absolute path -> text.
+  std::vector<std::pair<std::string, std::string>> geometry_files;
   std::vector<std::string> errors;  ///< what the files cannot express (nothing is saved then)
 };
 WorldFileSet WriteWorld(const WorldDesc& world, const std::string& path);

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "core/io/world_simulation_reader.h"
 
-
 namespace lamina::core {
 
 namespace {
@@ -97,8 +96,8 @@ void SimulationReader::Read(const XMLElement& block) {
 
 void SimulationReader::ReadGlobals(const XMLElement& element) {
   const XmlElementReader reader = Reader(element);
-  reader.WarnUnknownAttributes({"timestep", "gravity", "ERP", "CFM", "maxContacts",
-                                "boundaryLayer", "adaptiveTimeStepping", "rigidObjectCollisions",
+  reader.WarnUnknownAttributes({"timestep", "gravity", "ERP", "CFM", "maxContacts", "boundaryLayer",
+                                "adaptiveTimeStepping", "rigidObjectCollisions",
                                 "robotSelfCollisions", "robotRobotCollisions"});
   SimSettings& s = world_->settings;
   if (const auto timestep = reader.Number("timestep", false)) {
@@ -226,7 +225,8 @@ void SimulationReader::ReadRobotRef(const XMLElement& element) {
 void ReadSurfaceAttributes(const XmlElementReader& reader, SurfaceDesc* surface) {
   if (const auto e = reader.Number("kRestitution", false)) {
     if (*e < 0 || *e > 1) {
-      reader.Error("kRestitution", "must be in [0, 1], got '" + *reader.String("kRestitution") + "'");
+      reader.Error("kRestitution",
+                   "must be in [0, 1], got '" + *reader.String("kRestitution") + "'");
     } else {
       surface->restitution = *e;
     }

@@ -3,9 +3,9 @@
 // parameters (padding, preshrink, surface, initial velocity).
 #pragma once
 
-#include <tinyxml2.h>
-
 #include <string>
+
+#include <tinyxml2.h>
 
 #include "core/diagnostics.h"
 #include "core/io/xml_element_reader.h"

@@ -213,14 +213,14 @@ void WorldReader::ReadObjectPhysics(const XMLElement& element, RigidObjectDesc* 
   }
   if (const auto com = reader.Vector3("com")) object->com = *com;
   if (const auto inertia = reader.Numbers("inertia", 9)) {
-    object->inertia = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(
-        inertia->data());
+    object->inertia =
+        Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(inertia->data());
   }
   double fraction = kDefaultSurfaceFraction;
   if (const auto value = reader.Number("automassSurfaceFraction", false)) {
     if (*value < 0 || *value > 1) {
-      reader.Error("automassSurfaceFraction", "must be in [0, 1], got '" +
-                                                  *reader.String("automassSurfaceFraction") + "'");
+      reader.Error("automassSurfaceFraction",
+                   "must be in [0, 1], got '" + *reader.String("automassSurfaceFraction") + "'");
     } else {
       fraction = *value;
     }
@@ -249,7 +249,8 @@ void WorldReader::ReadTerrain(const XMLElement& element) {
   }
   TerrainDesc terrain;
   if (!LoadTerrainFile(ResolvePath(dir_, *file), reader.location(), context_, &terrain)) return;
-  terrain.name = reader.String("name").value_or("Terrain" + std::to_string(world_->terrains.size()));
+  terrain.name =
+      reader.String("name").value_or("Terrain" + std::to_string(world_->terrains.size()));
   ApplyGeometryTransform(reader, &terrain.geometry);
   if (const auto margin = reader.Number("margin", false)) terrain.geometry.margin = *margin;
   if (const auto friction = reader.Number("kFriction")) {
@@ -279,16 +280,16 @@ bool ParseWorldXml(const std::string& text, const std::string& path, LoadContext
   out->source_path = path;
   tinyxml2::XMLDocument document;
   if (document.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS) {
-    context.diagnostics.Error({path, document.ErrorLineNum(), 0},
-                              std::string("malformed XML: ") +
-                                  tinyxml2::XMLDocument::ErrorIDToName(document.ErrorID()));
+    context.diagnostics.Error(
+        {path, document.ErrorLineNum(), 0},
+        std::string("malformed XML: ") + tinyxml2::XMLDocument::ErrorIDToName(document.ErrorID()));
     return false;
   }
   const XMLElement* root = document.RootElement();
   if (!root || std::string(root->Name()) != "world") {
-    context.diagnostics.Error({path, root ? root->GetLineNum() : 1, 0},
-                              "root element must be <world>, got <" +
-                                  std::string(root ? root->Name() : "") + ">");
+    context.diagnostics.Error(
+        {path, root ? root->GetLineNum() : 1, 0},
+        "root element must be <world>, got <" + std::string(root ? root->Name() : "") + ">");
     return false;
   }
   WorldReader(path, context, out).ReadWorld(*root);

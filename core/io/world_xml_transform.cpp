@@ -9,9 +9,13 @@ namespace lamina::core {
 
 namespace {
 
-std::string FormatVector(const Vec3& v) { return FormatDoubles(v.data(), 3); }
+std::string FormatVector(const Vec3& v) {
+  return FormatDoubles(v.data(), 3);
+}
 
-bool IsUniform(const Vec3& scale) { return scale.x() == scale.y() && scale.y() == scale.z(); }
+bool IsUniform(const Vec3& scale) {
+  return scale.x() == scale.y() && scale.y() == scale.z();
+}
 
 }  // namespace
 
@@ -119,8 +123,8 @@ bool GeometryTransformAttributes(const GeometryDesc& geometry,
     pose.translation() = matrix.translation();
   }
   if (scale != Vec3::Ones()) {
-    attributes->emplace_back("scale", IsUniform(scale) ? FormatDouble(scale.x())
-                                                       : FormatVector(scale));
+    attributes->emplace_back("scale",
+                             IsUniform(scale) ? FormatDouble(scale.x()) : FormatVector(scale));
   }
   if (!pose.translation().isZero(0.0)) {
     attributes->emplace_back("translation", FormatVector(pose.translation()));

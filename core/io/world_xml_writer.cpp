@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 // Writing a WorldDesc as Klamp't world XML (plus one `.rob` per robot) such that loading the
 // result gives the same description.
-#include <tinyxml2.h>
-
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <set>
 
+#include <tinyxml2.h>
+
+#include "core/io/geometry_file.h"
 #include "core/io/paths.h"
 #include "core/io/robot_file.h"
 #include "core/io/text_statements.h"
@@ -20,7 +21,9 @@ namespace {
 
 using Attributes = std::vector<std::pair<std::string, std::string>>;
 
-std::string Format3(const Vec3& v) { return FormatDoubles(v.data(), 3); }
+std::string Format3(const Vec3& v) {
+  return FormatDoubles(v.data(), 3);
+}
 
 std::string FormatMatrixRowMajor(const Mat3& m) {
   const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> row_major = m;
@@ -59,6 +62,7 @@ class WorldWriter {
   void WriteTerrain(const TerrainDesc& terrain);
   void WriteObject(const RigidObjectDesc& object);
   void WriteRobot(const RobotDesc& robot, std::set<std::string>* used_names);
+  RobotDesc WithPrimitiveFiles(const RobotDesc& robot, const std::string& rob_path);
   void WriteSimulation();
   void WriteBodyParams(const char* kind, int index, const BodySimParams& params,
                        const std::string& body = "");
@@ -137,10 +141,33 @@ void WorldWriter::WriteObject(const RigidObjectDesc& object) {
   printer_.CloseElement();
 }
 
+// gives every primitive without a file its own `.geom` file beside the robot file
+RobotDesc WorldWriter::WithPrimitiveFiles(const RobotDesc& robot, const std::string& rob_path) {
+  RobotDesc copy = robot;
+  for (size_t link = 0; link < copy.links.size(); ++link) {
+    std::vector<GeometryDesc>& pieces = copy.links[link].geometry;
+    for (size_t k = 0; k < pieces.size(); ++k) {
+      if (pieces[k].kind != GeometryKind::kPrimitive || !pieces[k].path.empty()) continue;
+      const auto text = WriteGeomText(pieces[k].primitive);
+      if (!text) {
+        files_.errors.push_back("robot '" + robot.name + "' link " + std::to_string(link) + ": a " +
+                                pieces[k].primitive.TypeName() +
+                                " cannot be written as a .geom file");
+        continue;
+      }
+      pieces[k].path = rob_path.substr(0, rob_path.size() - 4) + "_link" + std::to_string(link) +
+                       "_" + std::to_string(k) + ".geom";
+      files_.geometry_files.emplace_back(pieces[k].path, *text);
+    }
+  }
+  return copy;
+}
+
 void WorldWriter::WriteRobot(const RobotDesc& robot, std::set<std::string>* used_names) {
   const std::string relative = robots_dir_name_ + "/" + RobotFileName(robot.name, used_names);
   const std::string rob_path = ResolvePath(dir_, relative);
-  files_.robot_files.emplace_back(rob_path, WriteRob(robot, DirectoryOf(rob_path)));
+  files_.robot_files.emplace_back(
+      rob_path, WriteRob(WithPrimitiveFiles(robot, rob_path), DirectoryOf(rob_path)));
   Attributes attributes{{"name", robot.name}, {"file", relative}};
   if (robot.config.size() == robot.dof()) {
     attributes.emplace_back("config", FormatCountedVector(robot.config));
@@ -187,9 +214,9 @@ void WorldWriter::WriteSimulation() {
   }
   for (size_t r = 0; r < world_.robots.size(); ++r) {
     const RobotDesc& robot = world_.robots[r];
-    const bool uniform = std::all_of(robot.links.begin(), robot.links.end(), [&](const LinkDesc& l) {
-      return l.sim == robot.links.front().sim;
-    });
+    const bool uniform =
+        std::all_of(robot.links.begin(), robot.links.end(),
+                    [&](const LinkDesc& l) { return l.sim == robot.links.front().sim; });
     for (int link = 0; link < robot.dof(); ++link) {
       if (uniform && link > 0) break;
       WriteBodyParams("robot", static_cast<int>(r), robot.links[link].sim,
@@ -218,17 +245,19 @@ bool SaveWorldFile(const WorldDesc& world, const std::string& path, Diagnostics&
   for (const std::string& error : files.errors) diagnostics.Error({absolute, 0, 0}, error);
   if (!files.errors.empty()) return false;
   if (!std::filesystem::is_directory(DirectoryOf(absolute))) {
-    diagnostics.Error({absolute, 0, 0}, "cannot save: directory '" + DirectoryOf(absolute) +
-                                            "' does not exist");
+    diagnostics.Error({absolute, 0, 0},
+                      "cannot save: directory '" + DirectoryOf(absolute) + "' does not exist");
     return false;
   }
   std::string error;
-  for (const auto& [rob_path, text] : files.robot_files) {
-    std::error_code ignored;
-    std::filesystem::create_directories(DirectoryOf(rob_path), ignored);
-    if (!WriteFileAtomically(rob_path, text, &error)) {
-      diagnostics.Error({rob_path, 0, 0}, error);
-      return false;
+  for (const auto* group : {&files.geometry_files, &files.robot_files}) {
+    for (const auto& [file_path, text] : *group) {
+      std::error_code ignored;
+      std::filesystem::create_directories(DirectoryOf(file_path), ignored);
+      if (!WriteFileAtomically(file_path, text, &error)) {
+        diagnostics.Error({file_path, 0, 0}, error);
+        return false;
+      }
     }
   }
   if (!WriteFileAtomically(absolute, files.world_xml, &error)) {

@@ -4,12 +4,12 @@
 // a "did you mean" suggestion.
 #pragma once
 
-#include <tinyxml2.h>
-
 #include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <tinyxml2.h>
 
 #include "core/diagnostics.h"
 #include "core/math_types.h"

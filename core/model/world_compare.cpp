@@ -14,8 +14,8 @@ class Comparer {
   explicit Comparer(double tolerance) : tolerance_(tolerance) {}
 
   void Number(const std::string& field, double a, double b) {
-    const bool same = (a == b) || (std::isfinite(a) && std::isfinite(b) &&
-                                   std::abs(a - b) <= tolerance_);
+    const bool same =
+        (a == b) || (std::isfinite(a) && std::isfinite(b) && std::abs(a - b) <= tolerance_);
     if (!same) Add(field, FormatDouble(a), FormatDouble(b));
   }
   template <typename Derived>
@@ -72,7 +72,18 @@ void Comparer::Geometry(const std::string& f, const GeometryDesc& a, const Geome
   if (a.kind == GeometryKind::kPrimitive && b.kind == GeometryKind::kPrimitive) {
     Integer(f + ".primitive.type", static_cast<int>(a.primitive.type),
             static_cast<int>(b.primitive.type));
-    Matrix(f + ".primitive.pose", a.primitive.pose.matrix(), b.primitive.pose.matrix());
+    // compare shapes, not parameterizations: a sphere has no orientation, a cylinder none
+    // about its axis
+    const Pose& pa = a.primitive.pose;
+    const Pose& pb = b.primitive.pose;
+    Matrix(f + ".primitive.center", pa.translation(), pb.translation());
+    if (a.primitive.type == PrimitiveType::kBox) {
+      Matrix(f + ".primitive.rotation", pa.linear(), pb.linear());
+    } else if (a.primitive.type != PrimitiveType::kSphere) {
+      const Vec3 axis_a = pa.linear().col(2);
+      const Vec3 axis_b = pb.linear().col(2);
+      Matrix(f + ".primitive.axis", axis_a, axis_b);
+    }
     Number(f + ".primitive.radius", a.primitive.radius, b.primitive.radius);
     Number(f + ".primitive.length", a.primitive.length, b.primitive.length);
     Matrix(f + ".primitive.size", a.primitive.size, b.primitive.size);
@@ -126,8 +137,7 @@ void Comparer::Driver(const std::string& f, const DriverDesc& a, const DriverDes
   }
   if (Count(f + ".affine_scale", a.affine_scale.size(), b.affine_scale.size())) {
     for (size_t i = 0; i < a.affine_scale.size(); ++i) {
-      Number(f + ".affine_scale[" + std::to_string(i) + "]", a.affine_scale[i],
-             b.affine_scale[i]);
+      Number(f + ".affine_scale[" + std::to_string(i) + "]", a.affine_scale[i], b.affine_scale[i]);
     }
   }
   if (Count(f + ".affine_offset", a.affine_offset.size(), b.affine_offset.size())) {
@@ -184,8 +194,8 @@ void Comparer::Robot(const std::string& f, const RobotDesc& a, const RobotDesc& 
         std::to_string(b.properties.size()));
   Matrix(f + ".config", a.config, b.config);
   Matrix(f + ".velocity", a.velocity, b.velocity);
-  Exact(f + ".link_display", a.link_display, b.link_display,
-        std::to_string(a.link_display.size()), std::to_string(b.link_display.size()));
+  Exact(f + ".link_display", a.link_display, b.link_display, std::to_string(a.link_display.size()),
+        std::to_string(b.link_display.size()));
 }
 
 void Comparer::Object(const std::string& f, const RigidObjectDesc& a, const RigidObjectDesc& b) {
@@ -197,8 +207,7 @@ void Comparer::Object(const std::string& f, const RigidObjectDesc& a, const Rigi
   Matrix(f + ".inertia", a.inertia, b.inertia);
   Sim(f + ".sim", a.sim, b.sim);
   Matrix(f + ".initial_velocity.linear", a.initial_velocity.linear, b.initial_velocity.linear);
-  Matrix(f + ".initial_velocity.angular", a.initial_velocity.angular,
-         b.initial_velocity.angular);
+  Matrix(f + ".initial_velocity.angular", a.initial_velocity.angular, b.initial_velocity.angular);
   Exact(f + ".display", a.display, b.display, std::to_string(a.display.size()),
         std::to_string(b.display.size()));
 }
@@ -210,8 +219,7 @@ void Comparer::Settings(const SimSettings& a, const SimSettings& b) {
   Number("settings.cfm", a.cfm, b.cfm);
   Integer("settings.max_contacts", a.max_contacts, b.max_contacts);
   Integer("settings.adaptive_time_stepping", a.adaptive_time_stepping, b.adaptive_time_stepping);
-  Integer("settings.rigid_object_collisions", a.rigid_object_collisions,
-          b.rigid_object_collisions);
+  Integer("settings.rigid_object_collisions", a.rigid_object_collisions, b.rigid_object_collisions);
   Integer("settings.robot_self_collisions", a.robot_self_collisions, b.robot_self_collisions);
   Integer("settings.robot_robot_collisions", a.robot_robot_collisions, b.robot_robot_collisions);
 }

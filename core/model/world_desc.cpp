@@ -41,9 +41,13 @@ std::vector<std::pair<int, int>> RobotDesc::SelfCollisionPairs() const {
   return {pairs.begin(), pairs.end()};
 }
 
-int WorldDesc::TerrainId(int terrain) const { return terrain; }
+int WorldDesc::TerrainId(int terrain) const {
+  return terrain;
+}
 
-int WorldDesc::ObjectId(int object) const { return static_cast<int>(terrains.size()) + object; }
+int WorldDesc::ObjectId(int object) const {
+  return static_cast<int>(terrains.size()) + object;
+}
 
 int WorldDesc::RobotId(int robot) const {
   int id = static_cast<int>(terrains.size() + objects.size());
@@ -51,9 +55,13 @@ int WorldDesc::RobotId(int robot) const {
   return id;
 }
 
-int WorldDesc::RobotLinkId(int robot, int link) const { return RobotId(robot) + 1 + link; }
+int WorldDesc::RobotLinkId(int robot, int link) const {
+  return RobotId(robot) + 1 + link;
+}
 
-int WorldDesc::IdCount() const { return RobotId(static_cast<int>(robots.size())); }
+int WorldDesc::IdCount() const {
+  return RobotId(static_cast<int>(robots.size()));
+}
 
 WorldId WorldDesc::Resolve(int id) const {
   WorldId out;

@@ -80,10 +80,10 @@ struct LinkDesc {
   std::string name;
   int parent = -1;  ///< index of the parent link, -1 for a root
   LinkJointAxis axis_type = LinkJointAxis::kRevolute;
-  Vec3 axis = Vec3::UnitZ();                 ///< joint axis in the link frame
-  Pose parent_transform = Pose::Identity();  ///< link frame in the parent frame at q = 0
-  double q_min = -kInf, q_max = kInf;        ///< position limits, rad or m
-  double q_initial = 0.0;                    ///< configuration in the robot file
+  Vec3 axis = Vec3::UnitZ();                         ///< joint axis in the link frame
+  Pose parent_transform = Pose::Identity();          ///< link frame in the parent frame at q = 0
+  double q_min = -kInf, q_max = kInf;                ///< position limits, rad or m
+  double q_initial = 0.0;                            ///< configuration in the robot file
   double velocity_min = -kInf, velocity_max = kInf;  ///< rad/s or m/s
   double acceleration_max = kInf;                    ///< rad/s² or m/s²
   double torque_max = kInf;                          ///< N·m or N
@@ -158,15 +158,15 @@ struct RobotDesc {
 
 /// Global simulation settings (`<simulation><globals>`).
 struct SimSettings {
-  double timestep = 0.001;                   ///< s, largest physics sub-step
-  Vec3 gravity = Vec3(0.0, 0.0, -9.8);       ///< m/s²
-  double erp = 0.95;                         ///< global error reduction parameter
-  double cfm = 1e-6;                         ///< global constraint force mixing
-  int max_contacts = 20;                     ///< contacts kept per body pair after clustering
-  bool adaptive_time_stepping = true;        ///< roll back and halve the step when needed
-  bool rigid_object_collisions = true;       ///< object-object contacts
-  bool robot_self_collisions = false;        ///< robot self-contacts (allowed pairs only)
-  bool robot_robot_collisions = true;        ///< contacts between different robots
+  double timestep = 0.001;              ///< s, largest physics sub-step
+  Vec3 gravity = Vec3(0.0, 0.0, -9.8);  ///< m/s²
+  double erp = 0.95;                    ///< global error reduction parameter
+  double cfm = 1e-6;                    ///< global constraint force mixing
+  int max_contacts = 20;                ///< contacts kept per body pair after clustering
+  bool adaptive_time_stepping = true;   ///< roll back and halve the step when needed
+  bool rigid_object_collisions = true;  ///< object-object contacts
+  bool robot_self_collisions = false;   ///< robot self-contacts (allowed pairs only)
+  bool robot_robot_collisions = true;   ///< contacts between different robots
 
   bool operator==(const SimSettings&) const = default;
 };

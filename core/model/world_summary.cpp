@@ -4,10 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
 
 namespace lamina::core {
 
@@ -20,7 +20,9 @@ ordered_json Number(double value) {
   return value;
 }
 
-ordered_json Vector(const Vec3& v) { return ordered_json::array({v.x(), v.y(), v.z()}); }
+ordered_json Vector(const Vec3& v) {
+  return ordered_json::array({v.x(), v.y(), v.z()});
+}
 
 const char* PreshrinkName(Preshrink preshrink) {
   switch (preshrink) {
@@ -173,15 +175,15 @@ std::string WorldSummaryText(const WorldDesc& world) {
   out << "world " << world.name << " (" << world.source_path << ")\n";
   for (int i = 0; i < static_cast<int>(world.terrains.size()); ++i) {
     const TerrainDesc& t = world.terrains[i];
-    out << "terrain " << world.TerrainId(i) << " '" << t.name << "': "
-        << t.geometry.triangle_count() << " triangles\n  " << SimParamsText(t.sim) << "\n";
+    out << "terrain " << world.TerrainId(i) << " '" << t.name
+        << "': " << t.geometry.triangle_count() << " triangles\n  " << SimParamsText(t.sim) << "\n";
   }
   for (int i = 0; i < static_cast<int>(world.objects.size()); ++i) {
     const RigidObjectDesc& o = world.objects[i];
     const Vec3 p = o.pose.translation();
-    out << "object " << world.ObjectId(i) << " '" << o.name << "': mass " << Text(o.mass)
-        << " kg, " << o.geometry.triangle_count() << " triangles, at (" << Text(p.x()) << ", "
-        << Text(p.y()) << ", " << Text(p.z()) << ")\n  " << SimParamsText(o.sim) << "\n";
+    out << "object " << world.ObjectId(i) << " '" << o.name << "': mass " << Text(o.mass) << " kg, "
+        << o.geometry.triangle_count() << " triangles, at (" << Text(p.x()) << ", " << Text(p.y())
+        << ", " << Text(p.z()) << ")\n  " << SimParamsText(o.sim) << "\n";
   }
   for (int i = 0; i < static_cast<int>(world.robots.size()); ++i) {
     const RobotDesc& r = world.robots[i];

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
 // `lamina-headless info`: runs the real binary and checks its output, exit code and
 // diagnostics.
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
-
 #include <array>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
-#include <nlohmann/json.hpp>
 #include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "tests/common/test_support.h"
 

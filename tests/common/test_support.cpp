@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "tests/common/test_support.h"
 
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
 
+#include <gtest/gtest.h>
 
 namespace lamina::test {
 
@@ -23,8 +22,7 @@ std::string ScratchDir() {
   for (char& c : name) {
     if (c == '/') c = '_';
   }
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "lamina-tests" / name;
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "lamina-tests" / name;
   std::filesystem::create_directories(dir);
   return dir.string();
 }

@@ -15,13 +15,14 @@ using test::LoadedWorld;
 using test::WorldsPath;
 using ::testing::ElementsAre;
 
-std::string Cube() { return WorldsPath("klampt/objects/cube.off"); }
+std::string Cube() {
+  return WorldsPath("klampt/objects/cube.off");
+}
 
 // an object element around `physics` with a valid geometry
 std::string ObjectWith(const std::string& object_attributes, const std::string& physics) {
-  return "<world>\n  <rigidObject name=\"b\" " + object_attributes +
-         ">\n    <geometry mesh=\"" + Cube() + "\"/>\n    " + physics +
-         "\n  </rigidObject>\n</world>\n";
+  return "<world>\n  <rigidObject name=\"b\" " + object_attributes + ">\n    <geometry mesh=\"" +
+         Cube() + "\"/>\n    " + physics + "\n  </rigidObject>\n</world>\n";
 }
 
 struct BadWorld {
@@ -50,33 +51,44 @@ TEST_P(WorldErrorTest, ReportsExactMessage) {
 INSTANTIATE_TEST_SUITE_P(
     Malformed, WorldErrorTest,
     ::testing::Values(
-        BadWorld{"unclosed", "<world>\n  <terrain file=\"x.off\">\n</world>\n",
+        BadWorld{"unclosed",
+                 "<world>\n  <terrain file=\"x.off\">\n</world>\n",
                  // tinyxml2 names the line of the element left open
                  {"2: error: malformed XML: XML_ERROR_MISMATCHED_ELEMENT"}},
         BadWorld{"empty", "", {" error: malformed XML: XML_ERROR_EMPTY_DOCUMENT"}},
-        BadWorld{"wrong_root", "<robot name=\"r\"/>\n",
+        BadWorld{"wrong_root",
+                 "<robot name=\"r\"/>\n",
                  {"1: error: root element must be <world>, got <robot>"}},
-        BadWorld{"robot_without_file", "<world>\n  <robot name=\"r\"/>\n</world>\n",
+        BadWorld{"robot_without_file",
+                 "<world>\n  <robot name=\"r\"/>\n</world>\n",
                  {"2: error: <robot name=\"r\">: missing attribute 'file'"}},
-        BadWorld{"terrain_without_file", "<world>\n\n  <terrain/>\n</world>\n",
+        BadWorld{"terrain_without_file",
+                 "<world>\n\n  <terrain/>\n</world>\n",
                  {"3: error: <terrain>: missing attribute 'file'"}},
-        BadWorld{"object_without_geometry", "<world>\n  <rigidObject name=\"b\"/>\n</world>\n",
+        BadWorld{"object_without_geometry",
+                 "<world>\n  <rigidObject name=\"b\"/>\n</world>\n",
                  {"2: error: <rigidObject name=\"b\">: has no geometry (give 'file' or a "
                   "<geometry mesh=...> child)"}},
-        BadWorld{"negative_mass", ObjectWith("", "<physics mass=\"-2\"/>"),
+        BadWorld{"negative_mass",
+                 ObjectWith("", "<physics mass=\"-2\"/>"),
                  {"4: error: <physics>: attribute 'mass' must be >= 0, got '-2'"}},
-        BadWorld{"nan_position", ObjectWith("position=\"0 nan 1\"", ""),
+        BadWorld{"nan_position",
+                 ObjectWith("position=\"0 nan 1\"", ""),
                  {"2: error: <rigidObject name=\"b\">: attribute 'position' has 'nan', which is "
                   "not a number"}},
-        BadWorld{"short_position", ObjectWith("position=\"0 1\"", ""),
+        BadWorld{"short_position",
+                 ObjectWith("position=\"0 1\"", ""),
                  {"2: error: <rigidObject name=\"b\">: attribute 'position' expects 3 numbers, "
                   "got '0 1'"}},
-        BadWorld{"inertia_length", ObjectWith("", "<physics inertia=\"1 0 0 0 1 0 0 0\"/>"),
+        BadWorld{"inertia_length",
+                 ObjectWith("", "<physics inertia=\"1 0 0 0 1 0 0 0\"/>"),
                  {"4: error: <physics>: attribute 'inertia' expects 9 numbers, got '1 0 0 0 1 0 "
                   "0 0'"}},
-        BadWorld{"restitution_range", ObjectWith("", "<physics kRestitution=\"1.5\"/>"),
+        BadWorld{"restitution_range",
+                 ObjectWith("", "<physics kRestitution=\"1.5\"/>"),
                  {"4: error: <physics>: attribute 'kRestitution' must be in [0, 1], got '1.5'"}},
-        BadWorld{"negative_friction", ObjectWith("", "<physics kFriction=\"-0.1\"/>"),
+        BadWorld{"negative_friction",
+                 ObjectWith("", "<physics kFriction=\"-0.1\"/>"),
                  {"4: error: <physics>: attribute 'kFriction' must be >= 0, got '-0.1'"}},
         BadWorld{"zero_scale",
                  "<world>\n  <terrain file=\"" + WorldsPath("klampt/terrains/cube.off") +
@@ -105,17 +117,20 @@ INSTANTIATE_TEST_SUITE_P(
                   "3: error: <globals>: attribute 'adaptiveTimeStepping' expects 0 or 1, got "
                   "'maybe'"}},
         BadWorld{"config_size",
-                 "<world>\n  <robot name=\"arm\" file=\"" + WorldsPath("klampt/robots/planar3R.rob") +
+                 "<world>\n  <robot name=\"arm\" file=\"" +
+                     WorldsPath("klampt/robots/planar3R.rob") +
                      "\" config=\"2  0 0\"/>\n</world>\n",
                  {"2: error: <robot name=\"arm\">: configuration has 2 values but robot 'arm' has "
                   "3 links"}},
         BadWorld{"config_count",
-                 "<world>\n  <robot name=\"arm\" file=\"" + WorldsPath("klampt/robots/planar3R.rob") +
+                 "<world>\n  <robot name=\"arm\" file=\"" +
+                     WorldsPath("klampt/robots/planar3R.rob") +
                      "\" config=\"3  0 0\"/>\n</world>\n",
                  {"2: error: <robot name=\"arm\">: attribute 'config' declares 3 values but gives "
                   "2"}},
         BadWorld{"robot_body_range",
-                 "<world>\n  <robot name=\"arm\" file=\"" + WorldsPath("klampt/robots/planar3R.rob") +
+                 "<world>\n  <robot name=\"arm\" file=\"" +
+                     WorldsPath("klampt/robots/planar3R.rob") +
                      "\"/>\n  <simulation>\n    <robot index=\"0\" body=\"7\"/>\n  </simulation>\n"
                      "</world>\n",
                  {"4: error: <robot index=\"0\">: attribute 'body' is 7 but robot 'arm' has 3 "
@@ -126,9 +141,9 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(WorldErrorsTest, UnknownSimulationNameIsAnError) {
   const std::string path = test::WriteScratchFile(
-      "w.xml", ObjectWith("", "").replace(
-                   ObjectWith("", "").find("</world>"), 8,
-                   "<simulation>\n<object name=\"c\"/>\n</simulation>\n</world>"));
+      "w.xml",
+      ObjectWith("", "").replace(ObjectWith("", "").find("</world>"), 8,
+                                 "<simulation>\n<object name=\"c\"/>\n</simulation>\n</world>"));
   LoadedWorld loaded;
   test::LoadWorld(path, &loaded);
   EXPECT_THAT(loaded.diagnostics.Messages(Severity::kError),
@@ -138,9 +153,9 @@ TEST(WorldErrorsTest, UnknownSimulationNameIsAnError) {
 
 TEST(WorldErrorsTest, ManyProblemsAreAllReportedInOneRun) {
   const std::string path = test::WriteScratchFile(
-      "many.xml", "<world>\n  <robot name=\"r\"/>\n  <terrain/>\n" +
-                      ObjectWith("position=\"1 2\"", "<physics mass=\"-1\" kFriction=\"x\"/>")
-                          .substr(8));
+      "many.xml",
+      "<world>\n  <robot name=\"r\"/>\n  <terrain/>\n" +
+          ObjectWith("position=\"1 2\"", "<physics mass=\"-1\" kFriction=\"x\"/>").substr(8));
   LoadedWorld loaded;
   test::LoadWorld(path, &loaded);
   EXPECT_FALSE(loaded.ok);

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Saving: load -> save -> load gives the same description for every example world, edits
 // survive, saving is a fixed point, and a failed save leaves the old file intact.
+#include <filesystem>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-
-#include <filesystem>
 
 #include "core/io/paths.h"
 #include "core/io/world_file.h"
@@ -81,6 +81,25 @@ TEST(WorldSaveTest, EditsSurviveSaving) {
   SaveAndReload(edited, test::ScratchDir() + "/edited.xml", &reloaded);
   EXPECT_THAT(core::CompareWorlds(edited, reloaded.world, kRoundTripTolerance), IsEmpty());
   EXPECT_THAT(core::CompareWorlds(original.world, reloaded.world), ::testing::Not(IsEmpty()));
+}
+
+TEST(WorldSaveTest, UrdfPrimitivesAreSavedAsGeomFiles) {
+  const std::string path = test::WriteScratchFile(
+      "urdf_world.xml", "<world>\n  <robot name=\"r\" file=\"" +
+                            test::DataPath("robots/urdf/all_joints.urdf") + "\"/>\n</world>\n");
+  LoadedWorld original;
+  test::LoadWorld(path, &original);
+  ASSERT_TRUE(original.ok) << original.diagnostics.FormatAll();
+  LoadedWorld reloaded;
+  SaveAndReload(original.world, test::ScratchDir() + "/saved.xml", &reloaded);
+  // the shapes come back identical; only their file names are new
+  const auto differences = core::CompareWorlds(original.world, reloaded.world, 1e-12);
+  EXPECT_FALSE(differences.empty());
+  for (const std::string& difference : differences) {
+    EXPECT_THAT(difference,
+                ::testing::MatchesRegex(
+                    ".*\\.geometry\\[[0-9]+\\]\\.path: '' vs '.*_link[0-9]+_[0-9]+\\.geom'"));
+  }
 }
 
 TEST(WorldSaveTest, RobotsAreWrittenBesideTheWorld) {

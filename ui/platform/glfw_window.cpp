@@ -53,7 +53,9 @@ bool GlfwWindow::Open(const std::string& title, int width, int height, std::stri
   return true;
 }
 
-bool GlfwWindow::ShouldClose() const { return glfwWindowShouldClose(window_) != 0; }
+bool GlfwWindow::ShouldClose() const {
+  return glfwWindowShouldClose(window_) != 0;
+}
 
 void GlfwWindow::BeginFrame() {
   glfwPollEvents();
@@ -72,7 +74,9 @@ void GlfwWindow::EndFrame(float red, float green, float blue) {
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
-void GlfwWindow::Swap() { glfwSwapBuffers(window_); }
+void GlfwWindow::Swap() {
+  glfwSwapBuffers(window_);
+}
 
 std::vector<std::uint8_t> GlfwWindow::ReadPixels(int* width, int* height) const {
   glfwGetFramebufferSize(window_, width, height);
