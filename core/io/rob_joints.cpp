@@ -10,24 +10,6 @@ namespace lamina::core::rob {
 
 namespace {
 
-const char* JointTypeName(JointType type) {
-  switch (type) {
-    case JointType::kNormal:
-      return "normal";
-    case JointType::kSpin:
-      return "spin";
-    case JointType::kWeld:
-      return "weld";
-    case JointType::kFloating:
-      return "floating";
-    case JointType::kFloatingPlanar:
-      return "floatingplanar";
-    case JointType::kBallAndSocket:
-      return "ballandsocket";
-  }
-  return "normal";
-}
-
 bool SpansChain(JointType type) {
   return type == JointType::kFloating || type == JointType::kFloatingPlanar ||
          type == JointType::kBallAndSocket;

@@ -82,6 +82,36 @@ WorldId WorldDesc::Resolve(int id) const {
   return out;
 }
 
+const char* JointTypeName(JointType type) {
+  switch (type) {
+    case JointType::kNormal:
+      return "normal";
+    case JointType::kSpin:
+      return "spin";
+    case JointType::kWeld:
+      return "weld";
+    case JointType::kFloating:
+      return "floating";
+    case JointType::kFloatingPlanar:
+      return "floatingplanar";
+    case JointType::kBallAndSocket:
+      return "ballandsocket";
+  }
+  return "normal";
+}
+
+const char* PreshrinkName(Preshrink preshrink) {
+  switch (preshrink) {
+    case Preshrink::kNone:
+      return "none";
+    case Preshrink::kCopy:
+      return "copy";
+    case Preshrink::kInPlace:
+      return "in-place";
+  }
+  return "none";
+}
+
 BodySimParams DefaultTerrainSimParams() {
   BodySimParams params;
   params.padding = 0.0;

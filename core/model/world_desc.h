@@ -202,6 +202,11 @@ struct WorldDesc {
   WorldId Resolve(int id) const;
 };
 
+/// Lower-case names as the `.rob` format spells them ("normal", "floatingplanar", ...).
+const char* JointTypeName(JointType type);
+/// "none", "copy" or "in-place".
+const char* PreshrinkName(Preshrink preshrink);
+
 /// Default simulation parameters of each kind of body (Klamp't's defaults, except that
 /// terrains are rigid rather than soft; see docs/file-formats.md).
 BodySimParams DefaultTerrainSimParams();

@@ -24,36 +24,6 @@ ordered_json Vector(const Vec3& v) {
   return ordered_json::array({v.x(), v.y(), v.z()});
 }
 
-const char* PreshrinkName(Preshrink preshrink) {
-  switch (preshrink) {
-    case Preshrink::kNone:
-      return "none";
-    case Preshrink::kCopy:
-      return "copy";
-    case Preshrink::kInPlace:
-      return "in-place";
-  }
-  return "none";
-}
-
-const char* JointTypeName(JointType type) {
-  switch (type) {
-    case JointType::kNormal:
-      return "normal";
-    case JointType::kSpin:
-      return "spin";
-    case JointType::kWeld:
-      return "weld";
-    case JointType::kFloating:
-      return "floating";
-    case JointType::kFloatingPlanar:
-      return "floatingplanar";
-    case JointType::kBallAndSocket:
-      return "ballandsocket";
-  }
-  return "normal";
-}
-
 ordered_json SimParamsJson(const BodySimParams& params) {
   return {{"padding", params.padding},
           {"preshrink", PreshrinkName(params.preshrink)},

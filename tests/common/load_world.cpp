@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "core/io/robot_file.h"
 #include "core/io/world_file.h"
 #include "tests/common/test_support.h"
 
@@ -7,6 +8,12 @@ namespace lamina::test {
 void LoadWorld(const std::string& path, LoadedWorld* out) {
   core::LoadContext context{out->diagnostics, out->meshes};
   out->ok = core::LoadWorldFile(path, context, &out->world);
+}
+
+std::unique_ptr<LoadedRobot> LoadRobot(const std::string& path) {
+  auto loaded = std::make_unique<LoadedRobot>();
+  loaded->ok = core::LoadRobotFile(path, {}, loaded->context, &loaded->robot);
+  return loaded;
 }
 
 }  // namespace lamina::test

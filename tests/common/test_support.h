@@ -2,6 +2,7 @@
 // Helpers shared by the tests: data paths, scratch files, loading with collected diagnostics.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "core/diagnostics.h"
@@ -14,7 +15,7 @@ namespace lamina::test {
 std::string DataPath(const std::string& relative);
 /// Absolute path of `relative` under worlds/.
 std::string WorldsPath(const std::string& relative);
-/// A fresh directory for this test (removed at exit is not guaranteed; under the system temp).
+/// This test's own directory under the system temp, emptied at its first use in the test.
 std::string ScratchDir();
 /// Writes `text` to `name` inside ScratchDir() (subdirectories created) and returns its path.
 std::string WriteScratchFile(const std::string& name, const std::string& text);
@@ -28,5 +29,16 @@ struct LoadedWorld {
 };
 /// Loads the world file at `path` (absolute).
 void LoadWorld(const std::string& path, LoadedWorld* out);
+
+/// A robot loaded with its diagnostics kept for assertions.
+struct LoadedRobot {
+  core::Diagnostics diagnostics;
+  core::MeshCache meshes;
+  core::LoadContext context{diagnostics, meshes};
+  core::RobotDesc robot;
+  bool ok = false;
+};
+/// Loads the robot file at `path` (.rob or .urdf).
+std::unique_ptr<LoadedRobot> LoadRobot(const std::string& path);
 
 }  // namespace lamina::test

@@ -20,19 +20,8 @@ using ::testing::IsEmpty;
 
 constexpr double kDegree = core::kPi / 180.0;
 
-struct LoadedRobot {
-  core::Diagnostics diagnostics;
-  core::MeshCache meshes;
-  core::LoadContext context{diagnostics, meshes};
-  core::RobotDesc robot;
-  bool ok = false;
-};
-
-std::unique_ptr<LoadedRobot> Load(const std::string& path) {
-  auto loaded = std::make_unique<LoadedRobot>();
-  loaded->ok = core::LoadRobotFile(path, {}, loaded->context, &loaded->robot);
-  return loaded;
-}
+using test::LoadedRobot;
+constexpr auto Load = test::LoadRobot;
 
 std::unique_ptr<LoadedRobot> LoadExample(const std::string& name) {
   return Load(test::WorldsPath("klampt/robots/" + name));

@@ -12,19 +12,8 @@
 namespace lamina {
 namespace {
 
-struct LoadedRobot {
-  core::Diagnostics diagnostics;
-  core::MeshCache meshes;
-  core::LoadContext context{diagnostics, meshes};
-  core::RobotDesc robot;
-  bool ok = false;
-};
-
-std::unique_ptr<LoadedRobot> Load(const std::string& path) {
-  auto loaded = std::make_unique<LoadedRobot>();
-  loaded->ok = core::LoadRobotFile(path, {}, loaded->context, &loaded->robot);
-  return loaded;
-}
+using test::LoadedRobot;
+constexpr auto Load = test::LoadRobot;
 
 std::unique_ptr<LoadedRobot> Parse(const std::string& text, const std::string& path) {
   auto loaded = std::make_unique<LoadedRobot>();

@@ -19,19 +19,8 @@ using core::Severity;
 using ::testing::ElementsAre;
 using ::testing::IsEmpty;
 
-struct LoadedRobot {
-  core::Diagnostics diagnostics;
-  core::MeshCache meshes;
-  core::LoadContext context{diagnostics, meshes};
-  core::RobotDesc robot;
-  bool ok = false;
-};
-
-std::unique_ptr<LoadedRobot> Load(const std::string& path) {
-  auto loaded = std::make_unique<LoadedRobot>();
-  loaded->ok = core::LoadRobotFile(path, {}, loaded->context, &loaded->robot);
-  return loaded;
-}
+using test::LoadedRobot;
+constexpr auto Load = test::LoadRobot;
 
 std::unique_ptr<LoadedRobot> LoadText(const std::string& text, std::string* path = nullptr) {
   const std::string file = test::WriteScratchFile("robot.urdf", text);
