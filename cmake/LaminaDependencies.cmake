@@ -4,6 +4,7 @@
 find_package(PkgConfig REQUIRED)
 find_package(Eigen3 3.4 REQUIRED CONFIG)
 pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode)
+find_package(fcl 0.7 REQUIRED CONFIG)
 find_package(assimp 5.2 REQUIRED CONFIG)
 find_package(urdfdom REQUIRED CONFIG)
 find_package(tinyxml2 REQUIRED CONFIG)

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// The contact dispatcher: picks the routine for a pair of geometry kinds, adds the geometries'
+// own margins to the paddings, and swaps roles so that normals always point from b into a.
+#include "core/contact/collision_geometry.h"
+#include "core/contact/mesh_contacts.h"
+#include "core/contact/primitive_contacts.h"
+
+namespace lamina::core {
+
+namespace {
+
+// runs `collide(b, a)` and turns its contacts around so they read as (a, b)
+template <typename Function>
+void CollideSwapped(Function collide, ContactList* out) {
+  const size_t first = out->size();
+  collide();
+  for (size_t i = first; i < out->size(); ++i) (*out)[i].normal = -(*out)[i].normal;
+}
+
+}  // namespace
+
+void Collide(const CollisionGeometry& a, const Pose& X_Wa, double pad_a, const CollisionGeometry& b,
+             const Pose& X_Wb, double pad_b, ContactList* out) {
+  const double padding_a = pad_a + a.margin();
+  const double padding_b = pad_b + b.margin();
+  using Kind = CollisionGeometry::Kind;
+  if (a.kind() == Kind::kPrimitive && b.kind() == Kind::kPrimitive) {
+    PrimitiveContacts(a.primitive(), X_Wa, padding_a, b.primitive(), X_Wb, padding_b, out);
+  } else if (a.kind() == Kind::kMesh && b.kind() == Kind::kMesh) {
+    MeshMeshContacts(a, X_Wa, padding_a, b, X_Wb, padding_b, out);
+  } else if (a.kind() == Kind::kMesh) {
+    MeshPrimitiveContacts(a, X_Wa, padding_a, b, X_Wb, padding_b, out);
+  } else {
+    CollideSwapped([&] { MeshPrimitiveContacts(b, X_Wb, padding_b, a, X_Wa, padding_a, out); },
+                   out);
+  }
+}
+
+}  // namespace lamina::core

@@ -1,0 +1,240 @@
+// SPDX-License-Identifier: MIT
+// Deterministic k-means reduction of a pair's contacts (see contact_clustering.h). The working
+// buffers live in a per-thread workspace so that the per-step calls of the simulator do not
+// allocate once the buffers have grown to the largest pair seen.
+#include "core/contact/contact_clustering.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace lamina::core {
+namespace {
+
+/// (x, y, z, s nx, s ny, s nz, depth): Klamp't's clustering feature of a contact.
+using Feature = Eigen::Matrix<double, 7, 1>;
+
+constexpr int kMaxIterations = 20;
+// Klamp't's subsampling guard: cluster a subsample when n * k > 5000 and n * n > 2000, of
+// max(5000 / k, floor(sqrt(2000)) = 44) contacts.
+constexpr std::size_t kSubsampleWorkLimit = 5000;
+constexpr std::size_t kSubsampleSquareLimit = 2000;
+constexpr std::size_t kMinSubsampleSize = 44;
+// Below this length the mean of the members' unit normals has no usable direction (they cancel).
+constexpr double kMinMeanNormalLength = 1e-6;
+
+/// What the final assignment gathers about one cluster's members.
+struct ClusterSums {
+  Vec3 position_sum = Vec3::Zero();
+  Vec3 normal_sum = Vec3::Zero();
+  std::size_t count = 0;
+  double max_depth = 0.0;  ///< of the first member of maximal depth (the deepest)
+  Vec3 deepest_normal = Vec3::UnitZ();
+  bool penetrating = false;
+};
+
+struct Workspace {
+  std::vector<Feature> features;  ///< one per input contact
+  std::vector<Feature> sample;    ///< the clustered subset, when subsampling
+  std::vector<Feature> centres;
+  std::vector<double> nearest_squared_distances;  ///< per point, to the nearest seed so far
+  std::vector<int> labels;
+  std::vector<std::size_t> counts;
+  std::vector<ClusterSums> sums;
+};
+
+Workspace& ThreadWorkspace() {
+  thread_local Workspace workspace;
+  return workspace;
+}
+
+Feature MakeFeature(const Contact& contact, double normal_scale) {
+  Feature feature;
+  feature << contact.position, normal_scale * contact.normal, contact.depth;
+  return feature;
+}
+
+/// Index of the centre nearest to `point`, the lowest index on ties. A non-finite point compares
+/// false against everything and stays with centre 0.
+int NearestCentre(const Feature& point, const std::vector<Feature>& centres) {
+  int best = 0;
+  double best_distance = (point - centres[0]).squaredNorm();
+  for (std::size_t j = 1; j < centres.size(); ++j) {
+    const double distance = (point - centres[j]).squaredNorm();
+    if (distance < best_distance) {
+      best_distance = distance;
+      best = static_cast<int>(j);
+    }
+  }
+  return best;
+}
+
+/// Labels every point with its nearest centre; true when any label changed.
+bool AssignLabels(const std::vector<Feature>& points, const std::vector<Feature>& centres,
+                  std::vector<int>* labels) {
+  bool changed = false;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const int label = NearestCentre(points[i], centres);
+    changed = changed || label != (*labels)[i];
+    (*labels)[i] = label;
+  }
+  return changed;
+}
+
+void CountMembers(const std::vector<int>& labels, std::vector<std::size_t>* counts) {
+  std::fill(counts->begin(), counts->end(), std::size_t{0});
+  for (const int label : labels) ++(*counts)[label];
+}
+
+/// Gives each empty cluster, in index order, the member of the currently largest cluster (lowest
+/// index on ties) farthest from that cluster's centre (lowest point index on ties). No seed starts
+/// empty (each is nearest to its own point), but a Lloyd update can still leave a cluster without
+/// members in unlucky configurations. With at least as many points as clusters, an empty cluster
+/// implies a cluster of two or more members, so the donor never becomes empty itself.
+void ReseedEmptyClusters(const std::vector<Feature>& points, const std::vector<Feature>& centres,
+                         std::vector<int>* labels, std::vector<std::size_t>* counts) {
+  for (std::size_t empty = 0; empty < counts->size(); ++empty) {
+    if ((*counts)[empty] != 0) continue;
+    const auto largest =
+        static_cast<int>(std::max_element(counts->begin(), counts->end()) - counts->begin());
+    if ((*counts)[largest] < 2) return;
+    std::size_t farthest = points.size();
+    double farthest_distance = -1.0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if ((*labels)[i] != largest) continue;
+      const double distance = (points[i] - centres[largest]).squaredNorm();
+      if (distance > farthest_distance || farthest == points.size()) {
+        farthest_distance = distance;
+        farthest = i;
+      }
+    }
+    (*labels)[farthest] = static_cast<int>(empty);
+    --(*counts)[largest];
+    (*counts)[empty] = 1;
+  }
+}
+
+/// Moves every non-empty cluster's centre to the mean of its members.
+void UpdateCentres(const std::vector<Feature>& points, const std::vector<int>& labels,
+                   const std::vector<std::size_t>& counts, std::vector<Feature>* centres) {
+  for (std::size_t j = 0; j < centres->size(); ++j) {
+    if (counts[j] != 0) (*centres)[j].setZero();
+  }
+  for (std::size_t i = 0; i < points.size(); ++i) (*centres)[labels[i]] += points[i];
+  for (std::size_t j = 0; j < centres->size(); ++j) {
+    if (counts[j] != 0) (*centres)[j] /= static_cast<double>(counts[j]);
+  }
+}
+
+/// Farthest-point seeding: centre 0 is point 0 and each further centre is the point farthest
+/// from the centres chosen so far (lowest index on ties), so the centres start spread over the
+/// whole input whatever its order. Stops early when every point coincides with a centre (fewer
+/// distinct contacts than clusters).
+void SeedCentres(const std::vector<Feature>& points, std::size_t cluster_count,
+                 Workspace* workspace) {
+  std::vector<Feature>& centres = workspace->centres;
+  std::vector<double>& nearest = workspace->nearest_squared_distances;
+  centres.assign(1, points[0]);
+  nearest.assign(points.size(), kInf);
+  while (centres.size() < cluster_count) {
+    std::size_t farthest = 0;
+    double farthest_distance = 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const double distance = (points[i] - centres.back()).squaredNorm();
+      // Written so that a NaN distance (a non-finite contact) sticks and never wins below.
+      if (!(distance >= nearest[i])) nearest[i] = distance;
+      if (nearest[i] > farthest_distance) {
+        farthest_distance = nearest[i];
+        farthest = i;
+      }
+    }
+    if (farthest_distance == 0.0) return;
+    centres.push_back(points[farthest]);
+  }
+}
+
+/// Lloyd's algorithm on `points` from farthest-point seeds; leaves the final centres in the
+/// workspace.
+void RunKMeans(const std::vector<Feature>& points, std::size_t cluster_count,
+               Workspace* workspace) {
+  SeedCentres(points, cluster_count, workspace);
+  workspace->labels.assign(points.size(), -1);
+  workspace->counts.resize(workspace->centres.size());
+  for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
+    if (!AssignLabels(points, workspace->centres, &workspace->labels)) break;
+    CountMembers(workspace->labels, &workspace->counts);
+    ReseedEmptyClusters(points, workspace->centres, &workspace->labels, &workspace->counts);
+    UpdateCentres(points, workspace->labels, workspace->counts, &workspace->centres);
+  }
+}
+
+/// The features to cluster: all of them, or a uniform-stride subsample (index floor(i n / m))
+/// of m = max(5000 / k, 44, k) when the input is very large.
+const std::vector<Feature>& PointsToCluster(std::size_t cluster_count, Workspace* workspace) {
+  const std::size_t n = workspace->features.size();
+  if (n * cluster_count <= kSubsampleWorkLimit || n * n <= kSubsampleSquareLimit) {
+    return workspace->features;
+  }
+  const std::size_t m =
+      std::max({kSubsampleWorkLimit / cluster_count, kMinSubsampleSize, cluster_count});
+  workspace->sample.resize(m);
+  for (std::size_t i = 0; i < m; ++i) workspace->sample[i] = workspace->features[i * n / m];
+  return workspace->sample;
+}
+
+/// Assigns every contact to its nearest final centre and gathers the members' sums.
+void GatherClusters(const ContactList& contacts, Workspace* workspace) {
+  workspace->sums.assign(workspace->centres.size(), ClusterSums{});
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& contact = contacts[i];
+    ClusterSums& sums = workspace->sums[NearestCentre(workspace->features[i], workspace->centres)];
+    if (sums.count == 0 || contact.depth > sums.max_depth) {
+      sums.max_depth = contact.depth;
+      sums.deepest_normal = contact.normal;
+    }
+    sums.position_sum += contact.position;
+    sums.normal_sum += contact.normal;
+    sums.penetrating = sums.penetrating || contact.penetrating;
+    ++sums.count;
+  }
+}
+
+Contact SummarizeCluster(const ClusterSums& sums) {
+  const double count = static_cast<double>(sums.count);
+  const Vec3 mean_normal = sums.normal_sum / count;
+  const double length = mean_normal.norm();
+  Contact out;
+  out.position = sums.position_sum / count;
+  out.normal = length > kMinMeanNormalLength ? Vec3(mean_normal / length) : sums.deepest_normal;
+  out.depth = sums.max_depth;
+  out.penetrating = sums.penetrating;
+  return out;
+}
+
+}  // namespace
+
+void ClusterContacts(int max_contacts, double normal_scale, ContactList* contacts) {
+  if (max_contacts <= 0) {
+    contacts->clear();
+    return;
+  }
+  const auto cluster_count = static_cast<std::size_t>(max_contacts);
+  if (contacts->size() <= cluster_count) return;
+  Workspace& workspace = ThreadWorkspace();
+  workspace.features.resize(contacts->size());
+  for (std::size_t i = 0; i < contacts->size(); ++i) {
+    workspace.features[i] = MakeFeature((*contacts)[i], normal_scale);
+  }
+  RunKMeans(PointsToCluster(cluster_count, &workspace), cluster_count, &workspace);
+  GatherClusters(*contacts, &workspace);
+  // The outputs overwrite the front of the list: the sums hold everything they need.
+  std::size_t output_count = 0;
+  for (const ClusterSums& sums : workspace.sums) {
+    if (sums.count != 0) (*contacts)[output_count++] = SummarizeCluster(sums);
+  }
+  contacts->resize(output_count);
+}
+
+}  // namespace lamina::core

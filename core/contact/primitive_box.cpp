@@ -1,0 +1,242 @@
+// SPDX-License-Identifier: MIT
+// Box-box and box-plane contacts. Box-box tests the 15 separating axes (3 face normals of each
+// box, 9 edge-edge cross products); the axis of largest separation decides the contact: for a
+// face axis the other box's most anti-parallel face is clipped against the reference face
+// (Sutherland-Hodgman), giving up to 8 points, each with its own depth; for an edge axis the two
+// supporting edges give one point. Configurations the axes cannot resolve (corners or edges
+// meeting off each other's faces) fall back to the nearest point over all edges.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "core/contact/primitive_pairs.h"
+
+namespace lamina::core::primitive_detail {
+namespace {
+
+// |e_a x e_b| of unit edge directions below this: parallel edges, covered by the face axes.
+constexpr double kParallelSine = 1e-6;
+// An edge axis must separate the boxes by this much more than the best face axis to be used
+// (m): they tie on face-on-face contact, where the face gives the multi-point contact.
+constexpr double kEdgeAxisPreference = 1e-6;
+// A quad clipped by 4 planes has at most 8 vertices; the spare room absorbs rounding.
+constexpr int kMaxPolygonSize = 16;
+
+double SignOf(double value) {
+  return value < 0.0 ? -1.0 : 1.0;
+}
+
+struct Polygon {
+  std::array<Vec3, kMaxPolygonSize> vertices;
+  int size = 0;
+
+  void Push(const Vec3& vertex) {
+    if (size < kMaxPolygonSize) vertices[size++] = vertex;
+  }
+};
+
+/// The axes of largest separation, by family.
+struct SeparatingAxes {
+  double face_separation = -kInf;  ///< m
+  int face = 0;                    ///< 0..2: axis of box a, 3..5: axis (face - 3) of box b
+  double edge_separation = -kInf;  ///< m
+  int edge_a = 0;                  ///< edge axis of box a
+  int edge_b = 0;                  ///< edge axis of box b
+  Vec3 edge_axis = Vec3::UnitZ();  ///< unit edge_a x edge_b
+};
+
+/// Gap between the projections of the boxes on unit `axis` (negative where they overlap).
+double Separation(const PlacedPrimitive& a, const PlacedPrimitive& b, const Vec3& axis) {
+  const Vec3 half_a = a.HalfSize();
+  const Vec3 half_b = b.HalfSize();
+  double reach = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    reach += half_a[i] * std::abs(axis.dot(a.Axis(i))) + half_b[i] * std::abs(axis.dot(b.Axis(i)));
+  }
+  return std::abs(axis.dot(a.Center() - b.Center())) - reach;
+}
+
+/// Fills `axes`; false as soon as an axis separates the boxes by `tolerance` or more (then the
+/// boxes are at least that far apart).
+bool FindAxes(const PlacedPrimitive& a, const PlacedPrimitive& b, double tolerance,
+              SeparatingAxes* axes) {
+  for (int face = 0; face < 6; ++face) {
+    const Vec3 axis = face < 3 ? a.Axis(face) : b.Axis(face - 3);
+    const double separation = Separation(a, b, axis);
+    if (separation >= tolerance) return false;
+    if (separation > axes->face_separation) {
+      axes->face_separation = separation;
+      axes->face = face;
+    }
+  }
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      const Vec3 cross = a.Axis(i).cross(b.Axis(j));
+      const double sine = cross.norm();
+      if (sine < kParallelSine) continue;
+      const double separation = Separation(a, b, cross / sine);
+      if (separation >= tolerance) return false;
+      if (separation > axes->edge_separation) {
+        *axes = SeparatingAxes{axes->face_separation, axes->face, separation, i, j, cross / sine};
+      }
+    }
+  }
+  return true;
+}
+
+/// Keeps the part of the convex `polygon` where normal . p <= offset.
+void ClipPolygon(const Vec3& normal, double offset, Polygon* polygon) {
+  Polygon clipped;
+  for (int i = 0; i < polygon->size; ++i) {
+    const Vec3& current = polygon->vertices[i];
+    const Vec3& next = polygon->vertices[(i + 1) % polygon->size];
+    const double current_excess = normal.dot(current) - offset;
+    const double next_excess = normal.dot(next) - offset;
+    if (current_excess <= 0.0) clipped.Push(current);
+    if ((current_excess <= 0.0) != (next_excess <= 0.0)) {
+      clipped.Push(current + current_excess / (current_excess - next_excess) * (next - current));
+    }
+  }
+  *polygon = clipped;
+}
+
+/// The face of `box` whose outward normal is most opposed to `direction`, as a quad.
+Polygon IncidentFace(const PlacedPrimitive& box, const Vec3& direction) {
+  int axis = 0;
+  for (int k = 1; k < 3; ++k) {
+    if (std::abs(box.Axis(k).dot(direction)) > std::abs(box.Axis(axis).dot(direction))) axis = k;
+  }
+  const Vec3 half = box.HalfSize();
+  const Vec3 centre =
+      box.Center() - SignOf(box.Axis(axis).dot(direction)) * half[axis] * box.Axis(axis);
+  const Vec3 u = half[(axis + 1) % 3] * box.Axis((axis + 1) % 3);
+  const Vec3 v = half[(axis + 2) % 3] * box.Axis((axis + 2) % 3);
+  Polygon face;
+  for (const Vec3& corner :
+       {Vec3(centre + u + v), Vec3(centre - u + v), Vec3(centre - u - v), Vec3(centre + u - v)}) {
+    face.Push(corner);
+  }
+  return face;
+}
+
+/// Clips the incident face of `incident` against the face of `reference` on its local `axis`
+/// that faces it and adds a contact per clipped vertex within the boundary layer. Returns the
+/// lowest height of a clipped vertex over the reference face (infinite when none is left).
+double FaceContacts(const PlacedPrimitive& reference, int axis, const PlacedPrimitive& incident,
+                    bool reference_is_a, ContactSink* sink) {
+  const Vec3 half = reference.HalfSize();
+  const Vec3 normal = SignOf(reference.Axis(axis).dot(incident.Center() - reference.Center())) *
+                      reference.Axis(axis);
+  const Vec3 face_centre = reference.Center() + half[axis] * normal;
+  Polygon polygon = IncidentFace(incident, normal);
+  // the four side planes of the reference face
+  for (int k = 1; k <= 2; ++k) {
+    const Vec3 tangent = reference.Axis((axis + k) % 3);
+    const double centre_offset = tangent.dot(reference.Center());
+    ClipPolygon(tangent, centre_offset + half[(axis + k) % 3], &polygon);
+    ClipPolygon(-tangent, -centre_offset + half[(axis + k) % 3], &polygon);
+  }
+  double lowest = kInf;
+  for (int i = 0; i < polygon.size; ++i) {
+    const Vec3& point = polygon.vertices[i];
+    const double height = normal.dot(point - face_centre);
+    const Vec3 on_face = point - height * normal;
+    if (reference_is_a) {
+      sink->Add(on_face, point, -normal, height);
+    } else {
+      sink->Add(point, on_face, normal, height);
+    }
+    lowest = std::min(lowest, height);
+  }
+  return lowest;
+}
+
+/// One contact between the supporting edges of the edge axis; false when their closest points
+/// fall outside either edge (the axis then does not describe the contact).
+bool EdgeContact(const PlacedPrimitive& a, const PlacedPrimitive& b, const SeparatingAxes& axes,
+                 ContactSink* sink) {
+  const Vec3 normal = SignOf(axes.edge_axis.dot(a.Center() - b.Center())) * axes.edge_axis;
+  const Vec3 half_a = a.HalfSize();
+  const Vec3 half_b = b.HalfSize();
+  // the edge of a facing b and the edge of b facing a, each through its midpoint
+  Vec3 mid_a = a.Center();
+  Vec3 mid_b = b.Center();
+  for (int k = 0; k < 3; ++k) {
+    if (k != axes.edge_a) mid_a -= SignOf(normal.dot(a.Axis(k))) * half_a[k] * a.Axis(k);
+    if (k != axes.edge_b) mid_b += SignOf(normal.dot(b.Axis(k))) * half_b[k] * b.Axis(k);
+  }
+  // closest points of the two edge lines
+  const Vec3 direction_a = a.Axis(axes.edge_a);
+  const Vec3 direction_b = b.Axis(axes.edge_b);
+  const Vec3 offset = mid_a - mid_b;
+  const double cosine = direction_a.dot(direction_b);
+  const double along_a = direction_a.dot(offset);
+  const double along_b = direction_b.dot(offset);
+  const double denominator = 1.0 - cosine * cosine;
+  const double s = (cosine * along_b - along_a) / denominator;
+  const double u = (along_b - cosine * along_a) / denominator;
+  if (std::abs(s) > half_a[axes.edge_a] || std::abs(u) > half_b[axes.edge_b]) return false;
+  const Vec3 p_a = mid_a + s * direction_a;
+  const Vec3 p_b = mid_b + u * direction_b;
+  sink->Add(p_a, p_b, normal, normal.dot(p_a - p_b));
+  return true;
+}
+
+/// One contact at the nearest point of any edge of either box to the other box, if nearer than
+/// `below` (m).
+void NearestEdgeContact(const PlacedPrimitive& a, const PlacedPrimitive& b, double below,
+                        ContactSink* sink) {
+  SegmentNearest best;
+  best.closest.distance = kInf;
+  bool best_on_a = true;
+  int best_edge = 0;
+  for (int side = 0; side < 2; ++side) {
+    const PlacedPrimitive& edges = side == 0 ? a : b;
+    const PlacedPrimitive& solid = side == 0 ? b : a;
+    for (int edge = 0; edge < 12; ++edge) {
+      Vec3 start;
+      Vec3 end;
+      edges.BoxEdge(edge, &start, &end);
+      const SegmentNearest nearest = NearestOnSegment(start, end, solid);
+      if (nearest.closest.distance < best.closest.distance) {
+        best = nearest;
+        best_on_a = side == 0;
+        best_edge = edge;
+      }
+    }
+  }
+  if (!(best.closest.distance < below)) return;
+  const PlacedPrimitive& edge_box = best_on_a ? a : b;
+  const PlacedPrimitive& solid = best_on_a ? b : a;
+  sink->AddBall(best_on_a, best.point, 0.0,
+                QueryPoint(solid, best.point, EdgeOutward(edge_box, best_edge, best.point)));
+}
+
+}  // namespace
+
+void BoxBoxContacts(const PlacedPrimitive& box_a, const PlacedPrimitive& box_b, ContactSink* sink) {
+  SeparatingAxes axes;
+  if (!FindAxes(box_a, box_b, sink->tolerance(), &axes)) return;
+  if (axes.edge_separation > axes.face_separation + kEdgeAxisPreference) {
+    if (!EdgeContact(box_a, box_b, axes, sink)) NearestEdgeContact(box_a, box_b, kInf, sink);
+    return;
+  }
+  const bool reference_is_a = axes.face < 3;
+  const PlacedPrimitive& reference = reference_is_a ? box_a : box_b;
+  const PlacedPrimitive& incident = reference_is_a ? box_b : box_a;
+  const double lowest = FaceContacts(reference, axes.face % 3, incident, reference_is_a, sink);
+  // the incident box's lowest corner (at the separation) overhangs the reference face: the
+  // nearest points lie on edges outside the clipped face
+  if (lowest > axes.face_separation + kLevelTolerance) {
+    NearestEdgeContact(box_a, box_b, lowest - kLevelTolerance, sink);
+  }
+}
+
+void BoxPlaneContacts(const PlacedPrimitive& box, const PlacedPrimitive& plane, ContactSink* sink) {
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 point = box.BoxCorner(corner);
+    sink->AddBall(true, point, 0.0, QueryPoint(plane, point));
+  }
+}
+
+}  // namespace lamina::core::primitive_detail

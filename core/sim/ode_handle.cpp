@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+#include "core/sim/ode_handle.h"
+
+#include <cstdarg>
+#include <cstdio>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+
+namespace lamina::core {
+
+namespace {
+
+std::string FormatOdeMessage(int number, const char* format, va_list arguments) {
+  char buffer[512];
+  std::vsnprintf(buffer, sizeof(buffer), format, arguments);
+  return "ode " + std::to_string(number) + ": " + buffer;
+}
+
+[[noreturn]] void OnOdeError(int number, const char* format, va_list arguments) {
+  throw std::runtime_error(FormatOdeMessage(number, format, arguments));
+}
+
+// ODE's "LCP internal error, s <= 0" and similar messages are informational: the step still
+// completes (stack.md §4); they are dropped rather than printed from inside the library
+void OnOdeMessage(int, const char*, va_list) {}
+
+}  // namespace
+
+void EnsureOdeInitialized() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    dInitODE2(0);
+    dAllocateODEDataForThread(dAllocateMaskAll);
+    dSetErrorHandler(OnOdeError);
+    dSetDebugHandler(OnOdeError);
+    dSetMessageHandler(OnOdeMessage);
+  });
+}
+
+}  // namespace lamina::core

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#include "core/sim/run_report.h"
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace lamina::core {
+
+namespace {
+
+using nlohmann::ordered_json;
+
+ordered_json Vector(const Vec3& v) { return ordered_json::array({v.x(), v.y(), v.z()}); }
+
+double RealTimeFactor(const Simulator& simulator, const RunTiming& timing) {
+  return timing.wall_time > 0.0 ? simulator.time() / timing.wall_time : 0.0;
+}
+
+}  // namespace
+
+std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
+  const SimStatistics& stats = simulator.statistics();
+  ordered_json out = {{"time", simulator.time()},
+                      {"wall_time", timing.wall_time},
+                      {"real_time_factor", RealTimeFactor(simulator, timing)},
+                      {"steps", stats.steps},
+                      {"status", StepStatusName(stats.worst_status)},
+                      {"rollbacks", 0},
+                      {"instability_corrections", 0},
+                      {"max_penetration", stats.max_penetration},
+                      {"max_contacts", stats.max_contacts_in_step}};
+  if (!stats.error.empty()) out["error"] = stats.error;
+  ordered_json objects = ordered_json::array();
+  for (int i = 0; i < simulator.object_count(); ++i) {
+    const Pose pose = simulator.GetObjectPose(i);
+    const Eigen::Quaterniond q(pose.linear());
+    const Twist velocity = simulator.GetObjectVelocity(i);
+    objects.push_back({{"name", simulator.world().objects[i].name},
+                       {"position", Vector(pose.translation())},
+                       {"quaternion", ordered_json::array({q.w(), q.x(), q.y(), q.z()})},
+                       {"velocity", Vector(velocity.linear)},
+                       {"angular_velocity", Vector(velocity.angular)}});
+  }
+  out["objects"] = objects;
+  return out.dump(2) + "\n";
+}
+
+std::string RunReportText(const Simulator& simulator, const RunTiming& timing) {
+  const SimStatistics& stats = simulator.statistics();
+  std::ostringstream out;
+  char line[256];
+  std::snprintf(line, sizeof(line),
+                "simulated %.6g s in %ld steps, %.3f s wall (%.2fx real time), status %s\n",
+                simulator.time(), stats.steps, timing.wall_time,
+                RealTimeFactor(simulator, timing), StepStatusName(stats.worst_status));
+  out << line;
+  std::snprintf(line, sizeof(line), "max penetration %.6g m, max contacts %d\n",
+                stats.max_penetration, stats.max_contacts_in_step);
+  out << line;
+  if (!stats.error.empty()) out << "error: " << stats.error << "\n";
+  for (int i = 0; i < simulator.object_count(); ++i) {
+    const Vec3 p = simulator.GetObjectPose(i).translation();
+    const Vec3 v = simulator.GetObjectVelocity(i).linear;
+    std::snprintf(line, sizeof(line),
+                  "object '%s': position (%.6g, %.6g, %.6g) velocity (%.6g, %.6g, %.6g)\n",
+                  simulator.world().objects[i].name.c_str(), p.x(), p.y(), p.z(), v.x(), v.y(),
+                  v.z());
+    out << line;
+  }
+  return out.str();
+}
+
+}  // namespace lamina::core

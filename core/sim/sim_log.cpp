@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+#include "core/sim/sim_log.h"
+
+#include "core/io/text_statements.h"
+
+namespace lamina::core {
+
+std::string SimLogHeader(const Simulator& simulator) {
+  std::string header = "time,";
+  for (const RigidObjectDesc& object : simulator.world().objects) {
+    for (const char* column : {"_x", "_y", "_z", "_rz", "_ry", "_rx", "_dx", "_dy", "_dz", "_wz",
+                               "_wy", "_wx"}) {
+      header += object.name + column + ",";
+    }
+    header += ",";
+  }
+  return header + "\n";
+}
+
+std::string SimLogRow(const Simulator& simulator) {
+  std::string row = FormatDouble(simulator.time()) + ",";
+  for (int i = 0; i < simulator.object_count(); ++i) {
+    const Pose pose = simulator.GetObjectPose(i);
+    const Vec3 rpy = RollPitchYawFromRotation(pose.linear());
+    const Twist velocity = simulator.GetObjectVelocity(i);
+    const double values[12] = {pose.translation().x(), pose.translation().y(),
+                               pose.translation().z(), rpy.z(),
+                               rpy.y(),                rpy.x(),
+                               velocity.linear.x(),    velocity.linear.y(),
+                               velocity.linear.z(),    velocity.angular.z(),
+                               velocity.angular.y(),   velocity.angular.x()};
+    for (double value : values) row += FormatDouble(value) + ",";
+    row += ",";
+  }
+  return row + "\n";
+}
+
+}  // namespace lamina::core

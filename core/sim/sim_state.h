@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+// A snapshot of a running simulation: restoring it reproduces the same trajectory bit for bit.
+#pragma once
+
+#include <vector>
+
+#include "core/math_types.h"
+
+namespace lamina::core {
+
+/// State of one rigid body as ODE holds it (at the centre of mass).
+struct BodyState {
+  Vec3 com_position = Vec3::Zero();                           ///< m, world
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< body axes in world
+  Vec3 linear_velocity = Vec3::Zero();                        ///< m/s of the COM
+  Vec3 angular_velocity = Vec3::Zero();                       ///< rad/s, world
+
+  bool operator==(const BodyState& other) const {
+    return com_position == other.com_position &&
+           orientation.coeffs() == other.orientation.coeffs() &&
+           linear_velocity == other.linear_velocity && angular_velocity == other.angular_velocity;
+  }
+};
+
+struct SimState {
+  double time = 0.0;              ///< s
+  std::vector<BodyState> objects;  ///< one per rigid object
+  bool operator==(const SimState&) const = default;
+};
+
+}  // namespace lamina::core

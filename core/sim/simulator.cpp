@@ -1,0 +1,362 @@
+// SPDX-License-Identifier: MIT
+#include "core/sim/simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/contact/contact_clustering.h"
+#include "core/contact/surface_blend.h"
+#include "core/sim/ode_handle.h"
+
+namespace lamina::core {
+
+namespace {
+
+// contacts closing slower than this do not bounce, so resting bodies do not chatter (m/s)
+constexpr double kBounceVelocityThreshold = 0.01;
+// sliding slower than this keeps ODE's default friction directions (m/s)
+constexpr double kSlidingSpeedThreshold = 1e-6;
+
+Vec3 ToVec3(const dReal* v) { return {v[0], v[1], v[2]}; }
+
+Mat3 ToMat3(const dReal* r) {
+  Mat3 m;
+  m << r[0], r[1], r[2], r[4], r[5], r[6], r[8], r[9], r[10];
+  return m;
+}
+
+void SetBodyRotation(dBodyID body, const Mat3& rotation) {
+  const Eigen::Quaterniond q(rotation);
+  const dQuaternion ode_q = {q.w(), q.x(), q.y(), q.z()};
+  dBodySetQuaternion(body, ode_q);
+}
+
+bool AabbsOverlap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) {
+  return !a.isEmpty() && !b.isEmpty() && a.intersects(b);
+}
+
+// bounds of `geometry` at `pose`, grown by `padding` on every side
+Eigen::AlignedBox3d WorldBounds(const CollisionGeometry& geometry, const Pose& pose,
+                                double padding) {
+  const Eigen::AlignedBox3d& local = geometry.local_bounds();
+  Eigen::AlignedBox3d world;
+  if (local.isEmpty()) return world;
+  if (!local.min().allFinite() || !local.max().allFinite()) {
+    return Eigen::AlignedBox3d(Vec3::Constant(-kInf), Vec3::Constant(kInf));
+  }
+  for (int corner = 0; corner < 8; ++corner) {
+    world.extend(pose * local.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner)));
+  }
+  const double grow = padding + geometry.margin();
+  world.min().array() -= grow;
+  world.max().array() += grow;
+  return world;
+}
+
+}  // namespace
+
+const char* StepStatusName(StepStatus status) {
+  switch (status) {
+    case StepStatus::kNormal:
+      return "normal";
+    case StepStatus::kAdaptiveStep:
+      return "adaptive step";
+    case StepStatus::kContactUnreliable:
+      return "contact unreliable";
+    case StepStatus::kUnstable:
+      return "unstable";
+    case StepStatus::kError:
+      return "error";
+  }
+  return "error";
+}
+
+struct Simulator::ObjectBody {
+  dBodyID body = nullptr;
+  std::shared_ptr<const CollisionGeometry> geometry;
+  Vec3 com = Vec3::Zero();  ///< in the object frame
+  Eigen::AlignedBox3d bounds;  ///< padded world bounds, refreshed every sub-step
+};
+
+struct Simulator::TerrainBody {
+  std::shared_ptr<const CollisionGeometry> geometry;
+  Eigen::AlignedBox3d bounds;  ///< padded world bounds
+};
+
+Simulator::Simulator(const WorldDesc& world, SolverSettings solver)
+    : world_(world),
+      solver_(solver),
+      ode_world_(nullptr, [](dxWorld* w) { dWorldDestroy(w); }),
+      contact_group_(nullptr, [](dxJointGroup* g) { dJointGroupDestroy(g); }) {
+  EnsureOdeInitialized();
+  ode_world_.reset(dWorldCreate());
+  contact_group_.reset(dJointGroupCreate(0));
+  dWorldSetERP(ode_world_.get(), world_.settings.erp);
+  dWorldSetCFM(ode_world_.get(), world_.settings.cfm);
+  dWorldSetAutoDisableFlag(ode_world_.get(), 0);
+  SetGravity(world_.settings.gravity);
+  BuildBodies();
+  ApplyInitialState();
+}
+
+Simulator::~Simulator() = default;
+
+int Simulator::object_count() const { return static_cast<int>(objects_.size()); }
+
+void Simulator::BuildBodies() {
+  for (const TerrainDesc& terrain : world_.terrains) {
+    TerrainBody body;
+    body.geometry = geometry_cache_.Get(terrain.geometry);
+    if (body.geometry) {
+      body.bounds = WorldBounds(*body.geometry, Pose::Identity(), terrain.sim.padding);
+    }
+    terrains_.push_back(std::move(body));
+  }
+  for (const RigidObjectDesc& object : world_.objects) {
+    ObjectBody body;
+    body.body = dBodyCreate(ode_world_.get());
+    // exact orientation update for the body's angular velocity (ODE's default is first order)
+    dBodySetFiniteRotationMode(body.body, 1);
+    body.geometry = geometry_cache_.Get(object.geometry);
+    body.com = object.com;
+    dMass mass;
+    const Mat3& I = object.inertia;
+    dMassSetParameters(&mass, object.mass, 0, 0, 0, I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2),
+                       I(1, 2));
+    if (!dMassCheck(&mass)) {
+      // ODE rejects zero mass or an invalid inertia; keep the body usable and tiny
+      dMassSetSphereTotal(&mass, std::max(object.mass, 1e-3), 0.01);
+    }
+    dBodySetMass(body.body, &mass);
+    objects_.push_back(std::move(body));
+  }
+}
+
+void Simulator::ApplyInitialState() {
+  for (int i = 0; i < object_count(); ++i) {
+    SetObjectPose(i, world_.objects[i].pose);
+    SetObjectVelocity(i, world_.objects[i].initial_velocity);
+  }
+}
+
+void Simulator::Reset() {
+  time_ = 0.0;
+  statistics_ = SimStatistics();
+  ApplyInitialState();
+}
+
+void Simulator::SetSimStep(double step) {
+  if (step > 0.0 && std::isfinite(step)) world_.settings.timestep = step;
+}
+
+void Simulator::SetGravity(const Vec3& gravity) {
+  world_.settings.gravity = gravity;
+  dWorldSetGravity(ode_world_.get(), gravity.x(), gravity.y(), gravity.z());
+}
+
+Pose Simulator::GetObjectPose(int object) const {
+  const ObjectBody& body = objects_[object];
+  Pose pose = Pose::Identity();
+  pose.linear() = ToMat3(dBodyGetRotation(body.body));
+  pose.translation() = ToVec3(dBodyGetPosition(body.body)) - pose.linear() * body.com;
+  return pose;
+}
+
+void Simulator::SetObjectPose(int object, const Pose& pose) {
+  const ObjectBody& body = objects_[object];
+  const Vec3 com_world = pose * body.com;
+  dBodySetPosition(body.body, com_world.x(), com_world.y(), com_world.z());
+  SetBodyRotation(body.body, pose.linear());
+}
+
+Twist Simulator::GetObjectVelocity(int object) const {
+  const ObjectBody& body = objects_[object];
+  const Vec3 angular = ToVec3(dBodyGetAngularVel(body.body));
+  const Vec3 com_offset = GetObjectPose(object).linear() * body.com;
+  // v_origin = v_com - w x (com - origin)
+  return {ToVec3(dBodyGetLinearVel(body.body)) - angular.cross(com_offset), angular};
+}
+
+void Simulator::SetObjectVelocity(int object, const Twist& velocity) {
+  const ObjectBody& body = objects_[object];
+  const Vec3 com_offset = GetObjectPose(object).linear() * body.com;
+  const Vec3 com_velocity = velocity.linear + velocity.angular.cross(com_offset);
+  dBodySetLinearVel(body.body, com_velocity.x(), com_velocity.y(), com_velocity.z());
+  dBodySetAngularVel(body.body, velocity.angular.x(), velocity.angular.y(),
+                     velocity.angular.z());
+}
+
+SimState Simulator::GetState() const {
+  SimState state;
+  state.time = time_;
+  for (const ObjectBody& object : objects_) {
+    const dReal* q = dBodyGetQuaternion(object.body);
+    state.objects.push_back({ToVec3(dBodyGetPosition(object.body)),
+                             Eigen::Quaterniond(q[0], q[1], q[2], q[3]),
+                             ToVec3(dBodyGetLinearVel(object.body)),
+                             ToVec3(dBodyGetAngularVel(object.body))});
+  }
+  return state;
+}
+
+void Simulator::SetState(const SimState& state) {
+  time_ = state.time;
+  for (size_t i = 0; i < objects_.size() && i < state.objects.size(); ++i) {
+    const BodyState& s = state.objects[i];
+    dBodyID body = objects_[i].body;
+    dBodySetPosition(body, s.com_position.x(), s.com_position.y(), s.com_position.z());
+    const dQuaternion q = {s.orientation.w(), s.orientation.x(), s.orientation.y(),
+                           s.orientation.z()};
+    dBodySetQuaternion(body, q);
+    dBodySetLinearVel(body, s.linear_velocity.x(), s.linear_velocity.y(), s.linear_velocity.z());
+    dBodySetAngularVel(body, s.angular_velocity.x(), s.angular_velocity.y(),
+                       s.angular_velocity.z());
+  }
+}
+
+StepStatus Simulator::Simulate(double dt) {
+  if (statistics_.worst_status == StepStatus::kError) return StepStatus::kError;
+  double remaining = dt;
+  while (remaining > 0.0) {
+    // the last sub-step absorbs a remainder smaller than a part per million of a step
+    const double step = remaining < world_.settings.timestep * (1 + 1e-6)
+                            ? remaining
+                            : world_.settings.timestep;
+    if (!Step(step)) return StepStatus::kError;
+    remaining -= step;
+  }
+  return StepStatus::kNormal;
+}
+
+bool Simulator::Step(double step) {
+  try {
+    DetectContacts(step);
+    if (solver_.type == SolverType::kQuickStep) {
+      dWorldSetQuickStepNumIterations(ode_world_.get(), solver_.quick_step_iterations);
+      dWorldQuickStep(ode_world_.get(), step);
+    } else {
+      dWorldStep(ode_world_.get(), step);
+    }
+    dJointGroupEmpty(contact_group_.get());
+  } catch (const std::exception& error) {
+    statistics_.error = error.what();
+    statistics_.worst_status = StepStatus::kError;
+    return false;
+  }
+  time_ += step;
+  ++statistics_.steps;
+  if (!StateIsFinite()) {
+    statistics_.error = "a body state became non-finite at t = " + std::to_string(time_) + " s";
+    statistics_.worst_status = StepStatus::kError;
+    return false;
+  }
+  return true;
+}
+
+bool Simulator::StateIsFinite() const {
+  for (const ObjectBody& object : objects_) {
+    const dReal* p = dBodyGetPosition(object.body);
+    const dReal* v = dBodyGetLinearVel(object.body);
+    const dReal* w = dBodyGetAngularVel(object.body);
+    for (int k = 0; k < 3; ++k) {
+      if (!std::isfinite(p[k]) || !std::isfinite(v[k]) || !std::isfinite(w[k])) return false;
+    }
+  }
+  return true;
+}
+
+void Simulator::DetectContacts(double step) {
+  int joints = 0;
+  for (int i = 0; i < object_count(); ++i) {
+    ObjectBody& object = objects_[i];
+    if (!object.geometry) continue;
+    object.bounds = WorldBounds(*object.geometry, GetObjectPose(i), world_.objects[i].sim.padding);
+  }
+  const auto collide_pair = [&](const CollisionGeometry& a, const Pose& X_Wa,
+                                const BodySimParams& sim_a, dBodyID body_a,
+                                const CollisionGeometry& b, const Pose& X_Wb,
+                                const BodySimParams& sim_b, dBodyID body_b) {
+    scratch_contacts_.clear();
+    Collide(a, X_Wa, sim_a.padding, b, X_Wb, sim_b.padding, &scratch_contacts_);
+    if (scratch_contacts_.empty()) return;
+    ClusterContacts(world_.settings.max_contacts, kDefaultClusterNormalScale, &scratch_contacts_);
+    AddContactJoints(scratch_contacts_, body_a, body_b, sim_a.surface, sim_b.surface, step);
+    joints += static_cast<int>(scratch_contacts_.size());
+  };
+  for (int i = 0; i < object_count(); ++i) {
+    const ObjectBody& a = objects_[i];
+    if (!a.geometry) continue;
+    const Pose X_Wa = GetObjectPose(i);
+    for (size_t t = 0; t < terrains_.size(); ++t) {
+      const TerrainBody& terrain = terrains_[t];
+      if (!terrain.geometry || !AabbsOverlap(a.bounds, terrain.bounds)) continue;
+      collide_pair(*a.geometry, X_Wa, world_.objects[i].sim, a.body, *terrain.geometry,
+                   Pose::Identity(), world_.terrains[t].sim, nullptr);
+    }
+    if (!world_.settings.rigid_object_collisions) continue;
+    for (int j = i + 1; j < object_count(); ++j) {
+      const ObjectBody& b = objects_[j];
+      if (!b.geometry || !AabbsOverlap(a.bounds, b.bounds)) continue;
+      collide_pair(*a.geometry, X_Wa, world_.objects[i].sim, a.body, *b.geometry,
+                   GetObjectPose(j), world_.objects[j].sim, b.body);
+    }
+  }
+  statistics_.max_contacts_in_step = std::max(statistics_.max_contacts_in_step, joints);
+}
+
+void Simulator::AddContactJoints(const ContactList& contacts, dxBody* body_a, dxBody* body_b,
+                                 const SurfaceDesc& a, const SurfaceDesc& b, double step) {
+  const BlendedSurface surface = BlendSurfaces(a, b);
+  const SoftContactParams soft = SoftContact(surface.stiffness, surface.damping, step);
+  // a layer without stiffness or damping pushes with no force at all
+  if (soft.soft && !std::isfinite(soft.cfm)) return;
+  for (const Contact& contact : contacts) {
+    statistics_.max_penetration = std::max(statistics_.max_penetration, contact.depth);
+    dContact joint{};
+    joint.surface.mode = dContactApprox1;
+    joint.surface.mu = std::isinf(surface.friction) ? dInfinity : surface.friction;
+    if (soft.soft) {
+      joint.surface.mode |= dContactSoftERP | dContactSoftCFM;
+      joint.surface.soft_erp = soft.erp;
+      joint.surface.soft_cfm = soft.cfm;
+    }
+    if (surface.restitution > 0.0) {
+      joint.surface.mode |= dContactBounce;
+      joint.surface.bounce = surface.restitution;
+      joint.surface.bounce_vel = kBounceVelocityThreshold;
+    }
+    dVector3 velocity_a = {0, 0, 0}, velocity_b = {0, 0, 0};
+    const Vec3& p = contact.position;
+    if (body_a) dBodyGetPointVel(body_a, p.x(), p.y(), p.z(), velocity_a);
+    if (body_b) dBodyGetPointVel(body_b, p.x(), p.y(), p.z(), velocity_b);
+    const Vec3 relative = ToVec3(velocity_a) - ToVec3(velocity_b);
+    const double normal_speed = relative.dot(contact.normal);
+    if (!soft.soft && normal_speed < -kBounceVelocityThreshold) {
+      // an impact: the velocity constraint (with restitution) stops the approach; correcting the
+      // layer overlap as well would add energy (Klamp't's spheres bounce too high for this)
+      joint.surface.mode |= dContactSoftERP;
+      joint.surface.soft_erp = 0.0;
+    }
+    // friction along the sliding direction makes ODE's per-axis friction isotropic
+    const Vec3 sliding = relative - normal_speed * contact.normal;
+    if (sliding.norm() > kSlidingSpeedThreshold) {
+      const Vec3 direction = sliding.normalized();
+      joint.surface.mode |= dContactFDir1;
+      joint.fdir1[0] = direction.x();
+      joint.fdir1[1] = direction.y();
+      joint.fdir1[2] = direction.z();
+    }
+    joint.geom.pos[0] = p.x();
+    joint.geom.pos[1] = p.y();
+    joint.geom.pos[2] = p.z();
+    joint.geom.normal[0] = contact.normal.x();
+    joint.geom.normal[1] = contact.normal.y();
+    joint.geom.normal[2] = contact.normal.z();
+    joint.geom.depth = contact.depth;
+    dJointID id = dJointCreateContact(ode_world_.get(), contact_group_.get(), &joint);
+    dJointAttach(id, body_a, body_b);
+  }
+}
+
+}  // namespace lamina::core

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+// `lamina-headless run`: the JSON report of a real run, the CSV log, and bad options.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "tests/common/test_support.h"
+
+namespace lamina {
+namespace {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;
+};
+
+CommandResult RunHeadless(const std::string& arguments) {
+  const std::string command = std::string(LAMINA_BIN_DIR) + "/lamina-headless " + arguments +
+                              " 2>" + test::ScratchDir() + "/stderr.txt";
+  CommandResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer{};
+  size_t read = 0;
+  while ((read = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
+    result.out.append(buffer.data(), read);
+  }
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+TEST(RunCommandTest, JsonReportsFreeFallBeforeImpact) {
+  const CommandResult result =
+      RunHeadless("run --json --duration 0.3 " +
+                  test::WorldsPath("klampt/simulation_test_worlds/bounce_test.xml"));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  const nlohmann::json json = nlohmann::json::parse(result.out);
+  EXPECT_NEAR(json["time"].get<double>(), 0.3, 1e-12);
+  EXPECT_EQ(json["steps"], 300);
+  EXPECT_EQ(json["status"], "normal");
+  EXPECT_EQ(json["rollbacks"], 0);
+  EXPECT_EQ(json["instability_corrections"], 0);
+  ASSERT_EQ(json["objects"].size(), 10u);
+  const nlohmann::json& sphere = json["objects"][0];
+  EXPECT_EQ(sphere["name"], "sphere1");
+  // still falling at 0.3 s (the slab top is z = 0; impact near 0.62 s): z = 2 - g t^2/2 - g h t/2
+  const double g = 9.8, t = 0.3, h = 0.001;
+  EXPECT_NEAR(sphere["position"][2].get<double>(), 2.0 - g * t * t / 2 - g * h * t / 2, 1e-9);
+  EXPECT_NEAR(sphere["velocity"][2].get<double>(), -g * t, 1e-9);
+  EXPECT_EQ(sphere["quaternion"][0], 1.0);
+}
+
+TEST(RunCommandTest, LogFollowsKlamptColumns) {
+  const std::string log = test::ScratchDir() + "/log.csv";
+  const CommandResult result =
+      RunHeadless("run --duration 0.05 --log " + log + " " +
+                  test::WorldsPath("klampt/simulation_test_worlds/heavyblocktest.xml"));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  std::ifstream in(log);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header,
+            "time,block_1kg_x,block_1kg_y,block_1kg_z,block_1kg_rz,block_1kg_ry,block_1kg_rx,"
+            "block_1kg_dx,block_1kg_dy,block_1kg_dz,block_1kg_wz,block_1kg_wy,block_1kg_wx,,"
+            "block_100kg_x,block_100kg_y,block_100kg_z,block_100kg_rz,block_100kg_ry,"
+            "block_100kg_rx,block_100kg_dx,block_100kg_dy,block_100kg_dz,block_100kg_wz,"
+            "block_100kg_wy,block_100kg_wx,,");
+  int rows = 0;
+  std::string line;
+  while (std::getline(in, line)) ++rows;
+  // the initial state and one row every 0.01 s
+  EXPECT_EQ(rows, 6);
+}
+
+TEST(RunCommandTest, BadSolverIsAUsageError) {
+  const CommandResult result =
+      RunHeadless("run --solver fast " + test::WorldsPath("klampt/block.xml"));
+  EXPECT_EQ(result.exit_code, 2);
+}
+
+}  // namespace
+}  // namespace lamina

@@ -1,0 +1,239 @@
+// SPDX-License-Identifier: MIT
+// Contact clustering: small inputs untouched, tight groups reduced to their centroids with the
+// deepest depth, determinism, deterministic re-seeding of empty clusters, the normal fallback,
+// and large inputs (uniform-stride subsample, every contact assigned to the final centres).
+#include "core/contact/contact_clustering.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace lamina::core {
+namespace {
+
+// Means of a handful of values of order 1: a few ulps of rounding.
+constexpr double kMeanTolerance = 1e-12;
+
+Contact MakeContact(const Vec3& position, const Vec3& normal, double depth,
+                    bool penetrating = false) {
+  Contact contact;
+  contact.position = position;
+  contact.normal = normal;
+  contact.depth = depth;
+  contact.penetrating = penetrating;
+  return contact;
+}
+
+void ExpectIdentical(const ContactList& actual, const ContactList& expected) {
+  ASSERT_EQ(actual.size(), expected.size());
+  for (std::size_t i = 0; i < actual.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(actual[i].position, expected[i].position);
+    EXPECT_EQ(actual[i].normal, expected[i].normal);
+    EXPECT_EQ(actual[i].depth, expected[i].depth);
+    EXPECT_EQ(actual[i].penetrating, expected[i].penetrating);
+  }
+}
+
+// A `columns` x `rows` grid of upward contacts with 1 cm spacing in the plane z = 0, listed row
+// by row (x fastest), as a mesh lying on a floor produces them.
+ContactList Grid(int columns, int rows) {
+  ContactList contacts;
+  for (int row = 0; row < rows; ++row) {
+    for (int column = 0; column < columns; ++column) {
+      contacts.push_back(MakeContact(Vec3(0.01 * column, 0.01 * row, 0.0), Vec3::UnitZ(), 1e-3));
+    }
+  }
+  return contacts;
+}
+
+TEST(ContactClusteringTest, AtMostMaxContactsAreLeftUntouched) {
+  const ContactList original = {
+      MakeContact(Vec3(0.1, 0.2, 0.3), Vec3(0.6, 0.0, 0.8), 1e-3, true),
+      MakeContact(Vec3(-1.0, 0.0, 2.0), Vec3(0.0, 1.0, 0.0), 2e-3),
+      MakeContact(Vec3(1.0 / 3.0, 1e-17, 5.0), Vec3(0.0, 0.0, -1.0), 0.0)};
+  for (const int max_contacts : {3, 4, 20}) {
+    SCOPED_TRACE(max_contacts);
+    ContactList contacts = original;
+    ClusterContacts(max_contacts, kDefaultClusterNormalScale, &contacts);
+    ExpectIdentical(contacts, original);
+  }
+}
+
+TEST(ContactClusteringTest, ZeroMaxContactsLeavesNone) {
+  ContactList contacts = Grid(3, 1);
+  ClusterContacts(0, kDefaultClusterNormalScale, &contacts);
+  EXPECT_TRUE(contacts.empty());
+}
+
+// Four groups 1 m apart, each of a few contacts spread by a millimetre, listed interleaved (as
+// an aggregated list of several feet would be): one output per group, at the group's centroid,
+// with its deepest depth. Seeding from the contacts at indices floor(i n / k) (Klamp't) would
+// put two seeds in group 0 here (indices 0 and 4) and end with one output straddling two groups.
+TEST(ContactClusteringTest, TightGroupsReduceToTheirCentroids) {
+  const std::vector<Vec3> group_centres = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),
+                                           Vec3(1, 1, 0.5)};
+  const std::vector<int> group_sizes = {3, 5, 4, 6};
+  std::vector<ContactList> groups(group_centres.size());
+  for (std::size_t g = 0; g < group_centres.size(); ++g) {
+    for (int i = 0; i < group_sizes[g]; ++i) {
+      const Vec3 offset(1e-3 * i, -5e-4 * (i % 2), 2e-4 * i);
+      const Vec3 normal = Vec3(0.02 * (i % 3), -0.01 * i, 1.0).normalized();
+      const bool penetrating = (g == 2 && i == 1);
+      groups[g].push_back(
+          MakeContact(group_centres[g] + offset, normal, 1e-3 * ((i * 7) % 5), penetrating));
+    }
+  }
+  ContactList contacts;
+  for (int i = 0; i < 6; ++i) {
+    for (const ContactList& group : groups) {
+      if (i < static_cast<int>(group.size())) contacts.push_back(group[i]);
+    }
+  }
+  ClusterContacts(4, kDefaultClusterNormalScale, &contacts);
+  ASSERT_EQ(contacts.size(), 4u);
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    SCOPED_TRACE(g);
+    Vec3 position_sum = Vec3::Zero();
+    Vec3 normal_sum = Vec3::Zero();
+    double max_depth = 0.0;
+    for (const Contact& member : groups[g]) {
+      position_sum += member.position;
+      normal_sum += member.normal;
+      max_depth = std::max(max_depth, member.depth);
+    }
+    const Vec3 centroid = position_sum / static_cast<double>(groups[g].size());
+    const auto output = std::find_if(contacts.begin(), contacts.end(), [&](const Contact& c) {
+      return (c.position - centroid).norm() <= kMeanTolerance;
+    });
+    ASSERT_TRUE(output != contacts.end()) << "no output at " << centroid.transpose();
+    EXPECT_LE((output->normal - normal_sum.normalized()).norm(), kMeanTolerance);
+    EXPECT_EQ(output->depth, max_depth);
+    EXPECT_EQ(output->penetrating, g == 2);
+  }
+}
+
+// The fallback: a unit normal averaged with its opposite has no direction; the deepest member's
+// normal is the one that should push the bodies apart.
+TEST(ContactClusteringTest, OppositeNormalsFallBackToTheDeepestNormal) {
+  ContactList contacts = {MakeContact(Vec3(0, 0, 0), Vec3::UnitZ(), 1e-3),
+                          MakeContact(Vec3(0, 0, 0.002), -Vec3::UnitZ(), 3e-3),
+                          MakeContact(Vec3(0, 0, 0.004), Vec3::UnitZ(), 2e-3),
+                          MakeContact(Vec3(0, 0, 0.006), -Vec3::UnitZ(), 3e-3)};
+  ClusterContacts(1, kDefaultClusterNormalScale, &contacts);
+  ASSERT_EQ(contacts.size(), 1u);
+  EXPECT_EQ(contacts[0].normal, -Vec3::UnitZ());
+  EXPECT_EQ(contacts[0].depth, 3e-3);
+  EXPECT_LE((contacts[0].position - Vec3(0, 0, 0.003)).norm(), kMeanTolerance);
+}
+
+TEST(ContactClusteringTest, MeanNormalIsRenormalized) {
+  const double half = 0.5 * std::sqrt(2.0);
+  ContactList contacts = {MakeContact(Vec3(0, 0, 0), Vec3(half, 0, half), 1e-3),
+                          MakeContact(Vec3(0, 0, 0), Vec3(-half, 0, half), 1e-3)};
+  ClusterContacts(1, kDefaultClusterNormalScale, &contacts);
+  ASSERT_EQ(contacts.size(), 1u);
+  // One rounding in the sum and one in the normalization.
+  EXPECT_LE((contacts[0].normal - Vec3::UnitZ()).norm(), 1e-15);
+}
+
+// Exact duplicates (adjacent triangles reporting the same vertex): two distinct contacts, three
+// copies each (one copy flagged penetrating), and room for four clusters: two outputs, never two
+// at the same place. Outputs come in cluster order; the seeds are contact 0 (a) and then the
+// contact farthest from it (b).
+TEST(ContactClusteringTest, DuplicateContactsMerge) {
+  const Contact a = MakeContact(Vec3(0.1, 0.2, 0.0), Vec3::UnitZ(), 2e-3);
+  const Contact b = MakeContact(Vec3(0.4, 0.2, 0.0), Vec3::UnitX(), 1e-3);
+  ContactList contacts = {a, b, a, b, a, b};
+  contacts[3].penetrating = true;
+  ClusterContacts(4, kDefaultClusterNormalScale, &contacts);
+  ASSERT_EQ(contacts.size(), 2u);
+  EXPECT_LE((contacts[0].position - a.position).norm(), kMeanTolerance);
+  EXPECT_EQ(contacts[0].normal, a.normal);
+  EXPECT_EQ(contacts[0].depth, a.depth);
+  EXPECT_FALSE(contacts[0].penetrating);
+  EXPECT_LE((contacts[1].position - b.position).norm(), kMeanTolerance);
+  EXPECT_EQ(contacts[1].normal, b.normal);
+  EXPECT_EQ(contacts[1].depth, b.depth);
+  EXPECT_TRUE(contacts[1].penetrating);
+}
+
+TEST(ContactClusteringTest, SameInputGivesTheSameOutput) {
+  ContactList input = Grid(60, 50);
+  for (std::size_t i = 0; i < input.size(); ++i) input[i].depth = 1e-4 * static_cast<double>(i % 7);
+  ContactList first = input;
+  ClusterContacts(20, kDefaultClusterNormalScale, &first);
+  // A different call in between: the reused working buffers must not leak into the next call.
+  ContactList other = Grid(7, 9);
+  ClusterContacts(5, kDefaultClusterNormalScale, &other);
+  ContactList second = input;
+  ClusterContacts(20, kDefaultClusterNormalScale, &second);
+  EXPECT_EQ(first.size(), 20u);
+  ExpectIdentical(second, first);
+}
+
+// 3000 contacts of a 300 x 10 strip, 20 clusters: k-means runs on a subsample of
+// max(5000 / 20, 44) = 250 contacts. Lamina takes every 12th contact (a uniform stride), so the
+// clusters tile the whole strip: 20 cells about 15 cm long whose centroids span all but half a
+// cell at each end (~95% of the length). Klamp't's subsample takes index floor(i * 250 / 3000),
+// i.e. only the first 21 contacts (the first 20 cm of the strip): its 20 centres cover under 7%
+// of the length, and even with every contact assigned to them afterwards, the last cluster
+// swallows the rest of the strip (outputs spanning 53%). Seeding from the contacts at indices
+// floor(i n / k) fails too: on this row-by-row list the seeds fall on two columns (x = 0 and
+// 1.44 m) and Lloyd keeps two bands of 1.5 m (outputs spanning 56%, contacts 0.79 m from the
+// nearest output).
+TEST(ContactClusteringTest, LargeInputOutputsSpanTheWholeGrid) {
+  const ContactList input = Grid(300, 10);
+  ContactList contacts = input;
+  ClusterContacts(20, kDefaultClusterNormalScale, &contacts);
+  ASSERT_EQ(contacts.size(), 20u);
+  Eigen::AlignedBox3d input_box;
+  Eigen::AlignedBox3d output_box;
+  for (const Contact& contact : input) input_box.extend(contact.position);
+  for (const Contact& contact : contacts) output_box.extend(contact.position);
+  EXPECT_GE(output_box.sizes().x(), 0.9 * input_box.sizes().x());
+  EXPECT_TRUE(input_box.contains(output_box));
+  // Every input contact is near an output: the cells are about 15 cm x 10 cm (the farthest
+  // contact is 11 cm from its output); a cluster that swallowed half the strip would leave
+  // contacts 0.7-1.4 m away.
+  double farthest = 0.0;
+  for (const Contact& contact : input) {
+    double nearest = kInf;
+    for (const Contact& output : contacts) {
+      nearest = std::min(nearest, (output.position - contact.position).norm());
+    }
+    farthest = std::max(farthest, nearest);
+  }
+  EXPECT_LE(farthest, 0.12);
+}
+
+// Only one contact in twelve enters k-means, but every contact is assigned to the final centres:
+// a deep, penetrating contact outside the subsample still sets its cluster's depth and flag.
+TEST(ContactClusteringTest, ContactsOutsideTheSubsampleStillCount) {
+  ContactList contacts = Grid(300, 10);
+  const std::size_t deep = 1501;  // not a multiple of the stride 12
+  contacts[deep].depth = 0.05;
+  contacts[deep].penetrating = true;
+  const Vec3 deep_position = contacts[deep].position;
+  ClusterContacts(20, kDefaultClusterNormalScale, &contacts);
+  ASSERT_EQ(contacts.size(), 20u);
+  int deep_outputs = 0;
+  for (const Contact& contact : contacts) {
+    if (contact.depth == 0.05) {
+      ++deep_outputs;
+      EXPECT_TRUE(contact.penetrating);
+      // The cluster holding it is local (cells are ~15 cm long).
+      EXPECT_LE((contact.position - deep_position).norm(), 0.12);
+    } else {
+      EXPECT_EQ(contact.depth, 1e-3);
+      EXPECT_FALSE(contact.penetrating);
+    }
+  }
+  EXPECT_EQ(deep_outputs, 1);
+}
+
+}  // namespace
+}  // namespace lamina::core
