@@ -69,8 +69,8 @@ bool ParseSolver(const std::string& text, lamina::core::SolverSettings* solver) 
 int RunSimulation(const RunOptions& options) {
   lamina::core::SolverSettings solver;
   if (!ParseSolver(options.solver, &solver)) {
-    std::cerr << "lamina-headless: --solver must be step, quick or quick:N, got '"
-              << options.solver << "'\n";
+    std::cerr << "lamina-headless: --solver must be step, quick or quick:N, got '" << options.solver
+              << "'\n";
     return 2;
   }
   WorldDesc world;

@@ -63,7 +63,7 @@ class CollisionGeometryCache {
 /// Every contact between a (at pose X_Wa, padding pad_a) and b (X_Wb, pad_b), appended to
 /// `out`. Paddings include nothing else: the geometries' own margins are added inside.
 /// Deterministic: the same inputs give the same contacts in the same order.
-void Collide(const CollisionGeometry& a, const Pose& X_Wa, double pad_a,
-             const CollisionGeometry& b, const Pose& X_Wb, double pad_b, ContactList* out);
+void Collide(const CollisionGeometry& a, const Pose& X_Wa, double pad_a, const CollisionGeometry& b,
+             const Pose& X_Wb, double pad_b, ContactList* out);
 
 }  // namespace lamina::core

@@ -87,9 +87,19 @@ Vec3 MeshMeshFeatureNormal(const CollisionGeometry& a, int ta, const CollisionGe
 }
 
 // A triangle pair within the tolerance; `crossing` when the triangles intersect.
+
 struct PairCandidate {
   TrianglePairHit hit;
   bool crossing = false;
+};
+
+// A mesh vertex over a face of the other mesh.
+struct VertexHit {
+  int vertex = 0;
+  double distance = 0.0;       ///< signed along the face normal, negative behind the face
+  Vec3 normal = Vec3::Zero();  ///< from b into a, in a's frame
+  Vec3 on_a = Vec3::Zero();
+  Vec3 on_b = Vec3::Zero();
 };
 
 struct MeshMeshScratch {
@@ -97,6 +107,7 @@ struct MeshMeshScratch {
   std::vector<PairCandidate> candidates;
   std::vector<int> order;
   std::vector<int> selected;
+  std::vector<VertexHit> vertex_hits;
 };
 
 MeshMeshScratch& Scratch() {
@@ -129,6 +140,37 @@ void FindCrossings(const CollisionGeometry& a, const CollisionGeometry& b, const
   }
 }
 
+// The normal from b into a of a selected pair, in a's frame. When a closest point lies inside
+// a face, that face's outward normal is used and the distance is signed along it, so a point
+// that has sunk behind the face is pushed back out instead of further in (a closest-point
+// direction flips when surfaces cross). Otherwise the feature normal or the closest-point
+// direction, as Klamp't does.
+Vec3 PairNormal(const CollisionGeometry& a, const CollisionGeometry& b, const Pose& X_ab,
+                const PairCandidate& c, double* signed_distance) {
+  const Vec3& p = c.hit.point_a;
+  const Vec3& q = c.hit.point_b;
+  const double d = c.hit.distance;
+  if (!c.crossing) {
+    using Type = TriangleFeature::Type;
+    const Triangle3 tri_a = MeshTriangle(a, c.hit.triangle_a);
+    const Triangle3 tri_b = MeshTriangle(b, c.hit.triangle_b, X_ab);
+    Vec3 face_normal = Vec3::Zero();
+    if (ClassifyFeature(BarycentricCoordinates(q, tri_b)).type == Type::kFace) {
+      face_normal = X_ab.linear() * b.triangle_normals()[c.hit.triangle_b];
+    } else if (ClassifyFeature(BarycentricCoordinates(p, tri_a)).type == Type::kFace) {
+      face_normal = -a.triangle_normals()[c.hit.triangle_a];
+    }
+    if (!face_normal.isZero()) {
+      *signed_distance = face_normal.dot(p - q);
+      return face_normal;
+    }
+  }
+  *signed_distance = d;
+  return d < kFeatureNormalDistance
+             ? MeshMeshFeatureNormal(a, c.hit.triangle_a, b, c.hit.triangle_b, X_ab, p, q)
+             : Vec3((p - q) / d);
+}
+
 // Appends to `selected` the closest partner of every triangle of one side: `side` 0 groups by
 // a's triangles, 1 by b's. Ties go to crossing pairs, then to the lower partner index.
 void SelectClosestPartners(int side, MeshMeshScratch* s) {
@@ -146,9 +188,17 @@ void SelectClosestPartners(int side, MeshMeshScratch* s) {
   }
 }
 
+// Crossing triangles (the meshes interpenetrate beyond the boundary layer) give no usable
+// normal: a side face crossing a bottom face would push sideways. They only take part when no
+// triangle pair of the two meshes is separated, so deep overlaps still produce contacts.
 void SelectPairs(MeshMeshScratch* s) {
-  s->order.resize(s->candidates.size());
-  for (size_t i = 0; i < s->order.size(); ++i) s->order[i] = static_cast<int>(i);
+  s->order.clear();
+  for (size_t i = 0; i < s->candidates.size(); ++i) {
+    if (!s->candidates[i].crossing) s->order.push_back(static_cast<int>(i));
+  }
+  if (s->order.empty()) {
+    for (size_t i = 0; i < s->candidates.size(); ++i) s->order.push_back(static_cast<int>(i));
+  }
   s->selected.clear();
   SelectClosestPartners(0, s);
   SelectClosestPartners(1, s);
@@ -158,6 +208,46 @@ void SelectPairs(MeshMeshScratch* s) {
   std::sort(s->selected.begin(), s->selected.end(),
             [&pair](int i, int j) { return pair(i) < pair(j); });
   s->selected.erase(std::unique(s->selected.begin(), s->selected.end()), s->selected.end());
+}
+
+// The vertices of one mesh that lie over a face of the other within `tolerance` (or behind it by
+// less than `tolerance`), each with its nearest face: a face resting on a face touches at its
+// corners, which the closest points of triangle pairs alone do not find. `from_a` picks whose
+// vertices; everything is in a's frame.
+void CollectVertexHits(const CollisionGeometry& a, const CollisionGeometry& b, const Pose& X_ab,
+                       const std::vector<PairCandidate>& candidates, double tolerance, bool from_a,
+                       std::vector<VertexHit>* hits) {
+  hits->clear();
+  const CollisionGeometry& own = from_a ? a : b;
+  for (const PairCandidate& c : candidates) {
+    const int own_triangle = from_a ? c.hit.triangle_a : c.hit.triangle_b;
+    const int face = from_a ? c.hit.triangle_b : c.hit.triangle_a;
+    const Triangle3 face_triangle = from_a ? MeshTriangle(b, face, X_ab) : MeshTriangle(a, face);
+    const Vec3 outward =
+        from_a ? Vec3(X_ab.linear() * b.triangle_normals()[face]) : a.triangle_normals()[face];
+    for (int k = 0; k < 3; ++k) {
+      const int vertex = own.mesh().triangles[own_triangle][k];
+      const Vec3 v =
+          from_a ? own.mesh().vertices[vertex] : Vec3(X_ab * own.mesh().vertices[vertex]);
+      const mesh_detail::TrianglePoint closest =
+          mesh_detail::ClosestPointOnTriangle(v, face_triangle);
+      if (ClassifyFeature(closest.barycentric).type != TriangleFeature::Type::kFace) continue;
+      const double distance = outward.dot(v - closest.point);
+      if (distance > tolerance || distance < -tolerance) continue;
+      VertexHit hit{vertex, distance, from_a ? outward : Vec3(-outward), v, closest.point};
+      if (!from_a) std::swap(hit.on_a, hit.on_b);
+      hits->push_back(hit);
+    }
+  }
+  // keep each vertex's nearest face, in vertex order
+  std::sort(hits->begin(), hits->end(), [](const VertexHit& x, const VertexHit& y) {
+    return std::make_tuple(x.vertex, std::abs(x.distance)) <
+           std::make_tuple(y.vertex, std::abs(y.distance));
+  });
+  hits->erase(
+      std::unique(hits->begin(), hits->end(),
+                  [](const VertexHit& x, const VertexHit& y) { return x.vertex == y.vertex; }),
+      hits->end());
 }
 
 }  // namespace
@@ -214,24 +304,34 @@ void MeshMeshContacts(const CollisionGeometry& a, const Pose& X_Wa, double pad_a
   mesh_detail::NearTrianglePairs(a.bvh(), b.bvh(), X_ab, tolerance, &s.hits);
   if (s.hits.empty()) return;
   FindCrossings(a, b, X_ab, &s);
+  const bool crossing = std::any_of(s.candidates.begin(), s.candidates.end(),
+                                    [](const PairCandidate& c) { return c.crossing; });
   SelectPairs(&s);
   for (const int i : s.selected) {
     const PairCandidate& c = s.candidates[i];
-    const Vec3& p = c.hit.point_a;
-    const Vec3& q = c.hit.point_b;
-    const double d = c.hit.distance;
-    const Vec3 n_a =
-        d < kFeatureNormalDistance
-            ? MeshMeshFeatureNormal(a, c.hit.triangle_a, b, c.hit.triangle_b, X_ab, p, q)
-            : Vec3((p - q) / d);
+    double signed_distance = c.hit.distance;
+    const Vec3 n_a = PairNormal(a, b, X_ab, c, &signed_distance);
     if (!(n_a.norm() >= kMinNormalLength)) continue;  // also rejects NaN
     Contact contact;
     contact.normal = X_Wa.linear() * n_a;
     // midway between the padded surfaces: p - pad_a n and q + pad_b n
-    contact.position = X_Wa * (0.5 * (p + q)) + 0.5 * (pad_b - pad_a) * contact.normal;
-    contact.depth = std::max(0.0, tolerance - d);
-    contact.penetrating = c.crossing;
+    contact.position =
+        X_Wa * (0.5 * (c.hit.point_a + c.hit.point_b)) + 0.5 * (pad_b - pad_a) * contact.normal;
+    contact.depth = std::max(0.0, tolerance - signed_distance);
+    contact.penetrating = crossing || signed_distance < 0.0;
     out->push_back(contact);
+  }
+  for (const bool from_a : {true, false}) {
+    CollectVertexHits(a, b, X_ab, s.candidates, tolerance, from_a, &s.vertex_hits);
+    for (const VertexHit& hit : s.vertex_hits) {
+      Contact contact;
+      contact.normal = X_Wa.linear() * hit.normal;
+      contact.position =
+          X_Wa * (0.5 * (hit.on_a + hit.on_b)) + 0.5 * (pad_b - pad_a) * contact.normal;
+      contact.depth = std::max(0.0, tolerance - hit.distance);
+      contact.penetrating = crossing || hit.distance < 0.0;
+      out->push_back(contact);
+    }
   }
 }
 

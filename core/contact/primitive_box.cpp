@@ -3,8 +3,9 @@
 // box, 9 edge-edge cross products); the axis of largest separation decides the contact: for a
 // face axis the other box's most anti-parallel face is clipped against the reference face
 // (Sutherland-Hodgman), giving up to 8 points, each with its own depth; for an edge axis the two
-// supporting edges give one point. Configurations the axes cannot resolve (corners or edges
-// meeting off each other's faces) fall back to the nearest point over all edges.
+// supporting edges give one point. Where the axes do not locate the nearest points (corners or
+// edges meeting off each other's faces, or the incident box's lowest point overhanging the
+// reference face) one more contact comes from the nearest point over all edges of both boxes.
 #include <algorithm>
 #include <array>
 #include <cmath>

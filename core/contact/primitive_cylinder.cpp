@@ -50,14 +50,14 @@ void CapRimContacts(const PlacedPrimitive& cylinder, double side, const PlacedPr
       best_distance = distance;
     }
   }
-  // a rim point lies within a chord 2 r sin(step / 4) of a sample and distance changes no faster
-  // than position, so this cap cannot reach the boundary layer
+  // every rim point lies within a chord 2 r sin(step / 4) of a sample and distance changes no
+  // faster than position: if even that cannot reach the boundary layer, the cap has no contact
   if (best_distance - 2.0 * radius * std::sin(0.25 * kScanStep) >= sink->tolerance()) return;
 
-  // refine between the neighbouring samples, then try evenly spaced points from there
+  // refine between the neighbouring samples, then try evenly spaced points from there (each
+  // point's offset from the cylinder centre lies in the rim's cone of outward normals)
   const double nearest =
       MinimizeUnimodal(distance_at, (best - 1) * kScanStep, (best + 1) * kScanStep);
-  // (point - cylinder centre lies in the rim's cone of outward normals)
   for (int k = 0; k < kRimContactPoints; ++k) {
     const Vec3 point = rim_point(nearest + k * (2.0 * kPi / kRimContactPoints));
     sink->AddBall(cylinder_is_a, point, 0.0, QueryPoint(other, point, point - cylinder.Center()));

@@ -3,9 +3,11 @@
 // works in the shape's own frame and maps its answer back to the world.
 #include "core/contact/primitive_queries.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 
 namespace lamina::core::primitive_detail {
 namespace {
@@ -30,8 +32,8 @@ SurfacePoint QueryBall(const Vec3& centre, double radius, const Vec3& p) {
   return result;
 }
 
-/// A face (or side) an inside point could leave through: its outward normal and the point's
-/// signed distance to its plane (negative).
+/// A face (or the side) a point could leave through: its outward normal and the point's signed
+/// distance to it (negative inside).
 struct ExitFace {
   Vec3 normal = Vec3::UnitZ();
   double excess = -kInf;
@@ -257,8 +259,8 @@ bool FeatureSpan(const PlacedPrimitive& shape, const SurfacePoint& closest, cons
       const Vec3 half = 0.5 * primitive.size;
       bool inside = true;
       for (int i = 0; i < 3; ++i) {
-        if (i != closest.face_axis)
-          inside = inside && ClipToSlab(p0[i], p1[i], half[i], t_begin, t_end);
+        if (i == closest.face_axis) continue;
+        inside = inside && ClipToSlab(p0[i], p1[i], half[i], t_begin, t_end);
       }
       return inside;
     }

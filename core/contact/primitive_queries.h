@@ -44,8 +44,8 @@ enum class SurfaceFeature {
 struct SurfacePoint {
   double distance = 0.0;      ///< signed distance of the query point, < 0 inside (m)
   Vec3 point = Vec3::Zero();  ///< closest surface point (world)
-  Vec3 normal =
-      Vec3::UnitZ();  ///< outward unit normal there (world); query = point + distance * normal
+  /// Outward unit normal there (world): query point = point + distance * normal.
+  Vec3 normal = Vec3::UnitZ();
   SurfaceFeature feature = SurfaceFeature::kPoint;
   int face_axis = 2;  ///< local axis of the box face (box, kFlat only)
 };

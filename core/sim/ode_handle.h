@@ -3,10 +3,10 @@
 // the simulator include <ode/ode.h>.
 #pragma once
 
-#include <ode/ode.h>
-
 #include <memory>
 #include <type_traits>
+
+#include <ode/ode.h>
 
 namespace lamina::core {
 

@@ -2,8 +2,9 @@
 #include "core/sim/run_report.h"
 
 #include <cstdio>
-#include <nlohmann/json.hpp>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
 
 namespace lamina::core {
 
@@ -11,7 +12,9 @@ namespace {
 
 using nlohmann::ordered_json;
 
-ordered_json Vector(const Vec3& v) { return ordered_json::array({v.x(), v.y(), v.z()}); }
+ordered_json Vector(const Vec3& v) {
+  return ordered_json::array({v.x(), v.y(), v.z()});
+}
 
 double RealTimeFactor(const Simulator& simulator, const RunTiming& timing) {
   return timing.wall_time > 0.0 ? simulator.time() / timing.wall_time : 0.0;
@@ -26,7 +29,7 @@ std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
                       {"real_time_factor", RealTimeFactor(simulator, timing)},
                       {"steps", stats.steps},
                       {"status", StepStatusName(stats.worst_status)},
-                      {"rollbacks", 0},
+                      {"rollbacks", stats.rollbacks},
                       {"instability_corrections", 0},
                       {"max_penetration", stats.max_penetration},
                       {"max_contacts", stats.max_contacts_in_step}};
@@ -52,8 +55,8 @@ std::string RunReportText(const Simulator& simulator, const RunTiming& timing) {
   char line[256];
   std::snprintf(line, sizeof(line),
                 "simulated %.6g s in %ld steps, %.3f s wall (%.2fx real time), status %s\n",
-                simulator.time(), stats.steps, timing.wall_time,
-                RealTimeFactor(simulator, timing), StepStatusName(stats.worst_status));
+                simulator.time(), stats.steps, timing.wall_time, RealTimeFactor(simulator, timing),
+                StepStatusName(stats.worst_status));
   out << line;
   std::snprintf(line, sizeof(line), "max penetration %.6g m, max contacts %d\n",
                 stats.max_penetration, stats.max_contacts_in_step);

@@ -8,8 +8,8 @@ namespace lamina::core {
 std::string SimLogHeader(const Simulator& simulator) {
   std::string header = "time,";
   for (const RigidObjectDesc& object : simulator.world().objects) {
-    for (const char* column : {"_x", "_y", "_z", "_rz", "_ry", "_rx", "_dx", "_dy", "_dz", "_wz",
-                               "_wy", "_wx"}) {
+    for (const char* column :
+         {"_x", "_y", "_z", "_rz", "_ry", "_rx", "_dx", "_dy", "_dz", "_wz", "_wy", "_wx"}) {
       header += object.name + column + ",";
     }
     header += ",";
@@ -23,12 +23,18 @@ std::string SimLogRow(const Simulator& simulator) {
     const Pose pose = simulator.GetObjectPose(i);
     const Vec3 rpy = RollPitchYawFromRotation(pose.linear());
     const Twist velocity = simulator.GetObjectVelocity(i);
-    const double values[12] = {pose.translation().x(), pose.translation().y(),
-                               pose.translation().z(), rpy.z(),
-                               rpy.y(),                rpy.x(),
-                               velocity.linear.x(),    velocity.linear.y(),
-                               velocity.linear.z(),    velocity.angular.z(),
-                               velocity.angular.y(),   velocity.angular.x()};
+    const double values[12] = {pose.translation().x(),
+                               pose.translation().y(),
+                               pose.translation().z(),
+                               rpy.z(),
+                               rpy.y(),
+                               rpy.x(),
+                               velocity.linear.x(),
+                               velocity.linear.y(),
+                               velocity.linear.z(),
+                               velocity.angular.z(),
+                               velocity.angular.y(),
+                               velocity.angular.x()};
     for (double value : values) row += FormatDouble(value) + ",";
     row += ",";
   }

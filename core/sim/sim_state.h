@@ -10,10 +10,10 @@ namespace lamina::core {
 
 /// State of one rigid body as ODE holds it (at the centre of mass).
 struct BodyState {
-  Vec3 com_position = Vec3::Zero();                           ///< m, world
+  Vec3 com_position = Vec3::Zero();                                 ///< m, world
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  ///< body axes in world
-  Vec3 linear_velocity = Vec3::Zero();                        ///< m/s of the COM
-  Vec3 angular_velocity = Vec3::Zero();                       ///< rad/s, world
+  Vec3 linear_velocity = Vec3::Zero();                              ///< m/s of the COM
+  Vec3 angular_velocity = Vec3::Zero();                             ///< rad/s, world
 
   bool operator==(const BodyState& other) const {
     return com_position == other.com_position &&
@@ -23,7 +23,7 @@ struct BodyState {
 };
 
 struct SimState {
-  double time = 0.0;              ///< s
+  double time = 0.0;               ///< s
   std::vector<BodyState> objects;  ///< one per rigid object
   bool operator==(const SimState&) const = default;
 };

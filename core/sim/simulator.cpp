@@ -18,7 +18,9 @@ constexpr double kBounceVelocityThreshold = 0.01;
 // sliding slower than this keeps ODE's default friction directions (m/s)
 constexpr double kSlidingSpeedThreshold = 1e-6;
 
-Vec3 ToVec3(const dReal* v) { return {v[0], v[1], v[2]}; }
+Vec3 ToVec3(const dReal* v) {
+  return {v[0], v[1], v[2]};
+}
 
 Mat3 ToMat3(const dReal* r) {
   Mat3 m;
@@ -75,7 +77,7 @@ const char* StepStatusName(StepStatus status) {
 struct Simulator::ObjectBody {
   dBodyID body = nullptr;
   std::shared_ptr<const CollisionGeometry> geometry;
-  Vec3 com = Vec3::Zero();  ///< in the object frame
+  Vec3 com = Vec3::Zero();     ///< in the object frame
   Eigen::AlignedBox3d bounds;  ///< padded world bounds, refreshed every sub-step
 };
 
@@ -102,7 +104,9 @@ Simulator::Simulator(const WorldDesc& world, SolverSettings solver)
 
 Simulator::~Simulator() = default;
 
-int Simulator::object_count() const { return static_cast<int>(objects_.size()); }
+int Simulator::object_count() const {
+  return static_cast<int>(objects_.size());
+}
 
 void Simulator::BuildBodies() {
   for (const TerrainDesc& terrain : world_.terrains) {
@@ -164,6 +168,7 @@ Pose Simulator::GetObjectPose(int object) const {
 }
 
 void Simulator::SetObjectPose(int object, const Pose& pose) {
+  contacts_current_ = false;
   const ObjectBody& body = objects_[object];
   const Vec3 com_world = pose * body.com;
   dBodySetPosition(body.body, com_world.x(), com_world.y(), com_world.z());
@@ -183,8 +188,7 @@ void Simulator::SetObjectVelocity(int object, const Twist& velocity) {
   const Vec3 com_offset = GetObjectPose(object).linear() * body.com;
   const Vec3 com_velocity = velocity.linear + velocity.angular.cross(com_offset);
   dBodySetLinearVel(body.body, com_velocity.x(), com_velocity.y(), com_velocity.z());
-  dBodySetAngularVel(body.body, velocity.angular.x(), velocity.angular.y(),
-                     velocity.angular.z());
+  dBodySetAngularVel(body.body, velocity.angular.x(), velocity.angular.y(), velocity.angular.z());
 }
 
 SimState Simulator::GetState() const {
@@ -192,15 +196,15 @@ SimState Simulator::GetState() const {
   state.time = time_;
   for (const ObjectBody& object : objects_) {
     const dReal* q = dBodyGetQuaternion(object.body);
-    state.objects.push_back({ToVec3(dBodyGetPosition(object.body)),
-                             Eigen::Quaterniond(q[0], q[1], q[2], q[3]),
-                             ToVec3(dBodyGetLinearVel(object.body)),
-                             ToVec3(dBodyGetAngularVel(object.body))});
+    state.objects.push_back(
+        {ToVec3(dBodyGetPosition(object.body)), Eigen::Quaterniond(q[0], q[1], q[2], q[3]),
+         ToVec3(dBodyGetLinearVel(object.body)), ToVec3(dBodyGetAngularVel(object.body))});
   }
   return state;
 }
 
 void Simulator::SetState(const SimState& state) {
+  contacts_current_ = false;
   time_ = state.time;
   for (size_t i = 0; i < objects_.size() && i < state.objects.size(); ++i) {
     const BodyState& s = state.objects[i];
@@ -217,21 +221,88 @@ void Simulator::SetState(const SimState& state) {
 
 StepStatus Simulator::Simulate(double dt) {
   if (statistics_.worst_status == StepStatus::kError) return StepStatus::kError;
+  StepStatus worst = StepStatus::kNormal;
   double remaining = dt;
   while (remaining > 0.0) {
     // the last sub-step absorbs a remainder smaller than a part per million of a step
-    const double step = remaining < world_.settings.timestep * (1 + 1e-6)
-                            ? remaining
-                            : world_.settings.timestep;
-    if (!Step(step)) return StepStatus::kError;
+    const double step =
+        remaining < world_.settings.timestep * (1 + 1e-6) ? remaining : world_.settings.timestep;
+    const StepStatus status = Step(step);
+    worst = std::max(worst, status);
+    if (status == StepStatus::kError) break;
     remaining -= step;
   }
-  return StepStatus::kNormal;
+  statistics_.worst_status = std::max(statistics_.worst_status, worst);
+  return worst;
 }
 
-bool Simulator::Step(double step) {
+// one sub-step of length `step`; with adaptive stepping, a tentative step that uses up more
+// than half of a boundary layer, or makes geometries interpenetrate, is undone and retaken in
+// halves until it is acceptable or the step reaches kMinimumAdaptiveStep
+StepStatus Simulator::Step(double step) {
+  StepStatus status = StepStatus::kNormal;
+  if (!contacts_current_) DetectContacts();
+  double remaining = step;
+  double h = step;
+  while (remaining > 0.0) {
+    h = std::min(h, remaining);
+    const SimState before = GetState();
+    saved_pairs_ = pairs_;
+    if (!Integrate(h)) return StepStatus::kError;
+    DetectContacts();
+    bool unreliable = false;
+    if (world_.settings.adaptive_time_stepping && NeedsRollback(saved_pairs_, &unreliable) &&
+        h / 2 >= kMinimumAdaptiveStep) {
+      SetState(before);
+      std::swap(pairs_, saved_pairs_);
+      contacts_current_ = true;
+      h /= 2;
+      ++statistics_.rollbacks;
+      status = std::max(status, StepStatus::kAdaptiveStep);
+      continue;
+    }
+    if (unreliable) status = std::max(status, StepStatus::kContactUnreliable);
+    RecordAcceptedContacts();
+    time_ += h;
+    remaining -= h;
+    ++statistics_.steps;
+  }
+  return status;
+}
+
+void Simulator::RecordAcceptedContacts() {
+  int contacts = 0;
+  for (const ContactPair& pair : pairs_) {
+    contacts += static_cast<int>(pair.contacts.size());
+    statistics_.max_penetration = std::max(statistics_.max_penetration, pair.max_depth);
+  }
+  statistics_.max_contacts_in_step = std::max(statistics_.max_contacts_in_step, contacts);
+}
+
+bool Simulator::NeedsRollback(const std::vector<ContactPair>& before, bool* unreliable) const {
+  bool rollback = false;
+  for (const ContactPair& pair : pairs_) {
+    const auto previous = std::find_if(before.begin(), before.end(), [&](const ContactPair& p) {
+      return p.a == pair.a && p.b == pair.b;
+    });
+    const bool was_in_contact = previous != before.end();
+    if (pair.penetrating) {
+      *unreliable = true;
+      // a new interpenetration is worth a smaller step; an old one would roll back forever
+      if (!was_in_contact || !previous->penetrating) rollback = true;
+      continue;
+    }
+    const double remaining = pair.tolerance - pair.max_depth;
+    const double previous_remaining =
+        was_in_contact ? previous->tolerance - previous->max_depth : pair.tolerance;
+    if (remaining < 0.5 * pair.tolerance && remaining < 0.5 * previous_remaining) rollback = true;
+  }
+  return rollback;
+}
+
+bool Simulator::Integrate(double step) {
   try {
-    DetectContacts(step);
+    for (const ContactPair& pair : pairs_) AddContactJoints(pair, step);
     if (solver_.type == SolverType::kQuickStep) {
       dWorldSetQuickStepNumIterations(ode_world_.get(), solver_.quick_step_iterations);
       dWorldQuickStep(ode_world_.get(), step);
@@ -240,12 +311,12 @@ bool Simulator::Step(double step) {
     }
     dJointGroupEmpty(contact_group_.get());
   } catch (const std::exception& error) {
+    dJointGroupEmpty(contact_group_.get());
     statistics_.error = error.what();
     statistics_.worst_status = StepStatus::kError;
     return false;
   }
-  time_ += step;
-  ++statistics_.steps;
+  contacts_current_ = false;
   if (!StateIsFinite()) {
     statistics_.error = "a body state became non-finite at t = " + std::to_string(time_) + " s";
     statistics_.worst_status = StepStatus::kError;
@@ -266,53 +337,62 @@ bool Simulator::StateIsFinite() const {
   return true;
 }
 
-void Simulator::DetectContacts(double step) {
-  int joints = 0;
+void Simulator::DetectContacts() {
+  pairs_.clear();
   for (int i = 0; i < object_count(); ++i) {
     ObjectBody& object = objects_[i];
     if (!object.geometry) continue;
     object.bounds = WorldBounds(*object.geometry, GetObjectPose(i), world_.objects[i].sim.padding);
   }
-  const auto collide_pair = [&](const CollisionGeometry& a, const Pose& X_Wa,
-                                const BodySimParams& sim_a, dBodyID body_a,
-                                const CollisionGeometry& b, const Pose& X_Wb,
-                                const BodySimParams& sim_b, dBodyID body_b) {
-    scratch_contacts_.clear();
-    Collide(a, X_Wa, sim_a.padding, b, X_Wb, sim_b.padding, &scratch_contacts_);
-    if (scratch_contacts_.empty()) return;
-    ClusterContacts(world_.settings.max_contacts, kDefaultClusterNormalScale, &scratch_contacts_);
-    AddContactJoints(scratch_contacts_, body_a, body_b, sim_a.surface, sim_b.surface, step);
-    joints += static_cast<int>(scratch_contacts_.size());
-  };
   for (int i = 0; i < object_count(); ++i) {
     const ObjectBody& a = objects_[i];
     if (!a.geometry) continue;
     const Pose X_Wa = GetObjectPose(i);
-    for (size_t t = 0; t < terrains_.size(); ++t) {
+    for (int t = 0; t < static_cast<int>(terrains_.size()); ++t) {
       const TerrainBody& terrain = terrains_[t];
       if (!terrain.geometry || !AabbsOverlap(a.bounds, terrain.bounds)) continue;
-      collide_pair(*a.geometry, X_Wa, world_.objects[i].sim, a.body, *terrain.geometry,
-                   Pose::Identity(), world_.terrains[t].sim, nullptr);
+      AddPairContacts(i, -1 - t, *a.geometry, X_Wa, *terrain.geometry, Pose::Identity());
     }
     if (!world_.settings.rigid_object_collisions) continue;
     for (int j = i + 1; j < object_count(); ++j) {
       const ObjectBody& b = objects_[j];
       if (!b.geometry || !AabbsOverlap(a.bounds, b.bounds)) continue;
-      collide_pair(*a.geometry, X_Wa, world_.objects[i].sim, a.body, *b.geometry,
-                   GetObjectPose(j), world_.objects[j].sim, b.body);
+      AddPairContacts(i, j, *a.geometry, X_Wa, *b.geometry, GetObjectPose(j));
     }
   }
-  statistics_.max_contacts_in_step = std::max(statistics_.max_contacts_in_step, joints);
+  contacts_current_ = true;
 }
 
-void Simulator::AddContactJoints(const ContactList& contacts, dxBody* body_a, dxBody* body_b,
-                                 const SurfaceDesc& a, const SurfaceDesc& b, double step) {
-  const BlendedSurface surface = BlendSurfaces(a, b);
+void Simulator::AddPairContacts(int a, int b, const CollisionGeometry& geometry_a, const Pose& X_Wa,
+                                const CollisionGeometry& geometry_b, const Pose& X_Wb) {
+  const BodySimParams& sim_a = world_.objects[a].sim;
+  const BodySimParams& sim_b = b >= 0 ? world_.objects[b].sim : world_.terrains[-1 - b].sim;
+  scratch_contacts_.clear();
+  Collide(geometry_a, X_Wa, sim_a.padding, geometry_b, X_Wb, sim_b.padding, &scratch_contacts_);
+  if (scratch_contacts_.empty()) return;
+  ContactPair pair;
+  pair.a = a;
+  pair.b = b;
+  pair.tolerance = sim_a.padding + geometry_a.margin() + sim_b.padding + geometry_b.margin();
+  for (const Contact& contact : scratch_contacts_) {
+    pair.max_depth = std::max(pair.max_depth, contact.depth);
+    pair.penetrating = pair.penetrating || contact.penetrating;
+  }
+  ClusterContacts(world_.settings.max_contacts, kDefaultClusterNormalScale, &scratch_contacts_);
+  pair.contacts = scratch_contacts_;
+  pairs_.push_back(std::move(pair));
+}
+
+void Simulator::AddContactJoints(const ContactPair& pair, double step) {
+  dBodyID body_a = objects_[pair.a].body;
+  dBodyID body_b = pair.b >= 0 ? objects_[pair.b].body : nullptr;
+  const SurfaceDesc& surface_b =
+      pair.b >= 0 ? world_.objects[pair.b].sim.surface : world_.terrains[-1 - pair.b].sim.surface;
+  const BlendedSurface surface = BlendSurfaces(world_.objects[pair.a].sim.surface, surface_b);
   const SoftContactParams soft = SoftContact(surface.stiffness, surface.damping, step);
   // a layer without stiffness or damping pushes with no force at all
   if (soft.soft && !std::isfinite(soft.cfm)) return;
-  for (const Contact& contact : contacts) {
-    statistics_.max_penetration = std::max(statistics_.max_penetration, contact.depth);
+  for (const Contact& contact : pair.contacts) {
     dContact joint{};
     joint.surface.mode = dContactApprox1;
     joint.surface.mu = std::isinf(surface.friction) ? dInfinity : surface.friction;
@@ -332,9 +412,9 @@ void Simulator::AddContactJoints(const ContactList& contacts, dxBody* body_a, dx
     if (body_b) dBodyGetPointVel(body_b, p.x(), p.y(), p.z(), velocity_b);
     const Vec3 relative = ToVec3(velocity_a) - ToVec3(velocity_b);
     const double normal_speed = relative.dot(contact.normal);
-    if (!soft.soft && normal_speed < -kBounceVelocityThreshold) {
-      // an impact: the velocity constraint (with restitution) stops the approach; correcting the
-      // layer overlap as well would add energy (Klamp't's spheres bounce too high for this)
+    if (!soft.soft && surface.restitution > 0.0 && normal_speed < -kBounceVelocityThreshold) {
+      // a bouncing impact: the velocity constraint with restitution sets the rebound; correcting
+      // the layer overlap as well would add energy (Klamp't's spheres bounce too high for this)
       joint.surface.mode |= dContactSoftERP;
       joint.surface.soft_erp = 0.0;
     }

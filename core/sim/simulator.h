@@ -38,12 +38,26 @@ struct SolverSettings {
 
 /// Counters since construction or the last Reset.
 struct SimStatistics {
-  long steps = 0;                 ///< physics sub-steps taken
-  int max_contacts_in_step = 0;   ///< most contact joints in one sub-step
-  double max_penetration = 0.0;   ///< deepest boundary-layer overlap seen, m
+  long steps = 0;                ///< physics sub-steps taken (accepted)
+  long rollbacks = 0;            ///< sub-steps undone and retaken at half the step
+  int max_contacts_in_step = 0;  ///< most contact joints in one sub-step
+  double max_penetration = 0.0;  ///< deepest boundary-layer overlap in an accepted state, m
   StepStatus worst_status = StepStatus::kNormal;
-  std::string error;              ///< what stopped the simulation (kError)
+  std::string error;  ///< what stopped the simulation (kError)
 };
+
+/// The contacts between two bodies at the current state, after clustering.
+struct ContactPair {
+  int a = -1;  ///< object index
+  int b = -1;  ///< object index, or -1 - terrain index for a terrain
+  ContactList contacts;
+  double tolerance = 0.0;  ///< padding sum of the pair (m)
+  double max_depth = 0.0;  ///< deepest boundary-layer overlap (m)
+  bool penetrating = false;
+};
+
+/// Adaptive time stepping gives up halving below this step (s).
+inline constexpr double kMinimumAdaptiveStep = 1e-6;
 
 class Simulator {
  public:
@@ -83,10 +97,14 @@ class Simulator {
 
   void BuildBodies();
   void ApplyInitialState();
-  bool Step(double step);
-  void DetectContacts(double step);
-  void AddContactJoints(const ContactList& contacts, dxBody* body_a, dxBody* body_b,
-                        const SurfaceDesc& a, const SurfaceDesc& b, double step);
+  StepStatus Step(double step);
+  bool Integrate(double step);
+  bool NeedsRollback(const std::vector<ContactPair>& before, bool* unreliable) const;
+  void RecordAcceptedContacts();
+  void DetectContacts();
+  void AddPairContacts(int a, int b, const CollisionGeometry& geometry_a, const Pose& X_Wa,
+                       const CollisionGeometry& geometry_b, const Pose& X_Wb);
+  void AddContactJoints(const ContactPair& pair, double step);
   bool StateIsFinite() const;
 
   WorldDesc world_;
@@ -96,6 +114,9 @@ class Simulator {
   std::unique_ptr<dxJointGroup, void (*)(dxJointGroup*)> contact_group_;
   std::vector<ObjectBody> objects_;
   std::vector<TerrainBody> terrains_;
+  std::vector<ContactPair> pairs_;        ///< contacts at the current state
+  std::vector<ContactPair> saved_pairs_;  ///< contacts at the start of a tentative step
+  bool contacts_current_ = false;         ///< pairs_ describes the current state
   ContactList scratch_contacts_;
   double time_ = 0.0;
   SimStatistics statistics_;

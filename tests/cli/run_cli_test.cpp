@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 // `lamina-headless run`: the JSON report of a real run, the CSV log, and bad options.
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
-
 #include <array>
 #include <cstdio>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "tests/common/test_support.h"
 

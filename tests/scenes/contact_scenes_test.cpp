@@ -2,9 +2,9 @@
 // Contact scenes with analytic answers: a box resting on a plane, Coulomb sliding distance along
 // an axis and diagonally (isotropic friction), restitution bounce height, and determinism with
 // contacts.
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 #include "core/sim/simulator.h"
 

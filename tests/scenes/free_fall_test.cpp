@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Bodies without contact: free fall against the closed form of ODE's semi-implicit Euler, a
 // spinning body keeping its momentum, state snapshots that replay bit for bit.
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 #include "core/sim/simulator.h"
 

@@ -22,8 +22,8 @@ constexpr double kTol = 2.0 * kPad;
 // Results computed in closed form from inputs of ~0.1-0.5 m: a few ulps of rounding.
 constexpr double kExact = 1e-12;
 // Points located by golden-section search on a smooth minimum (rim points, segment points on a
-// curved surface) are resolved to ~sqrt(machine epsilon) * size; their distances, being at a
-// minimum, remain exact to rounding.
+// curved surface), and normals taken from them, are resolved to ~sqrt(machine epsilon) * size;
+// their distances, being at a minimum, remain exact to rounding.
 constexpr double kSearched = 1e-7;
 // random configurations per pair of shape kinds
 constexpr int kRandomTrials = 200;
@@ -287,6 +287,27 @@ TEST(PrimitiveContactsTest, CornerNearCornerOffTheFacesGivesOneContact) {
   ASSERT_EQ(contacts.size(), 1u);
   EXPECT_NEAR(contacts[0].depth, 0.004, kSearched);
   ExpectVecNear(contacts[0].normal, Vec3(1, 1, 1) / std::sqrt(3.0), kSearched);
+}
+
+TEST(PrimitiveContactsTest, LowestEdgeOverhangingTheFaceBelowGivesTheNearestContact) {
+  // a, tilted 0.3 rad about y, has its lowest edge (along y) 0.4 mm beyond b's top +x edge and
+  // 3 mm above it, and its bottom face rises over b's top face. b's top face separates them
+  // most (3 mm; a's bottom face: 0.4 sin 0.3 + 3 cos 0.3 = 2.98 mm), but the face clipped to it
+  // starts 3 + 0.4 tan 0.3 = 3.12 mm up: the nearest points are the two edges, beside it
+  const double beyond = 0.0004;
+  const double above = 0.003;
+  const Pose turn = Rotated(Vec3::UnitY(), 0.3, Vec3::Zero());
+  const Vec3 lowest_edge = turn * Vec3(0.1, 0, -0.1);
+  const Pose X_Wa = At(0.1 + beyond - lowest_edge.x(), 0, 0.1 + above - lowest_edge.z()) * turn;
+  const ContactList contacts = Contacts(kBox, X_Wa, kBox, At(0, 0, 0));
+  // the clipped face's contacts and the edges' one
+  ASSERT_GE(contacts.size(), 2u);
+  const Contact& deepest =
+      *std::max_element(contacts.begin(), contacts.end(),
+                        [](const Contact& x, const Contact& y) { return x.depth < y.depth; });
+  const double gap = std::hypot(beyond, above);
+  EXPECT_NEAR(deepest.depth, kTol - gap, kExact);
+  ExpectVecNear(deepest.normal, Vec3(beyond, 0, above) / gap, kExact);
 }
 
 TEST(PrimitiveContactsTest, SunkCornerIsPushedOutThroughTheCapItSankInto) {
@@ -777,7 +798,7 @@ TEST(PrimitiveContactsTest, RandomPairsMatchTheSupportFunctionDistance) {
         } else if (distance > 0.0 && distance < kTol - kDistanceTolerance) {
           // separated within the layer: the deepest contact is the nearest pair
           ASSERT_NE(deepest, nullptr) << "distance " << distance;
-          EXPECT_NEAR(deepest->depth, kTol - distance, kDistanceTolerance) << "A\n" << X_Wa.matrix() << "\nB\n" << X_Wb.matrix();
+          EXPECT_NEAR(deepest->depth, kTol - distance, kDistanceTolerance);
         } else if (distance < -kDistanceTolerance) {
           ASSERT_NE(deepest, nullptr) << "distance " << distance;
           EXPECT_TRUE(deepest->penetrating) << "distance " << distance;
