@@ -93,6 +93,9 @@ struct PairCandidate {
   bool crossing = false;
 };
 
+// barycentric slack for a vertex lying exactly over a face's edge
+constexpr double kOverFaceTolerance = 1e-9;
+
 // A mesh vertex over a face of the other mesh.
 struct VertexHit {
   int vertex = 0;
@@ -154,10 +157,15 @@ Vec3 PairNormal(const CollisionGeometry& a, const CollisionGeometry& b, const Po
     using Type = TriangleFeature::Type;
     const Triangle3 tri_a = MeshTriangle(a, c.hit.triangle_a);
     const Triangle3 tri_b = MeshTriangle(b, c.hit.triangle_b, X_ab);
+    const bool q_on_face = ClassifyFeature(BarycentricCoordinates(q, tri_b)).type == Type::kFace;
+    const bool p_on_face = ClassifyFeature(BarycentricCoordinates(p, tri_a)).type == Type::kFace;
+    // parallel faces: their closest points are an arbitrary spot of the overlap; the vertex
+    // contacts (CollectVertexHits) hold such faces at their corners instead
+    if (q_on_face && p_on_face) return Vec3::Zero();
     Vec3 face_normal = Vec3::Zero();
-    if (ClassifyFeature(BarycentricCoordinates(q, tri_b)).type == Type::kFace) {
+    if (q_on_face) {
       face_normal = X_ab.linear() * b.triangle_normals()[c.hit.triangle_b];
-    } else if (ClassifyFeature(BarycentricCoordinates(p, tri_a)).type == Type::kFace) {
+    } else if (p_on_face) {
       face_normal = -a.triangle_normals()[c.hit.triangle_a];
     }
     if (!face_normal.isZero()) {
@@ -229,12 +237,19 @@ void CollectVertexHits(const CollisionGeometry& a, const CollisionGeometry& b, c
       const int vertex = own.mesh().triangles[own_triangle][k];
       const Vec3 v =
           from_a ? own.mesh().vertices[vertex] : Vec3(X_ab * own.mesh().vertices[vertex]);
-      const mesh_detail::TrianglePoint closest =
-          mesh_detail::ClosestPointOnTriangle(v, face_triangle);
-      if (ClassifyFeature(closest.barycentric).type != TriangleFeature::Type::kFace) continue;
-      const double distance = outward.dot(v - closest.point);
+      // the vertex must project onto the face or its boundary (aligned boxes put corners on
+      // the partner's edges)
+      const Vec3 barycentric = BarycentricCoordinates(v, face_triangle);
+      if ((barycentric.array() < -kOverFaceTolerance).any()) continue;
+      const Vec3 projected = barycentric[0] * face_triangle[0] + barycentric[1] * face_triangle[1] +
+                             barycentric[2] * face_triangle[2];
+      const double distance = outward.dot(v - projected);
       if (distance > tolerance || distance < -tolerance) continue;
-      VertexHit hit{vertex, distance, from_a ? outward : Vec3(-outward), v, closest.point};
+      // touching the face's boundary: the face normal is one of several; the triangle pairs'
+      // feature normals decide there
+      const bool on_boundary = (barycentric.array() <= kOverFaceTolerance).any();
+      if (on_boundary && std::abs(distance) < kFeatureNormalDistance) continue;
+      VertexHit hit{vertex, distance, from_a ? outward : Vec3(-outward), v, projected};
       if (!from_a) std::swap(hit.on_a, hit.on_b);
       hits->push_back(hit);
     }
