@@ -238,3 +238,28 @@ void ClusterContacts(int max_contacts, double normal_scale, ContactList* contact
 }
 
 }  // namespace lamina::core
+
+namespace lamina::core {
+
+void MergeCoincidentContacts(double radius, ContactList* contacts) {
+  // cos(15 degrees)
+  constexpr double kSameNormal = 0.9659258262890683;
+  const double radius_squared = radius * radius;
+  size_t kept = 0;
+  for (size_t i = 0; i < contacts->size(); ++i) {
+    const Contact& contact = (*contacts)[i];
+    bool merged = false;
+    for (size_t k = 0; k < kept && !merged; ++k) {
+      Contact& survivor = (*contacts)[k];
+      if ((survivor.position - contact.position).squaredNorm() > radius_squared) continue;
+      if (survivor.normal.dot(contact.normal) < kSameNormal) continue;
+      survivor.depth = std::max(survivor.depth, contact.depth);
+      survivor.penetrating = survivor.penetrating || contact.penetrating;
+      merged = true;
+    }
+    if (!merged) (*contacts)[kept++] = contact;
+  }
+  contacts->resize(kept);
+}
+
+}  // namespace lamina::core

@@ -18,3 +18,13 @@ void ClusterContacts(int max_contacts, double normal_scale, ContactList* contact
 inline constexpr double kDefaultClusterNormalScale = 0.1;
 
 }  // namespace lamina::core
+
+namespace lamina::core {
+
+/// Merges contacts that lie within `radius` of an earlier contact and whose normals agree within
+/// about 15 degrees into that earlier contact (keeping the larger depth and the penetrating
+/// flag): both meshes report a shared corner, and a corner is also the end of edge contacts.
+/// Deterministic; keeps the order of the survivors.
+void MergeCoincidentContacts(double radius, ContactList* contacts);
+
+}  // namespace lamina::core

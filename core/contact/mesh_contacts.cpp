@@ -149,7 +149,8 @@ void FindCrossings(const CollisionGeometry& a, const CollisionGeometry& b, const
 // direction flips when surfaces cross). Otherwise the feature normal or the closest-point
 // direction, as Klamp't does.
 Vec3 PairNormal(const CollisionGeometry& a, const CollisionGeometry& b, const Pose& X_ab,
-                const PairCandidate& c, double* signed_distance) {
+                const PairCandidate& c, double* signed_distance, bool* from_face) {
+  *from_face = false;
   const Vec3& p = c.hit.point_a;
   const Vec3& q = c.hit.point_b;
   const double d = c.hit.distance;
@@ -170,6 +171,7 @@ Vec3 PairNormal(const CollisionGeometry& a, const CollisionGeometry& b, const Po
     }
     if (!face_normal.isZero()) {
       *signed_distance = face_normal.dot(p - q);
+      *from_face = true;
       return face_normal;
     }
   }
@@ -265,6 +267,18 @@ void CollectVertexHits(const CollisionGeometry& a, const CollisionGeometry& b, c
       hits->end());
 }
 
+// a contact between point p on a and q on b (a's frame) with normal n (a's frame): positioned
+// midway between the padded surfaces, p - pad_a n and q + pad_b n
+void AppendContact(const Pose& X_Wa, double pad_a, double pad_b, const Vec3& p, const Vec3& q,
+                   const Vec3& n, double depth, bool penetrating, ContactList* out) {
+  Contact contact;
+  contact.normal = X_Wa.linear() * n;
+  contact.position = X_Wa * (0.5 * (p + q)) + 0.5 * (pad_b - pad_a) * contact.normal;
+  contact.depth = std::max(0.0, depth);
+  contact.penetrating = penetrating;
+  out->push_back(contact);
+}
+
 }  // namespace
 
 namespace mesh_detail {
@@ -322,31 +336,29 @@ void MeshMeshContacts(const CollisionGeometry& a, const Pose& X_Wa, double pad_a
   const bool crossing = std::any_of(s.candidates.begin(), s.candidates.end(),
                                     [](const PairCandidate& c) { return c.crossing; });
   SelectPairs(&s);
-  for (const int i : s.selected) {
-    const PairCandidate& c = s.candidates[i];
-    double signed_distance = c.hit.distance;
-    const Vec3 n_a = PairNormal(a, b, X_ab, c, &signed_distance);
-    if (!(n_a.norm() >= kMinNormalLength)) continue;  // also rejects NaN
-    Contact contact;
-    contact.normal = X_Wa.linear() * n_a;
-    // midway between the padded surfaces: p - pad_a n and q + pad_b n
-    contact.position =
-        X_Wa * (0.5 * (c.hit.point_a + c.hit.point_b)) + 0.5 * (pad_b - pad_a) * contact.normal;
-    contact.depth = std::max(0.0, tolerance - signed_distance);
-    contact.penetrating = crossing || signed_distance < 0.0;
-    out->push_back(contact);
-  }
+  // vertices over faces first: their face normals tell which way the pair separates
+  Vec3 reference = Vec3::Zero();
   for (const bool from_a : {true, false}) {
     CollectVertexHits(a, b, X_ab, s.candidates, tolerance, from_a, &s.vertex_hits);
     for (const VertexHit& hit : s.vertex_hits) {
-      Contact contact;
-      contact.normal = X_Wa.linear() * hit.normal;
-      contact.position =
-          X_Wa * (0.5 * (hit.on_a + hit.on_b)) + 0.5 * (pad_b - pad_a) * contact.normal;
-      contact.depth = std::max(0.0, tolerance - hit.distance);
-      contact.penetrating = crossing || hit.distance < 0.0;
-      out->push_back(contact);
+      reference += hit.normal;
+      AppendContact(X_Wa, pad_a, pad_b, hit.on_a, hit.on_b, hit.normal, tolerance - hit.distance,
+                    crossing || hit.distance < 0.0, out);
     }
+  }
+  for (const int i : s.selected) {
+    const PairCandidate& c = s.candidates[i];
+    double signed_distance = c.hit.distance;
+    bool from_face = false;
+    Vec3 n_a = PairNormal(a, b, X_ab, c, &signed_distance, &from_face);
+    if (!(n_a.norm() >= kMinNormalLength)) continue;  // also rejects NaN
+    if (!from_face && n_a.dot(reference) < 0.0) {
+      // an edge or vertex closest-point direction flips once the surfaces have crossed
+      n_a = -n_a;
+      signed_distance = -signed_distance;
+    }
+    AppendContact(X_Wa, pad_a, pad_b, c.hit.point_a, c.hit.point_b, n_a,
+                  tolerance - signed_distance, crossing || signed_distance < 0.0, out);
   }
 }
 

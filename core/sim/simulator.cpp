@@ -15,6 +15,8 @@ namespace {
 
 // contacts closing slower than this do not bounce, so resting bodies do not chatter (m/s)
 constexpr double kBounceVelocityThreshold = 0.01;
+// contacts closer than this (or than the pair's padding sum) count as one point (m)
+constexpr double kMinimumMergeRadius = 1e-4;
 // sliding slower than this keeps ODE's default friction directions (m/s)
 constexpr double kSlidingSpeedThreshold = 1e-6;
 
@@ -378,6 +380,7 @@ void Simulator::AddPairContacts(int a, int b, const CollisionGeometry& geometry_
     pair.max_depth = std::max(pair.max_depth, contact.depth);
     pair.penetrating = pair.penetrating || contact.penetrating;
   }
+  MergeCoincidentContacts(std::max(pair.tolerance, kMinimumMergeRadius), &scratch_contacts_);
   ClusterContacts(world_.settings.max_contacts, kDefaultClusterNormalScale, &scratch_contacts_);
   pair.contacts = scratch_contacts_;
   pairs_.push_back(std::move(pair));
