@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Klamp't's simulation test worlds, run as they are, against the bars: the 10-box stack
-// stands, the 100 kg block does not squeeze out the 1 kg one, fast drops do not tunnel. These run seconds of simulated time each (label "physics").
-#include <gtest/gtest.h>
-
+// stands, the 100 kg block does not squeeze out the 1 kg one, fast drops do not tunnel. These run
+// seconds of simulated time each (label "physics").
 #include <algorithm>
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 #include "core/io/world_file.h"
 #include "core/sim/simulator.h"
@@ -51,7 +52,8 @@ TEST(KlamptWorldsTest, HeavyBlockDoesNotSqueezeOutTheLightOne) {
   ASSERT_NE(simulator.statistics().worst_status, core::StepStatus::kError);
   // the bar: lateral drift < 5 mm (Klamp't squeezes the 1 kg block out by 0.40 m)
   for (int i = 0; i < simulator.object_count(); ++i) {
-    const Vec3 drift = simulator.GetObjectPose(i).translation() - world.objects[i].pose.translation();
+    const Vec3 drift =
+        simulator.GetObjectPose(i).translation() - world.objects[i].pose.translation();
     EXPECT_LT(drift.head<2>().norm(), 5e-3) << world.objects[i].name;
   }
   // penetration stays within the boundary layer (paddings of 2.5 mm on each side)
