@@ -1,10 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `lamina-headless info`: runs the real binary and checks its output, exit code and
 // diagnostics.
-#include <array>
-#include <cstdio>
-#include <fstream>
-#include <iterator>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -16,30 +12,8 @@
 namespace lamina {
 namespace {
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string out;  // standard output
-  std::string err;  // standard error
-};
-
-CommandResult RunHeadless(const std::string& arguments) {
-  const std::string err_path = test::ScratchDir() + "/stderr.txt";
-  const std::string command =
-      std::string(LAMINA_BIN_DIR) + "/lamina-headless " + arguments + " 2>" + err_path;
-  CommandResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer{};
-  size_t read = 0;
-  while ((read = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
-    result.out.append(buffer.data(), read);
-  }
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream err(err_path);
-  result.err.assign(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
-  return result;
-}
+using test::CommandResult;
+using test::RunHeadless;
 
 TEST(InfoCommandTest, JsonDescribesAthleteWorld) {
   const CommandResult result =

@@ -1,9 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `lamina-headless run`: the JSON report of a real run, the CSV log, and bad options.
-#include <array>
-#include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -15,26 +12,8 @@
 namespace lamina {
 namespace {
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string out;
-};
-
-CommandResult RunHeadless(const std::string& arguments) {
-  const std::string command = std::string(LAMINA_BIN_DIR) + "/lamina-headless " + arguments +
-                              " 2>" + test::ScratchDir() + "/stderr.txt";
-  CommandResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer{};
-  size_t read = 0;
-  while ((read = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
-    result.out.append(buffer.data(), read);
-  }
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+using test::CommandResult;
+using test::RunHeadless;
 
 TEST(RunCommandTest, JsonReportsFreeFallBeforeImpact) {
   const CommandResult result =

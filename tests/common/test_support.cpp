@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "tests/common/test_support.h"
 
+#include <array>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 namespace lamina::test {
 
@@ -33,6 +37,25 @@ std::string WriteScratchFile(const std::string& name, const std::string& text) {
   std::filesystem::create_directories(path.parent_path());
   std::ofstream(path, std::ios::binary) << text;
   return path.string();
+}
+
+CommandResult RunHeadless(const std::string& arguments) {
+  const std::string err_path = ScratchDir() + "/stderr.txt";
+  const std::string command =
+      std::string(LAMINA_BIN_DIR) + "/lamina-headless " + arguments + " 2>" + err_path;
+  CommandResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer{};
+  size_t read = 0;
+  while ((read = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
+    result.out.append(buffer.data(), read);
+  }
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream err(err_path);
+  result.err.assign(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
+  return result;
 }
 
 }  // namespace lamina::test

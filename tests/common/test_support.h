@@ -41,4 +41,13 @@ struct LoadedRobot {
 /// Loads the robot file at `path` (.rob or .urdf).
 std::unique_ptr<LoadedRobot> LoadRobot(const std::string& path);
 
+/// What a run of `lamina-headless` printed and returned.
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;  ///< standard output
+  std::string err;  ///< standard error
+};
+/// Runs the built `lamina-headless` with `arguments` (a shell word list).
+CommandResult RunHeadless(const std::string& arguments);
+
 }  // namespace lamina::test
