@@ -5,6 +5,7 @@
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
+CTEST_FLAGS ?=
 WORLD ?=
 
 .PHONY: all deps configure build run test test-asan format format-check clean
@@ -24,11 +25,12 @@ run: build
 	$(BUILD)/bin/lamina $(WORLD)
 
 test: build
-	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
+	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) $(CTEST_FLAGS)
 
-# the core and its tests under AddressSanitizer + UndefinedBehaviorSanitizer
+# the core and its tests under AddressSanitizer + UndefinedBehaviorSanitizer; the long physics
+# runs (label "physics") stay in the optimized `make test`
 test-asan:
-	$(MAKE) test BUILD=build-asan CMAKE_FLAGS="-DCMAKE_BUILD_TYPE=Debug \
+	$(MAKE) test BUILD=build-asan CTEST_FLAGS="-LE physics" CMAKE_FLAGS="-DCMAKE_BUILD_TYPE=Debug \
 	  -DLAMINA_SANITIZE='address;undefined' -DLAMINA_BUILD_EDITOR=OFF -DLAMINA_BUILD_HEADLESS=OFF \
 	  $(CMAKE_FLAGS)"
 
