@@ -788,8 +788,9 @@ TEST(PrimitiveContactsTest, RandomPairsMatchTheSupportFunctionDistance) {
 
         const ContactList contacts = Contacts(shapes[i], X_Wa, shapes[j], X_Wb);
         ExpectWellFormedAndSymmetric(contacts, Contacts(shapes[j], X_Wb, shapes[i], X_Wa));
-        const Contact* wide =
-            Deepest(Contacts(shapes[i], X_Wa, shapes[j], X_Wb, kWidePad, kWidePad));
+        const ContactList wide_contacts =
+            Contacts(shapes[i], X_Wa, shapes[j], X_Wb, kWidePad, kWidePad);
+        const Contact* wide = Deepest(wide_contacts);
         const double distance = OracleSignedDistance(shapes[i], X_Wa, shapes[j], X_Wb,
                                                      wide != nullptr ? wide->normal : direction);
         const Contact* deepest = Deepest(contacts);
