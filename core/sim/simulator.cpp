@@ -249,8 +249,9 @@ StepStatus Simulator::Step(double step) {
   while (remaining > 0.0) {
     h = std::min(h, remaining);
     const SimState before = GetState();
-    saved_pairs_ = pairs_;
     if (!Integrate(h)) return StepStatus::kError;
+    // keep the contacts of the state before the step in case it is rolled back
+    std::swap(pairs_, saved_pairs_);
     DetectContacts();
     bool unreliable = false;
     if (world_.settings.adaptive_time_stepping && NeedsRollback(saved_pairs_, &unreliable) &&
