@@ -26,6 +26,15 @@ namespace rob {
 
 namespace {
 
+// Klamp't's floating-base convention: x, y, z translations, then yaw, pitch and roll
+const std::vector<std::pair<LinkJointAxis, Vec3>>& FloatingBaseAxes() {
+  static const std::vector<std::pair<LinkJointAxis, Vec3>> axes = {
+      {LinkJointAxis::kPrismatic, Vec3::UnitX()}, {LinkJointAxis::kPrismatic, Vec3::UnitY()},
+      {LinkJointAxis::kPrismatic, Vec3::UnitZ()}, {LinkJointAxis::kRevolute, Vec3::UnitZ()},
+      {LinkJointAxis::kRevolute, Vec3::UnitY()},  {LinkJointAxis::kRevolute, Vec3::UnitX()}};
+  return axes;
+}
+
 using urdf_io::KlamptExtras;
 using urdf_io::KlamptLinkSettings;
 using urdf_io::UrdfXml;
@@ -273,13 +282,7 @@ int UrdfConverter::AddJointLinks(const urdf::Link& link, const urdf::Joint& join
   const Pose origin = ToPose(joint.parent_to_joint_origin_transform);
   const Vec3 axis = ToVec3(joint.axis).norm() > 0.0 ? ToVec3(joint.axis) : Vec3::UnitZ();
   if (joint.type == urdf::Joint::FLOATING) {
-    return AddVirtualChain(joint.name + "_base", parent, origin,
-                           {{LinkJointAxis::kPrismatic, Vec3::UnitX()},
-                            {LinkJointAxis::kPrismatic, Vec3::UnitY()},
-                            {LinkJointAxis::kPrismatic, Vec3::UnitZ()},
-                            {LinkJointAxis::kRevolute, Vec3::UnitZ()},
-                            {LinkJointAxis::kRevolute, Vec3::UnitY()},
-                            {LinkJointAxis::kRevolute, Vec3::UnitX()}},
+    return AddVirtualChain(joint.name + "_base", parent, origin, FloatingBaseAxes(),
                            JointType::kFloating, &out);
   }
   if (joint.type == urdf::Joint::PLANAR) {
@@ -370,13 +373,7 @@ void UrdfConverter::Convert(const urdf::ModelInterface& model) {
   }
   // a floating base: Klamp't's virtual links x, y, z, yaw, pitch with the root link as roll
   LinkDesc base = MakeLink(*root);
-  const int index = AddVirtualChain("base", -1, Pose::Identity(),
-                                    {{LinkJointAxis::kPrismatic, Vec3::UnitX()},
-                                     {LinkJointAxis::kPrismatic, Vec3::UnitY()},
-                                     {LinkJointAxis::kPrismatic, Vec3::UnitZ()},
-                                     {LinkJointAxis::kRevolute, Vec3::UnitZ()},
-                                     {LinkJointAxis::kRevolute, Vec3::UnitY()},
-                                     {LinkJointAxis::kRevolute, Vec3::UnitX()}},
+  const int index = AddVirtualChain("base", -1, Pose::Identity(), FloatingBaseAxes(),
                                     JointType::kFloating, &base);
   if (extras_.freeze_root_link) {
     robot_.joints.pop_back();

@@ -195,14 +195,19 @@ void Simulator::SetObjectVelocity(int object, const Twist& velocity) {
 
 SimState Simulator::GetState() const {
   SimState state;
-  state.time = time_;
-  for (const ObjectBody& object : objects_) {
-    const dReal* q = dBodyGetQuaternion(object.body);
-    state.objects.push_back(
-        {ToVec3(dBodyGetPosition(object.body)), Eigen::Quaterniond(q[0], q[1], q[2], q[3]),
-         ToVec3(dBodyGetLinearVel(object.body)), ToVec3(dBodyGetAngularVel(object.body))});
-  }
+  CaptureState(&state);
   return state;
+}
+
+void Simulator::CaptureState(SimState* state) const {
+  state->time = time_;
+  state->objects.resize(objects_.size());
+  for (size_t i = 0; i < objects_.size(); ++i) {
+    const dBodyID body = objects_[i].body;
+    const dReal* q = dBodyGetQuaternion(body);
+    state->objects[i] = {ToVec3(dBodyGetPosition(body)), Eigen::Quaterniond(q[0], q[1], q[2], q[3]),
+                         ToVec3(dBodyGetLinearVel(body)), ToVec3(dBodyGetAngularVel(body))};
+  }
 }
 
 void Simulator::SetState(const SimState& state) {
@@ -248,7 +253,7 @@ StepStatus Simulator::Step(double step) {
   double h = step;
   while (remaining > 0.0) {
     h = std::min(h, remaining);
-    const SimState before = GetState();
+    CaptureState(&rollback_state_);  // reuses its storage: no allocation per sub-step
     if (!Integrate(h)) return StepStatus::kError;
     // keep the contacts of the state before the step in case it is rolled back
     std::swap(pairs_, saved_pairs_);
@@ -256,7 +261,7 @@ StepStatus Simulator::Step(double step) {
     bool unreliable = false;
     if (world_.settings.adaptive_time_stepping && NeedsRollback(saved_pairs_, &unreliable) &&
         h / 2 >= kMinimumAdaptiveStep) {
-      SetState(before);
+      SetState(rollback_state_);
       std::swap(pairs_, saved_pairs_);
       contacts_current_ = true;
       h /= 2;

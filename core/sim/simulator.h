@@ -78,6 +78,8 @@ class Simulator {
   /// Back to the initial poses and velocities of the world description, time 0.
   void Reset();
   SimState GetState() const;
+  /// GetState into existing storage.
+  void CaptureState(SimState* state) const;
   void SetState(const SimState& state);
   const SimStatistics& statistics() const { return statistics_; }
   const WorldDesc& world() const { return world_; }
@@ -116,6 +118,7 @@ class Simulator {
   std::vector<TerrainBody> terrains_;
   std::vector<ContactPair> pairs_;        ///< contacts at the current state
   std::vector<ContactPair> saved_pairs_;  ///< contacts at the start of a tentative step
+  SimState rollback_state_;               ///< state at the start of a tentative step
   bool contacts_current_ = false;         ///< pairs_ describes the current state
   ContactList scratch_contacts_;
   double time_ = 0.0;

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -37,6 +38,31 @@ std::string WriteScratchFile(const std::string& name, const std::string& text) {
   std::filesystem::create_directories(path.parent_path());
   std::ofstream(path, std::ios::binary) << text;
   return path.string();
+}
+
+bool IsClosedAndConsistent(const core::TriangleMesh& mesh) {
+  std::map<std::pair<int, int>, int> directed;
+  for (const Eigen::Vector3i& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+  }
+  for (const auto& [edge, count] : directed) {
+    if (count != 1) return false;
+    const auto reverse = directed.find({edge.second, edge.first});
+    if (reverse == directed.end() || reverse->second != 1) return false;
+  }
+  return !directed.empty();
+}
+
+std::vector<std::string> LinkNames(const core::RobotDesc& robot) {
+  std::vector<std::string> names;
+  for (const core::LinkDesc& link : robot.links) names.push_back(link.name);
+  return names;
+}
+
+std::vector<int> Parents(const core::RobotDesc& robot) {
+  std::vector<int> parents;
+  for (const core::LinkDesc& link : robot.links) parents.push_back(link.parent);
+  return parents;
 }
 
 CommandResult RunHeadless(const std::string& arguments) {

@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/diagnostics.h"
 #include "core/io/load_context.h"
@@ -40,6 +41,13 @@ struct LoadedRobot {
 };
 /// Loads the robot file at `path` (.rob or .urdf).
 std::unique_ptr<LoadedRobot> LoadRobot(const std::string& path);
+
+/// Every undirected edge used by exactly two triangles, once in each direction (a closed,
+/// consistently oriented mesh).
+bool IsClosedAndConsistent(const core::TriangleMesh& mesh);
+/// The robot's link names and parent indices, in link order.
+std::vector<std::string> LinkNames(const core::RobotDesc& robot);
+std::vector<int> Parents(const core::RobotDesc& robot);
 
 /// What a run of `lamina-headless` printed and returned.
 struct CommandResult {

@@ -33,20 +33,6 @@ std::optional<TriangleMesh> Read(const std::string& path, Diagnostics* diagnosti
   return ReadMeshFile(path, SourceLocation{"/refs/world.xml", 7}, *diagnostics);
 }
 
-// Every undirected edge used by exactly two triangles, each direction once.
-bool IsClosedAndConsistent(const TriangleMesh& mesh) {
-  std::map<std::pair<int, int>, int> directed;
-  for (const Eigen::Vector3i& t : mesh.triangles) {
-    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
-  }
-  for (const auto& [edge, count] : directed) {
-    if (count != 1) return false;
-    const auto reverse = directed.find({edge.second, edge.first});
-    if (reverse == directed.end() || reverse->second != 1) return false;
-  }
-  return !directed.empty();
-}
-
 void ExpectBounds(const TriangleMesh& mesh, const Vec3& low, const Vec3& high) {
   const Eigen::AlignedBox3d box = mesh.Bounds();
   for (int i = 0; i < 3; ++i) {
@@ -73,7 +59,7 @@ TEST(OffFile, CubeIsClosedUnitCube) {
   ASSERT_TRUE(mesh.has_value()) << diagnostics.FormatAll();
   EXPECT_EQ(mesh->vertex_count(), 8);
   EXPECT_EQ(mesh->triangle_count(), 12);
-  EXPECT_TRUE(IsClosedAndConsistent(*mesh));
+  EXPECT_TRUE(test::IsClosedAndConsistent(*mesh));
   ExpectBounds(*mesh, Vec3::Zero(), Vec3::Ones());
   // first face line "3 0 1 3" kept verbatim
   EXPECT_EQ(mesh->triangles[0], Eigen::Vector3i(0, 1, 3));
@@ -216,7 +202,7 @@ TEST(AssimpMesh, AsciiStl) {
   ASSERT_TRUE(mesh.has_value()) << diagnostics.FormatAll();
   EXPECT_EQ(mesh->triangle_count(), 4);
   EXPECT_EQ(mesh->vertex_count(), 4);  // JoinIdenticalVertices merges the STL's corners
-  EXPECT_TRUE(IsClosedAndConsistent(*mesh));
+  EXPECT_TRUE(test::IsClosedAndConsistent(*mesh));
   ExpectBounds(*mesh, Vec3(0, 0, 0), Vec3(1, 2, 3));
 }
 
@@ -239,7 +225,7 @@ TEST(AssimpMesh, PlyQuadsAreTriangulated) {
   const auto mesh = Read(DataPath("meshes/cube_quads.ply"), &diagnostics);
   ASSERT_TRUE(mesh.has_value()) << diagnostics.FormatAll();
   EXPECT_EQ(mesh->triangle_count(), 12);
-  EXPECT_TRUE(IsClosedAndConsistent(*mesh));
+  EXPECT_TRUE(test::IsClosedAndConsistent(*mesh));
   ExpectBounds(*mesh, Vec3(-1, -1, -1), Vec3(1, 1, 1));
 }
 

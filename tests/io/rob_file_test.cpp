@@ -40,18 +40,6 @@ std::vector<double> DriverValues(const core::RobotDesc& robot, double core::Driv
   return values;
 }
 
-std::vector<std::string> LinkNames(const core::RobotDesc& robot) {
-  std::vector<std::string> names;
-  for (const core::LinkDesc& link : robot.links) names.push_back(link.name);
-  return names;
-}
-
-std::vector<int> Parents(const core::RobotDesc& robot) {
-  std::vector<int> parents;
-  for (const core::LinkDesc& link : robot.links) parents.push_back(link.parent);
-  return parents;
-}
-
 const std::string kBox = test::DataPath("robots/box.off");
 
 TEST(RobFile, EveryExampleRobotLoadsWithoutErrors) {
@@ -187,7 +175,7 @@ TEST(RobFile, Tx90lGetsDefaultJointsAndDrivers) {
   EXPECT_EQ(robot.drivers[0].torque_max, 800.0);
   EXPECT_EQ(DriverValues(robot, &core::DriverDesc::servo_p),
             (std::vector<double>{40000, 50000, 20000, 4000, 1000, 100}));
-  EXPECT_EQ(Parents(robot), (std::vector<int>{-1, 0, 1, 2, 3, 4, 5}));
+  EXPECT_EQ(test::Parents(robot), (std::vector<int>{-1, 0, 1, 2, 3, 4, 5}));
   // automass on the 5 cm sphere (mass 0.1): a thin shell has I = 2/3 m r^2 (a solid would
   // have 2/5). The 960-facet tessellation lies inside the sphere: its moments fall 1.2 % short.
   const core::LinkDesc& tool = robot.links[6];
@@ -203,8 +191,8 @@ TEST(RobFile, KlamptDefaults) {
       "        1 0 0 0 1 0 0 0 1 0 0 1\n");
   ASSERT_TRUE(loaded->ok) << loaded->diagnostics.FormatAll();
   const core::RobotDesc& robot = loaded->robot;
-  EXPECT_EQ(LinkNames(robot), (std::vector<std::string>{"Link 0", "Link 1"}));
-  EXPECT_EQ(Parents(robot), (std::vector<int>{-1, 0}));
+  EXPECT_EQ(test::LinkNames(robot), (std::vector<std::string>{"Link 0", "Link 1"}));
+  EXPECT_EQ(test::Parents(robot), (std::vector<int>{-1, 0}));
   for (const core::LinkDesc& link : robot.links) {
     EXPECT_EQ(link.axis_type, core::LinkJointAxis::kRevolute);
     EXPECT_EQ(link.axis, core::Vec3::UnitZ());
@@ -350,9 +338,9 @@ TEST(RobFile, MountsARobotWithAPrefix) {
   auto loaded = Load(test::DataPath("robots/arm.rob"));
   ASSERT_TRUE(loaded->ok) << loaded->diagnostics.FormatAll();
   const core::RobotDesc& robot = loaded->robot;
-  EXPECT_EQ(LinkNames(robot),
+  EXPECT_EQ(test::LinkNames(robot),
             (std::vector<std::string>{"base", "arm", "hand:palm", "hand:finger"}));
-  EXPECT_EQ(Parents(robot), (std::vector<int>{-1, 0, 1, 2}));
+  EXPECT_EQ(test::Parents(robot), (std::vector<int>{-1, 0, 1, 2}));
   // the mount transform (90 degrees about z, 0.6 up) applies to the sub-robot's root
   const core::Pose& palm = robot.links[2].parent_transform;
   EXPECT_EQ(palm.translation(), core::Vec3(0, 0, 0.7));
@@ -387,7 +375,7 @@ TEST(RobFile, MountingMergesAnExplicitSelfCollisionList) {
   // own pair, then across: link 0 with the palm (the palm sits on link 1, and the finger
   // has no geometry)
   EXPECT_EQ(loaded->robot.self_collision, (std::vector<std::pair<int, int>>{{0, 1}, {0, 2}}));
-  EXPECT_EQ(LinkNames(loaded->robot)[2], "palm");
+  EXPECT_EQ(test::LinkNames(loaded->robot)[2], "palm");
 }
 
 TEST(RobFile, SelfCollisionPairsByNameOrIndex) {

@@ -28,18 +28,6 @@ std::unique_ptr<LoadedRobot> LoadText(const std::string& text, std::string* path
   return Load(file);
 }
 
-std::vector<std::string> LinkNames(const core::RobotDesc& robot) {
-  std::vector<std::string> names;
-  for (const core::LinkDesc& link : robot.links) names.push_back(link.name);
-  return names;
-}
-
-std::vector<int> Parents(const core::RobotDesc& robot) {
-  std::vector<int> parents;
-  for (const core::LinkDesc& link : robot.links) parents.push_back(link.parent);
-  return parents;
-}
-
 TEST(UrdfFile, Mirobot) {
   const std::string path = test::WorldsPath("klampt/robots/mirobot.urdf");
   auto loaded = Load(path);
@@ -51,9 +39,9 @@ TEST(UrdfFile, Mirobot) {
   const core::RobotDesc& robot = loaded->robot;
   EXPECT_EQ(robot.name, "mirobot");
   // the "world" root is the fixed frame: 8 URDF links give 7 robot links
-  EXPECT_EQ(LinkNames(robot), (std::vector<std::string>{"base_link", "Link1", "Link2", "Link3",
-                                                        "Link4", "Link5", "Link6"}));
-  EXPECT_EQ(Parents(robot), (std::vector<int>{-1, 0, 1, 2, 3, 4, 5}));
+  EXPECT_EQ(test::LinkNames(robot), (std::vector<std::string>{"base_link", "Link1", "Link2",
+                                                              "Link3", "Link4", "Link5", "Link6"}));
+  EXPECT_EQ(test::Parents(robot), (std::vector<int>{-1, 0, 1, 2, 3, 4, 5}));
   ASSERT_EQ(robot.joints.size(), 7u);
   EXPECT_EQ(robot.joints[0].type, core::JointType::kWeld);
   for (int i = 1; i < 7; ++i) EXPECT_EQ(robot.joints[i].type, core::JointType::kNormal);
@@ -105,11 +93,12 @@ TEST(UrdfFile, EveryJointTypePrimitivesAndPackages) {
   const core::RobotDesc& robot = loaded->robot;
   // depth first, children in urdfdom's order (by joint name): free, shoulder, table; slider,
   // wheel
-  EXPECT_EQ(LinkNames(robot), (std::vector<std::string>{
-                                  "base", "free_base0", "free_base1", "free_base2", "free_base3",
-                                  "free_base4", "drone", "upper", "slide", "finger_link",
-                                  "wheel_link", "table_base0", "table_base1", "puck"}));
-  EXPECT_EQ(Parents(robot), (std::vector<int>{-1, 0, 1, 2, 3, 4, 5, 0, 7, 8, 7, 0, 11, 12}));
+  EXPECT_EQ(
+      test::LinkNames(robot),
+      (std::vector<std::string>{"base", "free_base0", "free_base1", "free_base2", "free_base3",
+                                "free_base4", "drone", "upper", "slide", "finger_link",
+                                "wheel_link", "table_base0", "table_base1", "puck"}));
+  EXPECT_EQ(test::Parents(robot), (std::vector<int>{-1, 0, 1, 2, 3, 4, 5, 0, 7, 8, 7, 0, 11, 12}));
   ASSERT_EQ(robot.joints.size(), 7u);
   const std::vector<std::vector<int>> joints = {{0, -1}, {6, 0},   {7, -1}, {8, -1},
                                                 {9, -1}, {10, -1}, {13, 0}};
@@ -220,7 +209,7 @@ TEST(UrdfFile, ARootOtherThanTheWorldFloats) {
   ASSERT_TRUE(loaded->ok) << loaded->diagnostics.FormatAll();
   const core::RobotDesc& robot = loaded->robot;
   // Klamp't's floating base: x, y, z, yaw, pitch virtual links; the body itself is the roll
-  EXPECT_EQ(LinkNames(robot),
+  EXPECT_EQ(test::LinkNames(robot),
             (std::vector<std::string>{"base0", "base1", "base2", "base3", "base4", "body", "arm"}));
   ASSERT_EQ(robot.joints.size(), 2u);
   EXPECT_EQ(robot.joints[0].type, core::JointType::kFloating);

@@ -8,23 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/common/test_support.h"
+
 namespace lamina::core {
 namespace {
-
-// Every undirected edge is used by exactly two triangles, once in each direction (closed
-// and consistently oriented).
-bool IsClosedAndConsistent(const TriangleMesh& mesh) {
-  std::map<std::pair<int, int>, int> directed;
-  for (const Eigen::Vector3i& t : mesh.triangles) {
-    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
-  }
-  for (const auto& [edge, count] : directed) {
-    if (count != 1) return false;
-    const auto reverse = directed.find({edge.second, edge.first});
-    if (reverse == directed.end() || reverse->second != 1) return false;
-  }
-  return !directed.empty();
-}
 
 double SignedVolume(const TriangleMesh& mesh) {
   double volume = 0.0;
@@ -59,7 +46,7 @@ TEST_P(TessellatedPrimitive, ClosedOutwardAndPositiveVolume) {
   for (int segments : {4, 7, 16, 33}) {
     const TriangleMesh mesh = Tessellate(GetParam(), segments);
     SCOPED_TRACE(::testing::Message() << GetParam().TypeName() << " segments " << segments);
-    EXPECT_TRUE(IsClosedAndConsistent(mesh));
+    EXPECT_TRUE(lamina::test::IsClosedAndConsistent(mesh));
     EXPECT_GT(SignedVolume(mesh), 0.0);
     EXPECT_EQ(InwardFacingTriangles(mesh, GetParam().pose.translation()), 0);
   }
