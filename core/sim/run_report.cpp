@@ -20,19 +20,36 @@ double RealTimeFactor(const Simulator& simulator, const RunTiming& timing) {
   return timing.wall_time > 0.0 ? simulator.time() / timing.wall_time : 0.0;
 }
 
+// seconds per part of the simulation (see SimTimeSplit)
+ordered_json TimeSplit(const SimTimeSplit& split) {
+  return {{"broad_phase", split.broad_phase},
+          {"contact_generation", split.contact_generation},
+          {"clustering", split.clustering},
+          {"solver", split.solver},
+          {"other", split.other}};
+}
+
+double Percent(double part, double total) {
+  return total > 0.0 ? 100.0 * part / total : 0.0;
+}
+
 }  // namespace
 
 std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
   const SimStatistics& stats = simulator.statistics();
-  ordered_json out = {{"time", simulator.time()},
-                      {"wall_time", timing.wall_time},
-                      {"real_time_factor", RealTimeFactor(simulator, timing)},
-                      {"steps", stats.steps},
-                      {"status", StepStatusName(stats.worst_status)},
-                      {"rollbacks", stats.rollbacks},
-                      {"instability_corrections", 0},
-                      {"max_penetration", stats.max_penetration},
-                      {"max_contacts", stats.max_contacts_in_step}};
+  ordered_json out = {
+      {"time", simulator.time()},
+      {"wall_time", timing.wall_time},
+      {"real_time_factor", RealTimeFactor(simulator, timing)},
+      {"steps", stats.steps},
+      {"status", StepStatusName(stats.worst_status)},
+      {"rollbacks", stats.rollbacks},
+      {"instability_corrections", stats.instability_corrections},
+      {"max_penetration", stats.max_penetration},
+      {"max_contacts", stats.max_contacts_in_step},
+      {"mean_contacts",
+       stats.steps > 0 ? static_cast<double>(stats.contact_joints) / stats.steps : 0.0},
+      {"time_split", TimeSplit(stats.time_split)}};
   if (!stats.error.empty()) out["error"] = stats.error;
   ordered_json objects = ordered_json::array();
   for (int i = 0; i < simulator.object_count(); ++i) {
@@ -58,8 +75,22 @@ std::string RunReportText(const Simulator& simulator, const RunTiming& timing) {
                 simulator.time(), stats.steps, timing.wall_time, RealTimeFactor(simulator, timing),
                 StepStatusName(stats.worst_status));
   out << line;
-  std::snprintf(line, sizeof(line), "max penetration %.6g m, max contacts %d\n",
-                stats.max_penetration, stats.max_contacts_in_step);
+  std::snprintf(line, sizeof(line),
+                "rollbacks %ld, instability corrections %ld, max penetration %.6g m\n",
+                stats.rollbacks, stats.instability_corrections, stats.max_penetration);
+  out << line;
+  std::snprintf(line, sizeof(line), "contacts: max %d per step, mean %.3g per step\n",
+                stats.max_contacts_in_step,
+                stats.steps > 0 ? static_cast<double>(stats.contact_joints) / stats.steps : 0.0);
+  out << line;
+  const SimTimeSplit& split = stats.time_split;
+  const double total = split.total();
+  std::snprintf(line, sizeof(line),
+                "time split: broad phase %.1f%%, contact generation %.1f%%, clustering %.1f%%, "
+                "solver %.1f%%, other %.1f%%\n",
+                Percent(split.broad_phase, total), Percent(split.contact_generation, total),
+                Percent(split.clustering, total), Percent(split.solver, total),
+                Percent(split.other, total));
   out << line;
   if (!stats.error.empty()) out << "error: " << stats.error << "\n";
   for (int i = 0; i < simulator.object_count(); ++i) {

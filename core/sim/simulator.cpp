@@ -7,14 +7,24 @@
 
 #include "core/contact/contact_clustering.h"
 #include "core/contact/surface_blend.h"
+#include "core/geometry/shrink.h"
+#include "core/sim/energy_guard.h"
 #include "core/sim/ode_handle.h"
 
 namespace lamina::core {
 
 namespace {
 
+void RequireFinite(bool finite, const char* what) {
+  if (!finite) throw std::invalid_argument(std::string(what) + " must be finite");
+}
+
 // contacts closing slower than this do not bounce, so resting bodies do not chatter (m/s)
 constexpr double kBounceVelocityThreshold = 0.01;
+// a hard contact pushes an overlap of the boundary layer out no faster than this (m/s): ODE's
+// ERP alone would turn a 0.6 mm overlap into a 0.57 m/s rebound within one 1 ms step (ERP 0.95)
+constexpr double kMaxCorrectionSpeed = 0.01;
+constexpr double kHardContactCfm = 1e-9;
 // contacts closer than this (or than the pair's padding sum) count as one point (m)
 constexpr double kMinimumMergeRadius = 1e-4;
 // sliding slower than this keeps ODE's default friction directions (m/s)
@@ -36,10 +46,6 @@ void SetBodyRotation(dBodyID body, const Mat3& rotation) {
   dBodySetQuaternion(body, ode_q);
 }
 
-bool AabbsOverlap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) {
-  return !a.isEmpty() && !b.isEmpty() && a.intersects(b);
-}
-
 // bounds of `geometry` at `pose`, grown by `padding` on every side
 Eigen::AlignedBox3d WorldBounds(const CollisionGeometry& geometry, const Pose& pose,
                                 double padding) {
@@ -56,6 +62,11 @@ Eigen::AlignedBox3d WorldBounds(const CollisionGeometry& geometry, const Pose& p
   world.min().array() -= grow;
   world.max().array() += grow;
   return world;
+}
+
+bool BoundsOverlapInYZ(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) {
+  return a.min().y() <= b.max().y() && b.min().y() <= a.max().y() && a.min().z() <= b.max().z() &&
+         b.min().z() <= a.max().z();
 }
 
 }  // namespace
@@ -76,16 +87,32 @@ const char* StepStatusName(StepStatus status) {
   return "error";
 }
 
-struct Simulator::ObjectBody {
-  dBodyID body = nullptr;
+struct Simulator::BodyRecord {
+  WorldId::Kind kind = WorldId::Kind::kInvalid;
+  int index = -1;          ///< terrain or object index
+  dBodyID body = nullptr;  ///< null for static bodies (terrains) and ids without a body
   std::shared_ptr<const CollisionGeometry> geometry;
-  Vec3 com = Vec3::Zero();     ///< in the object frame
-  Eigen::AlignedBox3d bounds;  ///< padded world bounds, refreshed every sub-step
+  Vec3 com = Vec3::Zero();  ///< in the body frame
+  double mass = 0.0;
+  Mat3 inertia = Mat3::Zero();  ///< about the COM, body axes
+  bool enabled = true;
+  bool dynamic = true;         ///< false: kinematic
+  Vec3 force = Vec3::Zero();   ///< world, at the COM, for the sub-steps of the next Simulate
+  Vec3 torque = Vec3::Zero();  ///< world
+  Eigen::AlignedBox3d bounds;  ///< padded world bounds
+  double energy = -1.0;        ///< kinetic energy after the last accepted step; < 0 unknown
+
+  bool moves_freely() const { return body != nullptr && enabled && dynamic; }
 };
 
-struct Simulator::TerrainBody {
-  std::shared_ptr<const CollisionGeometry> geometry;
-  Eigen::AlignedBox3d bounds;  ///< padded world bounds
+/// ODE's force readout of one contact joint of the current step.
+struct Simulator::JointFeedbackSlot {
+  dJointFeedback ode{};
+  dJointFeedback core{};  ///< the rigid-core joint under a soft contact (has_core)
+  bool has_core = false;
+  int record = -1;    ///< index in feedback_
+  bool flip = false;  ///< the joint's first body is the record's second
+  FeedbackContact contact;
 };
 
 Simulator::Simulator(const WorldDesc& world, SolverSettings solver)
@@ -106,37 +133,67 @@ Simulator::Simulator(const WorldDesc& world, SolverSettings solver)
 
 Simulator::~Simulator() = default;
 
+int Simulator::body_count() const {
+  return static_cast<int>(bodies_.size());
+}
+
 int Simulator::object_count() const {
-  return static_cast<int>(objects_.size());
+  return static_cast<int>(object_ids_.size());
 }
 
 void Simulator::BuildBodies() {
-  for (const TerrainDesc& terrain : world_.terrains) {
-    TerrainBody body;
-    body.geometry = geometry_cache_.Get(terrain.geometry);
-    if (body.geometry) {
-      body.bounds = WorldBounds(*body.geometry, Pose::Identity(), terrain.sim.padding);
+  bodies_.resize(world_.IdCount());
+  for (int id = 0; id < world_.IdCount(); ++id) {
+    const WorldId resolved = world_.Resolve(id);
+    BodyRecord& body = bodies_[id];
+    body.kind = resolved.kind;
+    if (resolved.kind == WorldId::Kind::kTerrain) {
+      body.index = resolved.index;
+      body.dynamic = false;
+      RebuildCollisionGeometry(id);
+    } else if (resolved.kind == WorldId::Kind::kRigidObject) {
+      body.index = resolved.index;
+      object_ids_.push_back(id);
+      const RigidObjectDesc& object = world_.objects[body.index];
+      body.body = dBodyCreate(ode_world_.get());
+      // exact orientation update for the body's angular velocity (ODE's default is first order)
+      dBodySetFiniteRotationMode(body.body, 1);
+      body.com = object.com;
+      dMass mass;
+      const Mat3& I = object.inertia;
+      dMassSetParameters(&mass, object.mass, 0, 0, 0, I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2),
+                         I(1, 2));
+      if (!dMassCheck(&mass)) {
+        // ODE rejects zero mass or an invalid inertia; keep the body usable and tiny
+        dMassSetSphereTotal(&mass, std::max(object.mass, 1e-3), 0.01);
+      }
+      dBodySetMass(body.body, &mass);
+      body.mass = mass.mass;
+      body.inertia << mass.I[0], mass.I[1], mass.I[2], mass.I[4], mass.I[5], mass.I[6], mass.I[8],
+          mass.I[9], mass.I[10];
+      RebuildCollisionGeometry(id);
     }
-    terrains_.push_back(std::move(body));
   }
-  for (const RigidObjectDesc& object : world_.objects) {
-    ObjectBody body;
-    body.body = dBodyCreate(ode_world_.get());
-    // exact orientation update for the body's angular velocity (ODE's default is first order)
-    dBodySetFiniteRotationMode(body.body, 1);
-    body.geometry = geometry_cache_.Get(object.geometry);
-    body.com = object.com;
-    dMass mass;
-    const Mat3& I = object.inertia;
-    dMassSetParameters(&mass, object.mass, 0, 0, 0, I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2),
-                       I(1, 2));
-    if (!dMassCheck(&mass)) {
-      // ODE rejects zero mass or an invalid inertia; keep the body usable and tiny
-      dMassSetSphereTotal(&mass, std::max(object.mass, 1e-3), 0.01);
-    }
-    dBodySetMass(body.body, &mass);
-    objects_.push_back(std::move(body));
+}
+
+void Simulator::RebuildCollisionGeometry(int id) {
+  BodyRecord& body = bodies_[id];
+  const GeometryDesc* desc = nullptr;
+  if (body.kind == WorldId::Kind::kTerrain) desc = &world_.terrains[body.index].geometry;
+  if (body.kind == WorldId::Kind::kRigidObject) desc = &world_.objects[body.index].geometry;
+  if (desc == nullptr) return;
+  const BodySimParams& sim = sim_params(id);
+  if (sim.preshrink != Preshrink::kNone && sim.padding > 0.0) {
+    // shrunk geometries are the body's own: a shrunk mesh is new for every padding, so it cannot
+    // be a key of the shared cache
+    body.geometry = CollisionGeometry::Build(ShrinkGeometry(*desc, sim.padding, &diagnostics_));
+  } else {
+    body.geometry = geometry_cache_.Get(*desc);
   }
+  if (body.geometry && body.kind == WorldId::Kind::kTerrain) {
+    body.bounds = WorldBounds(*body.geometry, Pose::Identity(), sim.padding);
+  }
+  contacts_current_ = false;
 }
 
 void Simulator::ApplyInitialState() {
@@ -144,11 +201,17 @@ void Simulator::ApplyInitialState() {
     SetObjectPose(i, world_.objects[i].pose);
     SetObjectVelocity(i, world_.objects[i].initial_velocity);
   }
+  ForgetEnergies();
 }
 
 void Simulator::Reset() {
   time_ = 0.0;
   statistics_ = SimStatistics();
+  for (BodyRecord& body : bodies_) {
+    body.force.setZero();
+    body.torque.setZero();
+  }
+  for (ContactFeedbackRecord& record : feedback_) record.BeginCall();
   ApplyInitialState();
 }
 
@@ -161,37 +224,191 @@ void Simulator::SetGravity(const Vec3& gravity) {
   dWorldSetGravity(ode_world_.get(), gravity.x(), gravity.y(), gravity.z());
 }
 
-Pose Simulator::GetObjectPose(int object) const {
-  const ObjectBody& body = objects_[object];
+void Simulator::ForgetEnergies() {
+  for (BodyRecord& body : bodies_) body.energy = -1.0;
+}
+
+// ---- body access ------------------------------------------------------------------------
+
+Simulator::BodyRecord* Simulator::record(int id) {
+  return id >= 0 && id < body_count() ? &bodies_[id] : nullptr;
+}
+
+const Simulator::BodyRecord* Simulator::record(int id) const {
+  return id >= 0 && id < body_count() ? &bodies_[id] : nullptr;
+}
+
+const BodySimParams& Simulator::sim_params(int id) const {
+  const BodyRecord& body = bodies_[id];
+  return body.kind == WorldId::Kind::kTerrain ? world_.terrains[body.index].sim
+                                              : world_.objects[body.index].sim;
+}
+
+BodySimParams* Simulator::mutable_sim_params(int id) {
+  const BodyRecord* body = record(id);
+  if (body == nullptr) return nullptr;
+  if (body->kind == WorldId::Kind::kTerrain) return &world_.terrains[body->index].sim;
+  if (body->kind == WorldId::Kind::kRigidObject) return &world_.objects[body->index].sim;
+  return nullptr;
+}
+
+Pose Simulator::GetBodyPose(const BodyRecord& body) const {
   Pose pose = Pose::Identity();
+  if (body.body == nullptr) return pose;
   pose.linear() = ToMat3(dBodyGetRotation(body.body));
   pose.translation() = ToVec3(dBodyGetPosition(body.body)) - pose.linear() * body.com;
   return pose;
 }
 
-void Simulator::SetObjectPose(int object, const Pose& pose) {
+void Simulator::SetBodyPose(const BodyRecord& body, const Pose& pose) {
+  RequireFinite(pose.matrix().allFinite(), "a body pose");
+  if (body.body == nullptr) return;
   contacts_current_ = false;
-  const ObjectBody& body = objects_[object];
   const Vec3 com_world = pose * body.com;
   dBodySetPosition(body.body, com_world.x(), com_world.y(), com_world.z());
   SetBodyRotation(body.body, pose.linear());
 }
 
-Twist Simulator::GetObjectVelocity(int object) const {
-  const ObjectBody& body = objects_[object];
+Twist Simulator::GetBodyVelocity(const BodyRecord& body) const {
+  if (body.body == nullptr) return {};
   const Vec3 angular = ToVec3(dBodyGetAngularVel(body.body));
-  const Vec3 com_offset = GetObjectPose(object).linear() * body.com;
+  const Vec3 com_offset = ToMat3(dBodyGetRotation(body.body)) * body.com;
   // v_origin = v_com - w x (com - origin)
   return {ToVec3(dBodyGetLinearVel(body.body)) - angular.cross(com_offset), angular};
 }
 
-void Simulator::SetObjectVelocity(int object, const Twist& velocity) {
-  const ObjectBody& body = objects_[object];
-  const Vec3 com_offset = GetObjectPose(object).linear() * body.com;
+void Simulator::SetBodyVelocity(const BodyRecord& body, const Twist& velocity) {
+  RequireFinite(velocity.linear.allFinite() && velocity.angular.allFinite(), "a body velocity");
+  if (body.body == nullptr) return;
+  const Vec3 com_offset = ToMat3(dBodyGetRotation(body.body)) * body.com;
   const Vec3 com_velocity = velocity.linear + velocity.angular.cross(com_offset);
   dBodySetLinearVel(body.body, com_velocity.x(), com_velocity.y(), com_velocity.z());
   dBodySetAngularVel(body.body, velocity.angular.x(), velocity.angular.y(), velocity.angular.z());
 }
+
+Pose Simulator::GetObjectPose(int object) const {
+  return GetBodyPose(bodies_[object_ids_[object]]);
+}
+
+void Simulator::SetObjectPose(int object, const Pose& pose) {
+  SetBodyPose(bodies_[object_ids_[object]], pose);
+  bodies_[object_ids_[object]].energy = -1.0;
+}
+
+Twist Simulator::GetObjectVelocity(int object) const {
+  return GetBodyVelocity(bodies_[object_ids_[object]]);
+}
+
+void Simulator::SetObjectVelocity(int object, const Twist& velocity) {
+  SetBodyVelocity(bodies_[object_ids_[object]], velocity);
+  bodies_[object_ids_[object]].energy = -1.0;
+}
+
+bool Simulator::BodyEnabled(int id) const {
+  const BodyRecord* body = record(id);
+  return body != nullptr && body->enabled;
+}
+
+void Simulator::SetBodyEnabled(int id, bool enabled) {
+  BodyRecord* body = record(id);
+  if (body == nullptr || body->enabled == enabled) return;
+  body->enabled = enabled;
+  body->energy = -1.0;
+  contacts_current_ = false;
+  if (body->body == nullptr) return;
+  if (enabled) {
+    dBodyEnable(body->body);
+  } else {
+    dBodyDisable(body->body);
+  }
+}
+
+bool Simulator::BodyDynamic(int id) const {
+  const BodyRecord* body = record(id);
+  return body != nullptr && body->body != nullptr && body->dynamic;
+}
+
+void Simulator::SetBodyDynamic(int id, bool dynamic) {
+  BodyRecord* body = record(id);
+  if (body == nullptr || body->body == nullptr || body->dynamic == dynamic) return;
+  body->dynamic = dynamic;
+  body->energy = -1.0;
+  contacts_current_ = false;  // which pairs may collide changed
+  if (dynamic) {
+    dBodySetDynamic(body->body);
+  } else {
+    dBodySetKinematic(body->body);
+  }
+}
+
+Pose Simulator::BodyPose(int id) const {
+  const BodyRecord* body = record(id);
+  return body != nullptr ? GetBodyPose(*body) : Pose::Identity();
+}
+
+void Simulator::SetBodyPose(int id, const Pose& pose) {
+  BodyRecord* body = record(id);
+  if (body == nullptr) return;
+  SetBodyPose(*body, pose);
+  body->energy = -1.0;
+}
+
+Twist Simulator::BodyVelocity(int id) const {
+  const BodyRecord* body = record(id);
+  return body != nullptr ? GetBodyVelocity(*body) : Twist{};
+}
+
+void Simulator::SetBodyVelocity(int id, const Twist& velocity) {
+  BodyRecord* body = record(id);
+  if (body == nullptr) return;
+  SetBodyVelocity(*body, velocity);
+  body->energy = -1.0;
+}
+
+void Simulator::SetBodyPadding(int id, double padding) {
+  if (!(padding >= 0.0) || !std::isfinite(padding)) {
+    throw std::invalid_argument("a padding must be finite and >= 0");
+  }
+  BodySimParams* params = mutable_sim_params(id);
+  if (params == nullptr) return;
+  params->padding = padding;
+  RebuildCollisionGeometry(id);
+}
+
+void Simulator::AddBodyForce(int id, const Vec3& force, const Vec3& point) {
+  RequireFinite(force.allFinite() && point.allFinite(), "an applied force");
+  BodyRecord* body = record(id);
+  if (body == nullptr || body->body == nullptr) return;
+  const Vec3 com = ToVec3(dBodyGetPosition(body->body));
+  body->force += force;
+  body->torque += (point - com).cross(force);
+}
+
+void Simulator::AddBodyWrench(int id, const Vec3& force, const Vec3& torque) {
+  RequireFinite(force.allFinite() && torque.allFinite(), "an applied wrench");
+  BodyRecord* body = record(id);
+  if (body == nullptr || body->body == nullptr) return;
+  body->force += force;
+  body->torque += torque;
+}
+
+void Simulator::UpdateWorld(WorldDesc* world) const {
+  if (world->objects.size() != world_.objects.size() ||
+      world->terrains.size() != world_.terrains.size()) {
+    throw std::invalid_argument("UpdateWorld: the world does not match the simulated one");
+  }
+  world->settings = world_.settings;
+  for (size_t t = 0; t < world_.terrains.size(); ++t)
+    world->terrains[t].sim = world_.terrains[t].sim;
+  for (int i = 0; i < object_count(); ++i) {
+    RigidObjectDesc& object = world->objects[i];
+    object.sim = world_.objects[i].sim;
+    object.pose = GetObjectPose(i);
+    object.initial_velocity = GetObjectVelocity(i);
+  }
+}
+
+// ---- state ------------------------------------------------------------------------------
 
 SimState Simulator::GetState() const {
   SimState state;
@@ -201,9 +418,9 @@ SimState Simulator::GetState() const {
 
 void Simulator::CaptureState(SimState* state) const {
   state->time = time_;
-  state->objects.resize(objects_.size());
-  for (size_t i = 0; i < objects_.size(); ++i) {
-    const dBodyID body = objects_[i].body;
+  state->objects.resize(object_ids_.size());
+  for (size_t i = 0; i < object_ids_.size(); ++i) {
+    const dBodyID body = bodies_[object_ids_[i]].body;
     const dReal* q = dBodyGetQuaternion(body);
     state->objects[i] = {ToVec3(dBodyGetPosition(body)), Eigen::Quaterniond(q[0], q[1], q[2], q[3]),
                          ToVec3(dBodyGetLinearVel(body)), ToVec3(dBodyGetAngularVel(body))};
@@ -211,11 +428,16 @@ void Simulator::CaptureState(SimState* state) const {
 }
 
 void Simulator::SetState(const SimState& state) {
+  RestoreState(state);
+  ForgetEnergies();
+}
+
+void Simulator::RestoreState(const SimState& state) {
   contacts_current_ = false;
   time_ = state.time;
-  for (size_t i = 0; i < objects_.size() && i < state.objects.size(); ++i) {
+  for (size_t i = 0; i < object_ids_.size() && i < state.objects.size(); ++i) {
     const BodyState& s = state.objects[i];
-    dBodyID body = objects_[i].body;
+    dBodyID body = bodies_[object_ids_[i]].body;
     dBodySetPosition(body, s.com_position.x(), s.com_position.y(), s.com_position.z());
     const dQuaternion q = {s.orientation.w(), s.orientation.x(), s.orientation.y(),
                            s.orientation.z()};
@@ -226,8 +448,13 @@ void Simulator::SetState(const SimState& state) {
   }
 }
 
+// ---- stepping ---------------------------------------------------------------------------
+
 StepStatus Simulator::Simulate(double dt) {
   if (statistics_.worst_status == StepStatus::kError) return StepStatus::kError;
+  Stopwatch total;
+  const SimTimeSplit before = statistics_.time_split;
+  for (ContactFeedbackRecord& record : feedback_) record.BeginCall();
   StepStatus worst = StepStatus::kNormal;
   double remaining = dt;
   while (remaining > 0.0) {
@@ -239,7 +466,15 @@ StepStatus Simulator::Simulate(double dt) {
     if (status == StepStatus::kError) break;
     remaining -= step;
   }
+  // applied forces last for one call
+  for (BodyRecord& body : bodies_) {
+    body.force.setZero();
+    body.torque.setZero();
+  }
   statistics_.worst_status = std::max(statistics_.worst_status, worst);
+  SimTimeSplit& split = statistics_.time_split;
+  const double measured = split.total() - before.total();
+  split.other += std::max(0.0, total.Lap() - measured);
   return worst;
 }
 
@@ -249,19 +484,32 @@ StepStatus Simulator::Simulate(double dt) {
 StepStatus Simulator::Step(double step) {
   StepStatus status = StepStatus::kNormal;
   if (!contacts_current_) DetectContacts();
+  MeasureUnknownEnergies();
   double remaining = step;
   double h = step;
+  bool recovered = false;
   while (remaining > 0.0) {
     h = std::min(h, remaining);
     CaptureState(&rollback_state_);  // reuses its storage: no allocation per sub-step
-    if (!Integrate(h)) return StepStatus::kError;
+    const IntegrateResult result = Integrate(h);
+    if (result == IntegrateResult::kOdeError) return StepStatus::kError;
+    if (result == IntegrateResult::kNonFinite) {
+      if (recovered || !RecoverFromNonFiniteState()) {
+        statistics_.error = "a body state became non-finite at t = " + std::to_string(time_) + " s";
+        statistics_.worst_status = StepStatus::kError;
+        return StepStatus::kError;
+      }
+      recovered = true;
+      status = std::max(status, StepStatus::kUnstable);
+      continue;
+    }
     // keep the contacts of the state before the step in case it is rolled back
     std::swap(pairs_, saved_pairs_);
     DetectContacts();
     bool unreliable = false;
     if (world_.settings.adaptive_time_stepping && NeedsRollback(saved_pairs_, &unreliable) &&
         h / 2 >= kMinimumAdaptiveStep) {
-      SetState(rollback_state_);
+      RestoreState(rollback_state_);
       std::swap(pairs_, saved_pairs_);
       contacts_current_ = true;
       h /= 2;
@@ -270,20 +518,126 @@ StepStatus Simulator::Step(double step) {
       continue;
     }
     if (unreliable) status = std::max(status, StepStatus::kContactUnreliable);
-    RecordAcceptedContacts();
-    time_ += h;
+    if (CorrectInstabilities(h)) status = std::max(status, StepStatus::kUnstable);
+    AcceptStep(h);
     remaining -= h;
-    ++statistics_.steps;
   }
   return status;
+}
+
+void Simulator::AcceptStep(double step) {
+  RecordAcceptedContacts();
+  RecordFeedback(step);
+  time_ += step;
+  ++statistics_.steps;
+}
+
+// a step left some body with a non-finite state: go back to the state before it and stop the
+// bodies that blew up (their velocities become zero); false if the state before was not finite
+bool Simulator::RecoverFromNonFiniteState() {
+  std::vector<bool> blown(object_ids_.size(), false);
+  for (size_t i = 0; i < object_ids_.size(); ++i) {
+    const dBodyID body = bodies_[object_ids_[i]].body;
+    const Vec3 p = ToVec3(dBodyGetPosition(body));
+    const Vec3 v = ToVec3(dBodyGetLinearVel(body));
+    const Vec3 w = ToVec3(dBodyGetAngularVel(body));
+    blown[i] = !p.allFinite() || !v.allFinite() || !w.allFinite();
+  }
+  RestoreState(rollback_state_);
+  if (!StateIsFinite()) return false;
+  for (size_t i = 0; i < object_ids_.size(); ++i) {
+    if (!blown[i]) continue;
+    BodyRecord& body = bodies_[object_ids_[i]];
+    dBodySetLinearVel(body.body, 0, 0, 0);
+    dBodySetAngularVel(body.body, 0, 0, 0);
+    body.energy = 0.0;
+    ++statistics_.instability_corrections;
+  }
+  contacts_current_ = true;  // positions are those of the contacts found before the step
+  return true;
+}
+
+// the energy of a body whose state was just set is taken from the state it was given, so that the
+// set itself is not mistaken for a blow-up while the step after it is still checked
+void Simulator::MeasureUnknownEnergies() {
+  for (BodyRecord& body : bodies_) {
+    if (body.energy >= 0.0 || !body.moves_freely()) continue;
+    body.energy = BodyKineticEnergy(body);
+  }
+}
+
+double Simulator::BodyKineticEnergy(const BodyRecord& body) const {
+  const Mat3 R = ToMat3(dBodyGetRotation(body.body));
+  return KineticEnergy(body.mass, R * body.inertia * R.transpose(),
+                       ToVec3(dBodyGetLinearVel(body.body)), ToVec3(dBodyGetAngularVel(body.body)));
+}
+
+// energy a body may gain from its contacts within one step without anything being wrong: the
+// position correction of its deepest overlap (at most ERP = 1: speed depth / h) and the spring
+// energy stored in a soft layer (½ k depth²)
+double Simulator::ContactEnergyAllowance(int id, double step) const {
+  double allowance = 0.0;
+  const BodyRecord& body = bodies_[id];
+  for (const ContactPair& pair : saved_pairs_) {
+    if (pair.a != id && pair.b != id) continue;
+    const double correction_speed = pair.max_depth / step;
+    allowance += 0.5 * body.mass * correction_speed * correction_speed;
+    const double k =
+        BlendSurfaces(sim_params(pair.a).surface, sim_params(pair.b).surface).stiffness;
+    if (std::isfinite(k)) allowance += 0.5 * k * pair.max_depth * pair.max_depth;
+  }
+  return allowance;
+}
+
+bool Simulator::CorrectInstabilities(double step) {
+  // bodies pushed by a kinematic body may gain any energy: leave them out of the check
+  std::vector<bool> pushed(bodies_.size(), false);
+  for (const ContactPair& pair : saved_pairs_) {
+    if (bodies_[pair.a].body && !bodies_[pair.a].dynamic) pushed[pair.b] = true;
+    if (bodies_[pair.b].body && !bodies_[pair.b].dynamic) pushed[pair.a] = true;
+  }
+  std::vector<BodyEnergySample> samples;
+  std::vector<int> checked;
+  for (size_t i = 0; i < object_ids_.size(); ++i) {
+    const int id = object_ids_[i];
+    BodyRecord& body = bodies_[id];
+    if (!body.moves_freely()) continue;
+    const Vec3 v = ToVec3(dBodyGetLinearVel(body.body));
+    const Vec3 w = ToVec3(dBodyGetAngularVel(body.body));
+    const double energy = BodyKineticEnergy(body);
+    const double before = body.energy;
+    body.energy = energy;
+    if (before < 0.0 || pushed[id]) continue;
+    const BodyState& start = rollback_state_.objects[i];
+    const Vec3 force = body.force + body.mass * world_.settings.gravity;
+    samples.push_back({body.mass, before, energy,
+                       ExternalWorkBound(force, body.torque, start.linear_velocity.norm(), v.norm(),
+                                         start.angular_velocity.norm(), w.norm(), step) +
+                           ContactEnergyAllowance(id, step)});
+    checked.push_back(id);
+  }
+  const std::vector<double> scales = InstabilityScales(samples);
+  for (size_t k = 0; k < scales.size(); ++k) {
+    if (scales[k] >= 1.0) continue;
+    BodyRecord& body = bodies_[checked[k]];
+    const Vec3 v = scales[k] * ToVec3(dBodyGetLinearVel(body.body));
+    const Vec3 w = scales[k] * ToVec3(dBodyGetAngularVel(body.body));
+    dBodySetLinearVel(body.body, v.x(), v.y(), v.z());
+    dBodySetAngularVel(body.body, w.x(), w.y(), w.z());
+    body.energy *= scales[k] * scales[k];
+    ++statistics_.instability_corrections;
+  }
+  return !scales.empty();
 }
 
 void Simulator::RecordAcceptedContacts() {
   int contacts = 0;
   for (const ContactPair& pair : pairs_) {
-    contacts += static_cast<int>(pair.contacts.size());
     statistics_.max_penetration = std::max(statistics_.max_penetration, pair.max_depth);
   }
+  // the joints of the accepted step came from the contacts before it
+  for (const ContactPair& pair : saved_pairs_) contacts += static_cast<int>(pair.contacts.size());
+  statistics_.contact_joints += contacts;
   statistics_.max_contacts_in_step = std::max(statistics_.max_contacts_in_step, contacts);
 }
 
@@ -308,9 +662,21 @@ bool Simulator::NeedsRollback(const std::vector<ContactPair>& before, bool* unre
   return rollback;
 }
 
-bool Simulator::Integrate(double step) {
+Simulator::IntegrateResult Simulator::Integrate(double step) {
+  Stopwatch watch;
+  IntegrateResult result = IntegrateResult::kOk;
   try {
+    size_t feedback_slots = 0;
+    if (!feedback_.empty()) {
+      for (const ContactPair& pair : pairs_) {
+        if (FindFeedback(pair.a, pair.b)) feedback_slots += pair.contacts.size();
+      }
+    }
+    // sized before any joint points into it
+    joint_feedback_.resize(feedback_slots);
+    next_feedback_slot_ = 0;
     for (const ContactPair& pair : pairs_) AddContactJoints(pair, step);
+    ApplyAccumulatedForces();
     if (solver_.type == SolverType::kQuickStep) {
       dWorldSetQuickStepNumIterations(ode_world_.get(), solver_.quick_step_iterations);
       dWorldQuickStep(ode_world_.get(), step);
@@ -322,22 +688,32 @@ bool Simulator::Integrate(double step) {
     dJointGroupEmpty(contact_group_.get());
     statistics_.error = error.what();
     statistics_.worst_status = StepStatus::kError;
-    return false;
+    result = IntegrateResult::kOdeError;
   }
+  statistics_.time_split.solver += watch.Lap();
   contacts_current_ = false;
-  if (!StateIsFinite()) {
-    statistics_.error = "a body state became non-finite at t = " + std::to_string(time_) + " s";
-    statistics_.worst_status = StepStatus::kError;
-    return false;
+  if (result == IntegrateResult::kOk && !StateIsFinite()) result = IntegrateResult::kNonFinite;
+  return result;
+}
+
+void Simulator::ApplyAccumulatedForces() {
+  for (const BodyRecord& body : bodies_) {
+    if (!body.moves_freely()) continue;
+    if (!body.force.isZero(0.0)) {
+      dBodyAddForce(body.body, body.force.x(), body.force.y(), body.force.z());
+    }
+    if (!body.torque.isZero(0.0)) {
+      dBodyAddTorque(body.body, body.torque.x(), body.torque.y(), body.torque.z());
+    }
   }
-  return true;
 }
 
 bool Simulator::StateIsFinite() const {
-  for (const ObjectBody& object : objects_) {
-    const dReal* p = dBodyGetPosition(object.body);
-    const dReal* v = dBodyGetLinearVel(object.body);
-    const dReal* w = dBodyGetAngularVel(object.body);
+  for (const BodyRecord& body : bodies_) {
+    if (body.body == nullptr) continue;
+    const dReal* p = dBodyGetPosition(body.body);
+    const dReal* v = dBodyGetLinearVel(body.body);
+    const dReal* w = dBodyGetAngularVel(body.body);
     for (int k = 0; k < 3; ++k) {
       if (!std::isfinite(p[k]) || !std::isfinite(v[k]) || !std::isfinite(w[k])) return false;
     }
@@ -345,43 +721,75 @@ bool Simulator::StateIsFinite() const {
   return true;
 }
 
+// ---- contacts ---------------------------------------------------------------------------
+
 void Simulator::DetectContacts() {
+  Stopwatch watch;
   pairs_.clear();
-  for (int i = 0; i < object_count(); ++i) {
-    ObjectBody& object = objects_[i];
-    if (!object.geometry) continue;
-    object.bounds = WorldBounds(*object.geometry, GetObjectPose(i), world_.objects[i].sim.padding);
-  }
-  for (int i = 0; i < object_count(); ++i) {
-    const ObjectBody& a = objects_[i];
-    if (!a.geometry) continue;
-    const Pose X_Wa = GetObjectPose(i);
-    for (int t = 0; t < static_cast<int>(terrains_.size()); ++t) {
-      const TerrainBody& terrain = terrains_[t];
-      if (!terrain.geometry || !AabbsOverlap(a.bounds, terrain.bounds)) continue;
-      AddPairContacts(i, -1 - t, *a.geometry, X_Wa, *terrain.geometry, Pose::Identity());
-    }
-    if (!world_.settings.rigid_object_collisions) continue;
-    for (int j = i + 1; j < object_count(); ++j) {
-      const ObjectBody& b = objects_[j];
-      if (!b.geometry || !AabbsOverlap(a.bounds, b.bounds)) continue;
-      AddPairContacts(i, j, *a.geometry, X_Wa, *b.geometry, GetObjectPose(j));
-    }
-  }
+  FindCandidatePairs();
+  statistics_.time_split.broad_phase += watch.Lap();
+  for (const auto& [first, second] : candidates_) AddPairContacts(first, second);
   contacts_current_ = true;
 }
 
-void Simulator::AddPairContacts(int a, int b, const CollisionGeometry& geometry_a, const Pose& X_Wa,
-                                const CollisionGeometry& geometry_b, const Pose& X_Wb) {
-  const BodySimParams& sim_a = world_.objects[a].sim;
-  const BodySimParams& sim_b = b >= 0 ? world_.objects[b].sim : world_.terrains[-1 - b].sim;
+bool Simulator::MayCollide(const BodyRecord& a, const BodyRecord& b) const {
+  // static and kinematic bodies do not push each other
+  if (!a.moves_freely() && !b.moves_freely()) return false;
+  if (a.kind == WorldId::Kind::kRigidObject && b.kind == WorldId::Kind::kRigidObject) {
+    return world_.settings.rigid_object_collisions;
+  }
+  return true;
+}
+
+// sweep and prune along x over the padded bounds; candidates come out sorted by id pair, so the
+// order of contact joints does not depend on where bodies are
+void Simulator::FindCandidatePairs() {
+  collidable_.clear();
+  for (int id = 0; id < body_count(); ++id) {
+    BodyRecord& body = bodies_[id];
+    if (!body.geometry || !body.enabled) continue;
+    if (body.body)
+      body.bounds = WorldBounds(*body.geometry, GetBodyPose(body), sim_params(id).padding);
+    if (body.bounds.isEmpty()) continue;
+    collidable_.push_back(id);
+  }
+  std::sort(collidable_.begin(), collidable_.end(), [&](int a, int b) {
+    const double ax = bodies_[a].bounds.min().x(), bx = bodies_[b].bounds.min().x();
+    return ax != bx ? ax < bx : a < b;
+  });
+  candidates_.clear();
+  for (size_t i = 0; i < collidable_.size(); ++i) {
+    const BodyRecord& a = bodies_[collidable_[i]];
+    for (size_t j = i + 1; j < collidable_.size(); ++j) {
+      const BodyRecord& b = bodies_[collidable_[j]];
+      if (b.bounds.min().x() > a.bounds.max().x()) break;
+      if (!BoundsOverlapInYZ(a.bounds, b.bounds) || !MayCollide(a, b)) continue;
+      candidates_.emplace_back(std::min(collidable_[i], collidable_[j]),
+                               std::max(collidable_[i], collidable_[j]));
+    }
+  }
+  std::sort(candidates_.begin(), candidates_.end());
+}
+
+void Simulator::AddPairContacts(int first, int second) {
+  // a is a body that moves (ODE attaches contact joints to it); normals point into a
+  int a = first, b = second;
+  if (bodies_[a].body == nullptr) std::swap(a, b);
+  const BodyRecord& body_a = bodies_[a];
+  const BodyRecord& body_b = bodies_[b];
+  const BodySimParams& sim_a = sim_params(a);
+  const BodySimParams& sim_b = sim_params(b);
+  Stopwatch watch;
   scratch_contacts_.clear();
-  Collide(geometry_a, X_Wa, sim_a.padding, geometry_b, X_Wb, sim_b.padding, &scratch_contacts_);
+  Collide(*body_a.geometry, GetBodyPose(body_a), sim_a.padding, *body_b.geometry,
+          GetBodyPose(body_b), sim_b.padding, &scratch_contacts_);
+  statistics_.time_split.contact_generation += watch.Lap();
   if (scratch_contacts_.empty()) return;
   ContactPair pair;
   pair.a = a;
   pair.b = b;
-  pair.tolerance = sim_a.padding + geometry_a.margin() + sim_b.padding + geometry_b.margin();
+  pair.tolerance =
+      sim_a.padding + body_a.geometry->margin() + sim_b.padding + body_b.geometry->margin();
   for (const Contact& contact : scratch_contacts_) {
     pair.max_depth = std::max(pair.max_depth, contact.depth);
     pair.penetrating = pair.penetrating || contact.penetrating;
@@ -390,18 +798,50 @@ void Simulator::AddPairContacts(int a, int b, const CollisionGeometry& geometry_
   ClusterContacts(world_.settings.max_contacts, kDefaultClusterNormalScale, &scratch_contacts_);
   pair.contacts = scratch_contacts_;
   pairs_.push_back(std::move(pair));
+  statistics_.time_split.clustering += watch.Lap();
+}
+
+// the depth that weighs a contact's share of its pair's stiffness: never quite zero, so that
+// every contact of the pair keeps a finite law
+double Simulator::ContactWeightDepth(const Contact& contact, const ContactPair& pair) {
+  return std::max(contact.depth, 1e-6 * pair.tolerance + 1e-12);
+}
+
+// the world's ERP, limited so that an overlap of `depth` is pushed out at most at
+// kMaxCorrectionSpeed
+double Simulator::HardContactErp(double depth, double step) const {
+  const double erp = world_.settings.erp;
+  if (depth <= 0.0) return erp;
+  return std::min(erp, kMaxCorrectionSpeed * step / depth);
 }
 
 void Simulator::AddContactJoints(const ContactPair& pair, double step) {
-  dBodyID body_a = objects_[pair.a].body;
-  dBodyID body_b = pair.b >= 0 ? objects_[pair.b].body : nullptr;
-  const SurfaceDesc& surface_b =
-      pair.b >= 0 ? world_.objects[pair.b].sim.surface : world_.terrains[-1 - pair.b].sim.surface;
-  const BlendedSurface surface = BlendSurfaces(world_.objects[pair.a].sim.surface, surface_b);
-  const SoftContactParams soft = SoftContact(surface.stiffness, surface.damping, step);
-  // a layer without stiffness or damping pushes with no force at all
-  if (soft.soft && !std::isfinite(soft.cfm)) return;
+  if (pair.contacts.empty()) return;
+  dBodyID body_a = bodies_[pair.a].body;
+  dBodyID body_b = bodies_[pair.b].body;
+  const BlendedSurface surface =
+      BlendSurfaces(sim_params(pair.a).surface, sim_params(pair.b).surface);
+  // the pair pushes with k times its penetration (its deepest overlap) and damps with c, however
+  // many points the clustering kept (Klamp't gives every point the full k and c): contact i
+  // gets k·d_max·d_i/Σd² and c·d_i/Σd, so a point entering or leaving the layer at depth 0
+  // changes nothing
+  double depth_sum = 0.0, depth_square_sum = 0.0, max_depth = 0.0;
   for (const Contact& contact : pair.contacts) {
+    const double d = ContactWeightDepth(contact, pair);
+    depth_sum += d;
+    depth_square_sum += d * d;
+    max_depth = std::max(max_depth, d);
+  }
+  const SoftContactParams pair_soft = SoftContact(surface.stiffness, surface.damping, step);
+  // a layer without stiffness or damping pushes with no force at all
+  if (pair_soft.soft && !std::isfinite(pair_soft.cfm)) return;
+  const ContactFeedbackRecord* record = feedback_.empty() ? nullptr : FindFeedback(pair.a, pair.b);
+  for (const Contact& contact : pair.contacts) {
+    const double d = ContactWeightDepth(contact, pair);
+    const SoftContactParams soft =
+        pair_soft.soft ? SoftContact(surface.stiffness * max_depth * d / depth_square_sum,
+                                     surface.damping * d / depth_sum, step)
+                       : pair_soft;
     dContact joint{};
     joint.surface.mode = dContactApprox1;
     joint.surface.mu = std::isinf(surface.friction) ? dInfinity : surface.friction;
@@ -410,7 +850,9 @@ void Simulator::AddContactJoints(const ContactPair& pair, double step) {
       joint.surface.soft_erp = soft.erp;
       joint.surface.soft_cfm = soft.cfm;
     }
-    if (surface.restitution > 0.0) {
+    // a soft layer rebounds as its spring and damper make it; a restitution on top would
+    // count the rebound twice (and pumps energy into a body rolling on a tessellated surface)
+    if (surface.restitution > 0.0 && !soft.soft) {
       joint.surface.mode |= dContactBounce;
       joint.surface.bounce = surface.restitution;
       joint.surface.bounce_vel = kBounceVelocityThreshold;
@@ -421,11 +863,14 @@ void Simulator::AddContactJoints(const ContactPair& pair, double step) {
     if (body_b) dBodyGetPointVel(body_b, p.x(), p.y(), p.z(), velocity_b);
     const Vec3 relative = ToVec3(velocity_a) - ToVec3(velocity_b);
     const double normal_speed = relative.dot(contact.normal);
-    if (!soft.soft && surface.restitution > 0.0 && normal_speed < -kBounceVelocityThreshold) {
-      // a bouncing impact: the velocity constraint with restitution sets the rebound; correcting
-      // the layer overlap as well would add energy (Klamp't's spheres bounce too high for this)
-      joint.surface.mode |= dContactSoftERP;
-      joint.surface.soft_erp = 0.0;
+    if (!soft.soft) {
+      // a hard contact corrects the layer overlap gently; at a bouncing impact not at all: the
+      // velocity constraint with restitution sets the rebound, and correcting the overlap as
+      // well would add energy (Klamp't's spheres bounce too high for this)
+      const bool bouncing = surface.restitution > 0.0 && normal_speed < -kBounceVelocityThreshold;
+      joint.surface.mode |= dContactSoftERP | dContactSoftCFM;
+      joint.surface.soft_erp = bouncing ? 0.0 : HardContactErp(contact.depth, step);
+      joint.surface.soft_cfm = std::min(world_.settings.cfm, kHardContactCfm);
     }
     // friction along the sliding direction makes ODE's per-axis friction isotropic
     const Vec3 sliding = relative - normal_speed * contact.normal;
@@ -445,7 +890,200 @@ void Simulator::AddContactJoints(const ContactPair& pair, double step) {
     joint.geom.depth = contact.depth;
     dJointID id = dJointCreateContact(ode_world_.get(), contact_group_.get(), &joint);
     dJointAttach(id, body_a, body_b);
+    JointFeedbackSlot* slot =
+        record != nullptr ? AttachFeedback(id, *record, pair, contact, surface.friction) : nullptr;
+    if (soft.soft && contact.depth >= pair.tolerance) {
+      AddCoreContactJoint(joint, pair.tolerance, step, body_a, body_b, slot);
+    }
   }
+}
+
+// A soft layer that is pressed through rests on the rigid geometry under it: where the
+// underlying geometries touch, a hard contact at the core's own depth (depth - padding sum)
+// keeps them from passing through each other. Without it a layer too soft for its load would let
+// the body sink through the floor. (ODE clamps a negative depth to 0, so a contact added
+// before the cores touch would stop them early.)
+void Simulator::AddCoreContactJoint(const dContact& soft_joint, double tolerance, double step,
+                                    dBodyID body_a, dBodyID body_b, JointFeedbackSlot* slot) {
+  dContact joint = soft_joint;
+  joint.surface.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
+  if (soft_joint.surface.mode & dContactFDir1) joint.surface.mode |= dContactFDir1;
+  joint.geom.depth = soft_joint.geom.depth - tolerance;
+  joint.surface.soft_erp = HardContactErp(joint.geom.depth, step);
+  joint.surface.soft_cfm = std::min(world_.settings.cfm, kHardContactCfm);
+  dJointID id = dJointCreateContact(ode_world_.get(), contact_group_.get(), &joint);
+  dJointAttach(id, body_a, body_b);
+  if (slot != nullptr) {
+    slot->has_core = true;
+    dJointSetFeedback(id, &slot->core);
+  }
+}
+
+// ---- contact feedback -------------------------------------------------------------------
+
+Simulator::JointFeedbackSlot* Simulator::AttachFeedback(dJointID joint,
+                                                        const ContactFeedbackRecord& record,
+                                                        const ContactPair& pair,
+                                                        const Contact& contact, double friction) {
+  JointFeedbackSlot& slot = joint_feedback_[next_feedback_slot_++];
+  slot.has_core = false;
+  slot.record = static_cast<int>(&record - feedback_.data());
+  // ODE reports the force on the joint's first body, pair.a; the record wants it on `first`
+  slot.flip = pair.a != record.first;
+  slot.contact.position = contact.position;
+  slot.contact.normal = slot.flip ? Vec3(-contact.normal) : contact.normal;
+  slot.contact.friction = friction;
+  slot.contact.penetrating = contact.penetrating;
+  dJointSetFeedback(joint, &slot.ode);
+  return &slot;
+}
+
+void Simulator::RecordFeedback(double step) {
+  if (feedback_.empty()) return;
+  step_feedback_.resize(feedback_.size());
+  for (std::vector<FeedbackContact>& contacts : step_feedback_) contacts.clear();
+  for (JointFeedbackSlot& slot : joint_feedback_) {
+    Vec3 force = ToVec3(slot.ode.f1);
+    if (slot.has_core) force += ToVec3(slot.core.f1);
+    slot.contact.force = slot.flip ? Vec3(-force) : force;
+    step_feedback_[slot.record].push_back(slot.contact);
+  }
+  for (size_t r = 0; r < feedback_.size(); ++r) feedback_[r].AddSubStep(step, step_feedback_[r]);
+}
+
+ContactFeedbackRecord* Simulator::FindFeedback(int a, int b) {
+  const int first = std::min(a, b), second = std::max(a, b);
+  const auto found =
+      std::lower_bound(feedback_.begin(), feedback_.end(), std::make_pair(first, second),
+                       [](const ContactFeedbackRecord& r, const std::pair<int, int>& key) {
+                         return std::make_pair(r.first, r.second) < key;
+                       });
+  if (found == feedback_.end() || found->first != first || found->second != second) return nullptr;
+  return &*found;
+}
+
+void Simulator::EnableContactFeedback(int a, int b) {
+  if (a == b || record(a) == nullptr || record(b) == nullptr) return;
+  if (FindFeedback(a, b)) return;
+  ContactFeedbackRecord entry;
+  entry.first = std::min(a, b);
+  entry.second = std::max(a, b);
+  const auto at = std::lower_bound(
+      feedback_.begin(), feedback_.end(), entry,
+      [](const ContactFeedbackRecord& x, const ContactFeedbackRecord& y) {
+        return std::make_pair(x.first, x.second) < std::make_pair(y.first, y.second);
+      });
+  feedback_.insert(at, entry);
+}
+
+void Simulator::EnableContactFeedbackAll() {
+  for (int i = 0; i < object_count(); ++i) {
+    for (int t = 0; t < static_cast<int>(world_.terrains.size()); ++t) {
+      EnableContactFeedback(object_ids_[i], world_.TerrainId(t));
+    }
+    if (!world_.settings.rigid_object_collisions) continue;
+    for (int j = i + 1; j < object_count(); ++j)
+      EnableContactFeedback(object_ids_[i], object_ids_[j]);
+  }
+}
+
+std::vector<const ContactFeedbackRecord*> Simulator::FeedbackRecords(int a, int b) const {
+  std::vector<const ContactFeedbackRecord*> records;
+  for (const ContactFeedbackRecord& r : feedback_) {
+    const bool touches_a = r.first == a || r.second == a;
+    if (touches_a && (b < 0 || r.first == b || r.second == b)) records.push_back(&r);
+  }
+  return records;
+}
+
+namespace {
+
+// +1 when a is the record's first body (its forces are on a), -1 otherwise
+double SignFor(const ContactFeedbackRecord& record, int a) {
+  return record.first == a ? 1.0 : -1.0;
+}
+
+}  // namespace
+
+bool Simulator::InContact(int a, int b) const {
+  const std::vector<const ContactFeedbackRecord*> records = FeedbackRecords(a, b);
+  if (!records.empty()) {
+    return std::any_of(records.begin(), records.end(),
+                       [](const ContactFeedbackRecord* r) { return r->in_contact; });
+  }
+  // without feedback: touching at the current state
+  return std::any_of(pairs_.begin(), pairs_.end(), [&](const ContactPair& pair) {
+    const bool touches_a = pair.a == a || pair.b == a;
+    return touches_a && (b < 0 || pair.a == b || pair.b == b) && !pair.contacts.empty();
+  });
+}
+
+bool Simulator::HadContact(int a, int b) const {
+  for (const ContactFeedbackRecord* r : FeedbackRecords(a, b)) {
+    if (r->contact_steps > 0) return true;
+  }
+  return false;
+}
+
+bool Simulator::HadSeparation(int a, int b) const {
+  for (const ContactFeedbackRecord* r : FeedbackRecords(a, b)) {
+    if (r->separation_steps > 0) return true;
+  }
+  return false;
+}
+
+bool Simulator::HadPenetration(int a, int b) const {
+  for (const ContactFeedbackRecord* r : FeedbackRecords(a, b)) {
+    if (r->penetration_steps > 0) return true;
+  }
+  return false;
+}
+
+std::vector<FeedbackContact> Simulator::GetContacts(int a, int b) const {
+  std::vector<FeedbackContact> contacts;
+  for (const ContactFeedbackRecord* r : FeedbackRecords(a, b)) {
+    const double sign = SignFor(*r, a);
+    for (FeedbackContact contact : r->contacts) {
+      contact.normal *= sign;
+      contact.force *= sign;
+      contacts.push_back(contact);
+    }
+  }
+  return contacts;
+}
+
+std::vector<Vec3> Simulator::GetContactForces(int a, int b) const {
+  std::vector<Vec3> forces;
+  for (const FeedbackContact& contact : GetContacts(a, b)) forces.push_back(contact.force);
+  return forces;
+}
+
+Vec3 Simulator::ContactForce(int a, int b) const {
+  Vec3 sum = Vec3::Zero();
+  for (const ContactFeedbackRecord* r : FeedbackRecords(a, b))
+    sum += SignFor(*r, a) * r->LastForce();
+  return sum;
+}
+
+Vec3 Simulator::ContactTorque(int a, int b) const {
+  Vec3 sum = Vec3::Zero();
+  for (const ContactFeedbackRecord* r : FeedbackRecords(a, b))
+    sum += SignFor(*r, a) * r->LastTorque();
+  return sum;
+}
+
+Vec3 Simulator::MeanContactForce(int a, int b) const {
+  Vec3 sum = Vec3::Zero();
+  for (const ContactFeedbackRecord* r : FeedbackRecords(a, b))
+    sum += SignFor(*r, a) * r->mean_force;
+  return sum;
+}
+
+Vec3 Simulator::MeanContactTorque(int a, int b) const {
+  Vec3 sum = Vec3::Zero();
+  for (const ContactFeedbackRecord* r : FeedbackRecords(a, b))
+    sum += SignFor(*r, a) * r->mean_torque;
+  return sum;
 }
 
 }  // namespace lamina::core

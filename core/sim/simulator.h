@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The simulator: rigid objects and terrains of a WorldDesc on ODE (double precision) with
-// boundary-layer contact. Every setter works on a running simulation. Robots slot in later as
-// further bodies and joints.
+// boundary-layer contact. Every setter works on a running simulation. Bodies are named by their
+// Klamp't world id (terrains, then rigid objects, then robots and their links); robots slot in
+// later as further bodies and joints.
 #pragma once
 
 #include <memory>
@@ -9,13 +10,18 @@
 #include <vector>
 
 #include "core/contact/collision_geometry.h"
+#include "core/diagnostics.h"
 #include "core/model/world_desc.h"
+#include "core/sim/contact_feedback.h"
 #include "core/sim/sim_state.h"
+#include "core/sim/sim_timing.h"
 
 // ODE's opaque types (ode/common.h), so that this header does not pull in ODE
 struct dxWorld;
 struct dxBody;
 struct dxJointGroup;
+struct dxJoint;
+struct dContact;
 
 namespace lamina::core {
 
@@ -23,8 +29,8 @@ enum class StepStatus {
   kNormal = 0,
   kAdaptiveStep = 1,       ///< a step was rolled back and retaken with a smaller step
   kContactUnreliable = 2,  ///< underlying geometries interpenetrated (beyond the padding)
-  kUnstable = 3,           ///< energy blew up and was corrected
-  kError = 4,              ///< ODE failed or a state became non-finite; the simulation stopped
+  kUnstable = 3,           ///< energy blew up (or a state became non-finite) and was corrected
+  kError = 4,              ///< ODE failed or a state stayed non-finite; the simulation stopped
 };
 /// "normal", "adaptive step", ...
 const char* StepStatusName(StepStatus status);
@@ -38,18 +44,21 @@ struct SolverSettings {
 
 /// Counters since construction or the last Reset.
 struct SimStatistics {
-  long steps = 0;                ///< physics sub-steps taken (accepted)
-  long rollbacks = 0;            ///< sub-steps undone and retaken at half the step
-  int max_contacts_in_step = 0;  ///< most contact joints in one sub-step
-  double max_penetration = 0.0;  ///< deepest boundary-layer overlap in an accepted state, m
+  long steps = 0;                    ///< physics sub-steps taken (accepted)
+  long rollbacks = 0;                ///< sub-steps undone and retaken at half the step
+  long instability_corrections = 0;  ///< bodies whose energy blow-up was corrected
+  int max_contacts_in_step = 0;      ///< most contact joints in one sub-step
+  long contact_joints = 0;           ///< contact joints over all accepted sub-steps
+  double max_penetration = 0.0;      ///< deepest boundary-layer overlap in an accepted state, m
   StepStatus worst_status = StepStatus::kNormal;
   std::string error;  ///< what stopped the simulation (kError)
+  SimTimeSplit time_split;
 };
 
 /// The contacts between two bodies at the current state, after clustering.
 struct ContactPair {
-  int a = -1;  ///< object index
-  int b = -1;  ///< object index, or -1 - terrain index for a terrain
+  int a = -1;  ///< world id of a body with an ODE body (dynamic or kinematic)
+  int b = -1;  ///< world id of the other body (may be static); normals point from b into a
   ContactList contacts;
   double tolerance = 0.0;  ///< padding sum of the pair (m)
   double max_depth = 0.0;  ///< deepest boundary-layer overlap (m)
@@ -58,6 +67,54 @@ struct ContactPair {
 
 /// Adaptive time stepping gives up halving below this step (s).
 inline constexpr double kMinimumAdaptiveStep = 1e-6;
+
+class Simulator;
+
+/// A handle on one body of a simulation (a terrain, a rigid object, later a robot link): cheap to
+/// copy, valid as long as its Simulator. Every setter takes effect on the running simulation and
+/// throws std::invalid_argument for a non-finite or negative value. Terrains are static: their
+/// pose and velocity setters and forces do nothing.
+class SimBody {
+ public:
+  SimBody(Simulator* simulator, int id) : simulator_(simulator), id_(id) {}
+  /// Klamp't world id.
+  int id() const { return id_; }
+  /// False for an id that is not a terrain, object or link of the world.
+  bool valid() const;
+
+  /// A disabled body is frozen where it is and takes no part in contact.
+  void Enable(bool enabled = true);
+  bool enabled() const;
+  /// With dynamics off a body is kinematic: it moves with the velocity it is given, ignores
+  /// forces and contacts, and pushes dynamic bodies as if it had infinite mass.
+  void EnableDynamics(bool dynamic = true);
+  bool dynamics_enabled() const;
+
+  /// Body frame (the object or link frame, not the COM) in the world.
+  Pose GetTransform() const;
+  void SetTransform(const Pose& pose);
+  /// Linear velocity of the body frame's origin and angular velocity, world.
+  Twist GetVelocity() const;
+  void SetVelocity(const Twist& velocity);
+
+  SurfaceDesc GetSurface() const;
+  void SetSurface(const SurfaceDesc& surface);
+  double GetPadding() const;
+  /// Boundary-layer thickness (m, >= 0); a preshrunk geometry is shrunk again to match.
+  void SetPadding(double padding);
+
+  /// Forces that act during every sub-step of the next Simulate call, then end.
+  /// `force` (N, world) at `point` (world).
+  void ApplyForceAtPoint(const Vec3& force, const Vec3& point);
+  /// `force` (N, world) at `point` given in the body frame.
+  void ApplyForceAtLocalPoint(const Vec3& force, const Vec3& point);
+  /// `force` (N, world) at the centre of mass and `torque` (N·m, world).
+  void ApplyWrench(const Vec3& force, const Vec3& torque);
+
+ private:
+  Simulator* simulator_;
+  int id_;
+};
 
 class Simulator {
  public:
@@ -75,6 +132,7 @@ class Simulator {
   double sim_step() const { return world_.settings.timestep; }
   void SetGravity(const Vec3& gravity);
   void SetSolver(const SolverSettings& solver) { solver_ = solver; }
+  const SolverSettings& solver() const { return solver_; }
   /// Back to the initial poses and velocities of the world description, time 0.
   void Reset();
   SimState GetState() const;
@@ -82,7 +140,19 @@ class Simulator {
   void CaptureState(SimState* state) const;
   void SetState(const SimState& state);
   const SimStatistics& statistics() const { return statistics_; }
+  /// Warnings from building the simulation (e.g. a preshrink that flipped triangles).
+  const Diagnostics& diagnostics() const { return diagnostics_; }
+  /// The simulated world: the description it was built from with every setter's edits (surfaces,
+  /// paddings, gravity, step); poses are the initial ones (see UpdateWorld).
   const WorldDesc& world() const { return world_; }
+  /// Writes the current state and every live edit into `world`, which must have the same
+  /// elements as the simulated one: object poses, velocities (as initial velocities), surfaces,
+  /// paddings and the global settings.
+  void UpdateWorld(WorldDesc* world) const;
+
+  /// Body by Klamp't world id (terrains, then objects, then robots and their links).
+  SimBody body(int id) { return SimBody(this, id); }
+  int body_count() const;
 
   // rigid objects, by index in world().objects
   int object_count() const;
@@ -93,34 +163,116 @@ class Simulator {
   Twist GetObjectVelocity(int object) const;
   void SetObjectVelocity(int object, const Twist& velocity);
 
+  // contacts at the current state (after clustering), one entry per touching pair
+  const std::vector<ContactPair>& contact_pairs() const { return pairs_; }
+
+  // contact feedback, recorded only for pairs that asked for it (see contact_feedback.h for the
+  // sign convention). b = -1 means "any body" in the queries.
+  /// Records every pair that can touch: object–terrain, object–object (when rigid objects collide).
+  void EnableContactFeedbackAll();
+  void EnableContactFeedback(int a, int b);
+  /// Contacts acted between a and b in the last sub-step.
+  bool InContact(int a, int b = -1) const;
+  /// During the last Simulate call: some sub-step had contact / had none / interpenetrated.
+  bool HadContact(int a, int b = -1) const;
+  bool HadSeparation(int a, int b = -1) const;
+  bool HadPenetration(int a, int b = -1) const;
+  /// Contacts of the last sub-step, normals into a.
+  std::vector<FeedbackContact> GetContacts(int a, int b) const;
+  /// Force on a of each contact of GetContacts(a, b) (N, world).
+  std::vector<Vec3> GetContactForces(int a, int b) const;
+  /// Total contact force on a from b in the last sub-step (N, world).
+  Vec3 ContactForce(int a, int b = -1) const;
+  /// Total contact torque on a from b about the world origin in the last sub-step (N·m).
+  Vec3 ContactTorque(int a, int b = -1) const;
+  /// Time average over the last Simulate call of the contact force / torque on a from b.
+  Vec3 MeanContactForce(int a, int b = -1) const;
+  Vec3 MeanContactTorque(int a, int b = -1) const;
+
  private:
-  struct ObjectBody;
-  struct TerrainBody;
+  friend class SimBody;
+  struct BodyRecord;
 
   void BuildBodies();
+  /// SetState without forgetting the energies of the instability check (rollbacks).
+  void RestoreState(const SimState& state);
   void ApplyInitialState();
   StepStatus Step(double step);
-  bool Integrate(double step);
+  enum class IntegrateResult { kOk, kOdeError, kNonFinite };
+  IntegrateResult Integrate(double step);
   bool NeedsRollback(const std::vector<ContactPair>& before, bool* unreliable) const;
+  void AcceptStep(double step);
+  void ApplyAccumulatedForces();
+  bool CorrectInstabilities(double step);
+  void MeasureUnknownEnergies();
+  double BodyKineticEnergy(const BodyRecord& body) const;
+  double ContactEnergyAllowance(int id, double step) const;
+  bool RecoverFromNonFiniteState();
   void RecordAcceptedContacts();
+  void RecordFeedback(double step);
   void DetectContacts();
-  void AddPairContacts(int a, int b, const CollisionGeometry& geometry_a, const Pose& X_Wa,
-                       const CollisionGeometry& geometry_b, const Pose& X_Wb);
+  bool MayCollide(const BodyRecord& a, const BodyRecord& b) const;
+  void FindCandidatePairs();
+  void AddPairContacts(int a, int b);
   void AddContactJoints(const ContactPair& pair, double step);
+  double HardContactErp(double depth, double step) const;
+  static double ContactWeightDepth(const Contact& contact, const ContactPair& pair);
+  struct JointFeedbackSlot;
+  JointFeedbackSlot* AttachFeedback(dxJoint* joint, const ContactFeedbackRecord& record,
+                                    const ContactPair& pair, const Contact& contact,
+                                    double friction);
+  void AddCoreContactJoint(const dContact& soft_joint, double tolerance, double step,
+                           dxBody* body_a, dxBody* body_b, JointFeedbackSlot* slot);
   bool StateIsFinite() const;
+  void RebuildCollisionGeometry(int id);
+  void ForgetEnergies();
+
+  // body access by world id
+  const BodySimParams& sim_params(int id) const;
+  BodySimParams* mutable_sim_params(int id);
+  BodyRecord* record(int id);
+  const BodyRecord* record(int id) const;
+  Pose GetBodyPose(const BodyRecord& body) const;
+  void SetBodyPose(const BodyRecord& body, const Pose& pose);
+  Twist GetBodyVelocity(const BodyRecord& body) const;
+  void SetBodyVelocity(const BodyRecord& body, const Twist& velocity);
+
+  // the body operations behind SimBody, by world id; ignored for ids without a body
+  bool BodyEnabled(int id) const;
+  void SetBodyEnabled(int id, bool enabled);
+  bool BodyDynamic(int id) const;
+  void SetBodyDynamic(int id, bool dynamic);
+  Pose BodyPose(int id) const;
+  void SetBodyPose(int id, const Pose& pose);
+  Twist BodyVelocity(int id) const;
+  void SetBodyVelocity(int id, const Twist& velocity);
+  void SetBodyPadding(int id, double padding);
+  void AddBodyForce(int id, const Vec3& force, const Vec3& point);
+  void AddBodyWrench(int id, const Vec3& force, const Vec3& torque);
+
+  // feedback records touching (a, b); b = -1: every record touching a
+  std::vector<const ContactFeedbackRecord*> FeedbackRecords(int a, int b) const;
+  ContactFeedbackRecord* FindFeedback(int a, int b);
 
   WorldDesc world_;
   SolverSettings solver_;
+  Diagnostics diagnostics_;
   CollisionGeometryCache geometry_cache_;
   std::unique_ptr<dxWorld, void (*)(dxWorld*)> ode_world_;
   std::unique_ptr<dxJointGroup, void (*)(dxJointGroup*)> contact_group_;
-  std::vector<ObjectBody> objects_;
-  std::vector<TerrainBody> terrains_;
-  std::vector<ContactPair> pairs_;        ///< contacts at the current state
-  std::vector<ContactPair> saved_pairs_;  ///< contacts at the start of a tentative step
-  SimState rollback_state_;               ///< state at the start of a tentative step
-  bool contacts_current_ = false;         ///< pairs_ describes the current state
+  std::vector<BodyRecord> bodies_;  ///< by world id
+  std::vector<int> object_ids_;     ///< world id of each rigid object
+  std::vector<int> collidable_;     ///< ids of bodies with geometry, for the broad phase
+  std::vector<std::pair<int, int>> candidates_;  ///< candidate pairs of the broad phase
+  std::vector<ContactPair> pairs_;               ///< contacts at the current state
+  std::vector<ContactPair> saved_pairs_;         ///< contacts at the start of a tentative step
+  SimState rollback_state_;                      ///< state at the start of a tentative step
+  bool contacts_current_ = false;                ///< pairs_ describes the current state
   ContactList scratch_contacts_;
+  std::vector<ContactFeedbackRecord> feedback_;              ///< sorted by (first, second)
+  std::vector<std::vector<FeedbackContact>> step_feedback_;  ///< per feedback record, one step
+  std::vector<JointFeedbackSlot> joint_feedback_;            ///< ODE feedback of this step's joints
+  size_t next_feedback_slot_ = 0;
   double time_ = 0.0;
   SimStatistics statistics_;
 };

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/sim/simulator.h"
+#include "tests/common/scene_builders.h"
 
 namespace lamina {
 namespace {
@@ -15,33 +16,13 @@ using core::Vec3;
 
 constexpr double kGravity = 9.8;
 
-core::TerrainDesc PlaneTerrain(double friction, double restitution) {
-  core::TerrainDesc ground;
-  ground.name = "ground";
-  ground.geometry.kind = core::GeometryKind::kPrimitive;
-  ground.geometry.primitive = core::Primitive::Plane();
-  ground.sim = core::DefaultTerrainSimParams();
-  ground.sim.surface.friction = friction;
-  ground.sim.surface.restitution = restitution;
-  return ground;
-}
-
-core::RigidObjectDesc Box(double side, double mass, const Vec3& position) {
-  core::RigidObjectDesc box;
-  box.name = "box";
-  box.geometry.kind = core::GeometryKind::kPrimitive;
-  box.geometry.primitive = core::Primitive::Box(Vec3::Constant(side));
-  box.mass = mass;
-  box.inertia = core::Mat3::Identity() * (mass * side * side / 6.0);
-  box.pose.translation() = position;
-  box.sim = core::DefaultObjectSimParams();
-  return box;
-}
+using test::BoxObject;
+using test::PlaneTerrain;
 
 TEST(RestingBoxTest, RestsOnItsBoundaryLayerWithoutDrift) {
   core::WorldDesc world;
   world.terrains.push_back(PlaneTerrain(0.5, 0.0));
-  core::RigidObjectDesc box = Box(0.2, 1.0, Vec3(0, 0, 0.11));
+  core::RigidObjectDesc box = BoxObject(0.2, 1.0, Vec3(0, 0, 0.11));
   box.sim.surface.restitution = 0.0;
   world.objects.push_back(box);
   core::Simulator simulator(world);
@@ -63,7 +44,7 @@ TEST(RestingBoxTest, RestsOnItsBoundaryLayerWithoutDrift) {
 double SlideDistance(const Vec3& direction, double speed, double mu) {
   core::WorldDesc world;
   world.terrains.push_back(PlaneTerrain(mu, 0.0));
-  core::RigidObjectDesc box = Box(0.1, 1.0, Vec3(0, 0, 0.0525));
+  core::RigidObjectDesc box = BoxObject(0.1, 1.0, Vec3(0, 0, 0.0525));
   box.sim.surface = {0.0, mu, core::kInf, core::kInf};
   box.initial_velocity.linear = direction.normalized() * speed;
   world.objects.push_back(box);
@@ -84,7 +65,7 @@ TEST(BounceTest, SphereReboundsToRestitutionSquaredTimesHeight) {
   const double restitution = 0.5, drop = 1.0, radius = 0.1;
   core::WorldDesc world;
   world.terrains.push_back(PlaneTerrain(0.5, restitution));
-  core::RigidObjectDesc ball = Box(0.1, 1.0, Vec3(0, 0, radius + 0.0025 + drop));
+  core::RigidObjectDesc ball = BoxObject(0.1, 1.0, Vec3(0, 0, radius + 0.0025 + drop));
   ball.geometry.primitive = core::Primitive::Sphere(radius);
   ball.inertia = core::Mat3::Identity() * (0.4 * radius * radius);
   ball.sim.surface.restitution = restitution;
@@ -108,7 +89,7 @@ TEST(BounceTest, SphereReboundsToRestitutionSquaredTimesHeight) {
 TEST(DeterminismTest, SameContactSceneTwiceIsBitIdentical) {
   core::WorldDesc world;
   world.terrains.push_back(PlaneTerrain(0.5, 0.2));
-  core::RigidObjectDesc box = Box(0.2, 1.0, Vec3(0, 0, 0.5));
+  core::RigidObjectDesc box = BoxObject(0.2, 1.0, Vec3(0, 0, 0.5));
   box.pose.linear() = core::RotationFromRollPitchYaw(0.3, 0.2, 0.1);
   box.initial_velocity.linear = Vec3(0.5, 0.1, 0);
   world.objects.push_back(box);

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+// SimBody: the per-body handle of a Simulator (declared in simulator.h, which it needs whole).
+#include <cmath>
+#include <stdexcept>
+
+#include "core/sim/simulator.h"
+
+namespace lamina::core {
+
+bool SimBody::valid() const {
+  return simulator_->mutable_sim_params(id_) != nullptr;
+}
+
+void SimBody::Enable(bool enabled) {
+  simulator_->SetBodyEnabled(id_, enabled);
+}
+
+bool SimBody::enabled() const {
+  return simulator_->BodyEnabled(id_);
+}
+
+void SimBody::EnableDynamics(bool dynamic) {
+  simulator_->SetBodyDynamic(id_, dynamic);
+}
+
+bool SimBody::dynamics_enabled() const {
+  return simulator_->BodyDynamic(id_);
+}
+
+Pose SimBody::GetTransform() const {
+  return simulator_->BodyPose(id_);
+}
+
+void SimBody::SetTransform(const Pose& pose) {
+  simulator_->SetBodyPose(id_, pose);
+}
+
+Twist SimBody::GetVelocity() const {
+  return simulator_->BodyVelocity(id_);
+}
+
+void SimBody::SetVelocity(const Twist& velocity) {
+  simulator_->SetBodyVelocity(id_, velocity);
+}
+
+SurfaceDesc SimBody::GetSurface() const {
+  const BodySimParams* params = simulator_->mutable_sim_params(id_);
+  return params ? params->surface : SurfaceDesc{};
+}
+
+void SimBody::SetSurface(const SurfaceDesc& surface) {
+  const bool valid = surface.restitution >= 0.0 && std::isfinite(surface.restitution) &&
+                     surface.friction >= 0.0 && surface.stiffness >= 0.0 && surface.damping >= 0.0;
+  if (!valid) {
+    throw std::invalid_argument(
+        "a surface needs finite restitution >= 0 and friction, stiffness, damping >= 0 (inf "
+        "allowed)");
+  }
+  if (BodySimParams* params = simulator_->mutable_sim_params(id_)) params->surface = surface;
+}
+
+double SimBody::GetPadding() const {
+  const BodySimParams* params = simulator_->mutable_sim_params(id_);
+  return params ? params->padding : 0.0;
+}
+
+void SimBody::SetPadding(double padding) {
+  simulator_->SetBodyPadding(id_, padding);
+}
+
+void SimBody::ApplyForceAtPoint(const Vec3& force, const Vec3& point) {
+  simulator_->AddBodyForce(id_, force, point);
+}
+
+void SimBody::ApplyForceAtLocalPoint(const Vec3& force, const Vec3& point) {
+  simulator_->AddBodyForce(id_, force, GetTransform() * point);
+}
+
+void SimBody::ApplyWrench(const Vec3& force, const Vec3& torque) {
+  simulator_->AddBodyWrench(id_, force, torque);
+}
+
+}  // namespace lamina::core
