@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "core/sim/energy_guard.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace lamina::core {
@@ -37,19 +36,13 @@ std::vector<double> InstabilityScales(const std::vector<BodyEnergySample>& bodie
     total_allowance += Allowance(body, settings);
   }
   if (!(total_after > total_allowance)) return {};
+  // the total is over the sum of the allowances, so at least one body is over its own
   std::vector<double> scales(bodies.size(), 1.0);
-  bool any = false;
   for (size_t i = 0; i < bodies.size(); ++i) {
     const double allowance = Allowance(bodies[i], settings);
     if (bodies[i].energy_after > allowance) {
       scales[i] = std::sqrt(settings.post_correction * allowance / bodies[i].energy_after);
-      any = true;
     }
-  }
-  if (!any) {
-    // the growth is spread over many bodies: scale them all back to the total allowance
-    const double scale = std::sqrt(settings.post_correction * total_allowance / total_after);
-    std::fill(scales.begin(), scales.end(), scale);
   }
   return scales;
 }

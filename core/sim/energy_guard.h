@@ -44,8 +44,8 @@ double ExternalWorkBound(const Vec3& force, const Vec3& torque, double speed_bef
                          double angular_speed_after, double step);
 
 /// Velocity scale per body (1 = untouched): empty when the step is stable. When the total energy
-/// exceeds growth·before + energy_per_kg·mass + external work, every body over its own allowance
-/// is scaled down to post_correction of it.
+/// exceeds the sum of the allowances growth·before + energy_per_kg·mass + external work, every
+/// body over its own allowance (there is at least one) is scaled down to post_correction of it.
 std::vector<double> InstabilityScales(const std::vector<BodyEnergySample>& bodies,
                                       const InstabilitySettings& settings = {});
 

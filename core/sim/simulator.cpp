@@ -25,6 +25,9 @@ constexpr double kBounceVelocityThreshold = 0.01;
 // ERP alone would turn a 0.6 mm overlap into a 0.57 m/s rebound within one 1 ms step (ERP 0.95)
 constexpr double kMaxCorrectionSpeed = 0.01;
 constexpr double kHardContactCfm = 1e-9;
+// a pair whose layer moved less than this fraction of its thickness in a step has settled: no
+// reason to retake the step
+constexpr double kSettledLayerFraction = 0.1;
 // contacts closer than this (or than the pair's padding sum) count as one point (m)
 constexpr double kMinimumMergeRadius = 1e-4;
 // sliding slower than this keeps ODE's default friction directions (m/s)
@@ -485,6 +488,7 @@ StepStatus Simulator::Step(double step) {
   StepStatus status = StepStatus::kNormal;
   if (!contacts_current_) DetectContacts();
   MeasureUnknownEnergies();
+  if (StopOverflowingBodies()) status = StepStatus::kUnstable;
   double remaining = step;
   double h = step;
   bool recovered = false;
@@ -492,9 +496,14 @@ StepStatus Simulator::Step(double step) {
     h = std::min(h, remaining);
     CaptureState(&rollback_state_);  // reuses its storage: no allocation per sub-step
     const IntegrateResult result = Integrate(h);
-    if (result == IntegrateResult::kOdeError) return StepStatus::kError;
+    if (result == IntegrateResult::kOdeError) {
+      // ODE's internal state cannot be trusted after one of its errors
+      statistics_.worst_status = StepStatus::kError;
+      return StepStatus::kError;
+    }
     if (result == IntegrateResult::kNonFinite) {
-      if (recovered || !RecoverFromNonFiniteState()) {
+      // a step that blew up is undone once with the culprits stopped
+      if (recovered || !RecoverFromFailedStep()) {
         statistics_.error = "a body state became non-finite at t = " + std::to_string(time_) + " s";
         statistics_.worst_status = StepStatus::kError;
         return StepStatus::kError;
@@ -534,17 +543,23 @@ void Simulator::AcceptStep(double step) {
 
 // a step left some body with a non-finite state: go back to the state before it and stop the
 // bodies that blew up (their velocities become zero); false if the state before was not finite
-bool Simulator::RecoverFromNonFiniteState() {
+bool Simulator::RecoverFromFailedStep() {
+  // blown up: non-finite after the step, or moving absurdly fast before it
   std::vector<bool> blown(object_ids_.size(), false);
+  bool any = false;
   for (size_t i = 0; i < object_ids_.size(); ++i) {
     const dBodyID body = bodies_[object_ids_[i]].body;
     const Vec3 p = ToVec3(dBodyGetPosition(body));
     const Vec3 v = ToVec3(dBodyGetLinearVel(body));
     const Vec3 w = ToVec3(dBodyGetAngularVel(body));
-    blown[i] = !p.allFinite() || !v.allFinite() || !w.allFinite();
+    const BodyState& before = rollback_state_.objects[i];
+    const double speed_squared =
+        before.linear_velocity.squaredNorm() + before.angular_velocity.squaredNorm();
+    blown[i] = !p.allFinite() || !v.allFinite() || !w.allFinite() || !std::isfinite(speed_squared);
+    any = any || blown[i];
   }
   RestoreState(rollback_state_);
-  if (!StateIsFinite()) return false;
+  if (!any || !StateIsFinite()) return false;
   for (size_t i = 0; i < object_ids_.size(); ++i) {
     if (!blown[i]) continue;
     BodyRecord& body = bodies_[object_ids_[i]];
@@ -564,6 +579,21 @@ void Simulator::MeasureUnknownEnergies() {
     if (body.energy >= 0.0 || !body.moves_freely()) continue;
     body.energy = BodyKineticEnergy(body);
   }
+}
+
+// a body whose kinetic energy overflows a double would make ODE fail inside its step (and ODE
+// cannot be trusted after that): it is stopped before the step instead
+bool Simulator::StopOverflowingBodies() {
+  bool stopped = false;
+  for (BodyRecord& body : bodies_) {
+    if (!body.moves_freely() || std::isfinite(body.energy)) continue;
+    dBodySetLinearVel(body.body, 0, 0, 0);
+    dBodySetAngularVel(body.body, 0, 0, 0);
+    body.energy = 0.0;
+    ++statistics_.instability_corrections;
+    stopped = true;
+  }
+  return stopped;
 }
 
 double Simulator::BodyKineticEnergy(const BodyRecord& body) const {
@@ -641,6 +671,9 @@ void Simulator::RecordAcceptedContacts() {
   statistics_.max_contacts_in_step = std::max(statistics_.max_contacts_in_step, contacts);
 }
 
+// a tentative step is retaken in halves when it let a pair interpenetrate that had layer to
+// spare before, or when it used up more than half of a pair's layer at once (more than half of
+// what remained, and a noticeable part of the layer: noise at a settled contact is no reason)
 bool Simulator::NeedsRollback(const std::vector<ContactPair>& before, bool* unreliable) const {
   bool rollback = false;
   for (const ContactPair& pair : pairs_) {
@@ -648,16 +681,22 @@ bool Simulator::NeedsRollback(const std::vector<ContactPair>& before, bool* unre
       return p.a == pair.a && p.b == pair.b;
     });
     const bool was_in_contact = previous != before.end();
+    const double previous_depth = was_in_contact ? previous->max_depth : 0.0;
+    const double previous_remaining = pair.tolerance - previous_depth;
     if (pair.penetrating) {
       *unreliable = true;
-      // a new interpenetration is worth a smaller step; an old one would roll back forever
-      if (!was_in_contact || !previous->penetrating) rollback = true;
+      // a new interpenetration through a layer that had room left is worth a smaller step; one
+      // under a layer already pressed through (a soft layer resting on its core) or an old one
+      // would roll back forever
+      const bool had_room = previous_remaining > kSettledLayerFraction * pair.tolerance;
+      if (!was_in_contact || (!previous->penetrating && had_room)) rollback = true;
       continue;
     }
     const double remaining = pair.tolerance - pair.max_depth;
-    const double previous_remaining =
-        was_in_contact ? previous->tolerance - previous->max_depth : pair.tolerance;
-    if (remaining < 0.5 * pair.tolerance && remaining < 0.5 * previous_remaining) rollback = true;
+    if (remaining < 0.5 * pair.tolerance && remaining < 0.5 * previous_remaining &&
+        pair.max_depth - previous_depth > kSettledLayerFraction * pair.tolerance) {
+      rollback = true;
+    }
   }
   return rollback;
 }
@@ -687,7 +726,6 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
   } catch (const std::exception& error) {
     dJointGroupEmpty(contact_group_.get());
     statistics_.error = error.what();
-    statistics_.worst_status = StepStatus::kError;
     result = IntegrateResult::kOdeError;
   }
   statistics_.time_split.solver += watch.Lap();

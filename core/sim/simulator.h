@@ -205,9 +205,10 @@ class Simulator {
   void ApplyAccumulatedForces();
   bool CorrectInstabilities(double step);
   void MeasureUnknownEnergies();
+  bool StopOverflowingBodies();
   double BodyKineticEnergy(const BodyRecord& body) const;
   double ContactEnergyAllowance(int id, double step) const;
-  bool RecoverFromNonFiniteState();
+  bool RecoverFromFailedStep();
   void RecordAcceptedContacts();
   void RecordFeedback(double step);
   void DetectContacts();
