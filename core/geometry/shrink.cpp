@@ -164,10 +164,15 @@ bool SolveThreePlanes(const Vec3& n0, const Vec3& n1, const Vec3& n2, double amo
 }
 
 // Klamp't: among all triples, the solution whose shallowest face (capped at amount) moves most.
+// Unlike Klamp't, ties are averaged (every face still moves at least as far, the condition
+// being linear in x), so a symmetric vertex such as the pole of a UV sphere moves along its axis
+// instead of toward whichever triple comes first.
 bool DeepestTripleDisplacement(const std::vector<Vec3>& normals, double amount, Vec3* best) {
   const int n = static_cast<int>(normals.size());
+  const double tie = 1e-9 * amount;
   double best_depth = 0.0;
-  bool found = false;
+  Vec3 sum = Vec3::Zero();
+  int ties = 0;
   for (int i = 0; i < n; ++i) {
     for (int j = i + 1; j < n; ++j) {
       for (int k = j + 1; k < n; ++k) {
@@ -175,15 +180,20 @@ bool DeepestTripleDisplacement(const std::vector<Vec3>& normals, double amount, 
         if (!SolveThreePlanes(normals[i], normals[j], normals[k], amount, &x)) continue;
         double depth = amount;
         for (const Vec3& normal : normals) depth = std::min(depth, normal.dot(x));
-        if (depth > best_depth) {
+        if (depth > best_depth + tie) {
           best_depth = depth;
-          *best = x;
-          found = true;
+          sum = x;
+          ties = 1;
+        } else if (ties > 0 && depth >= best_depth - tie) {
+          sum += x;
+          ++ties;
         }
       }
     }
   }
-  return found;
+  if (ties == 0) return false;
+  *best = sum / ties;
+  return true;
 }
 
 // Along the average normal d, far enough that every face moves at least amount:

@@ -28,6 +28,9 @@ constexpr double kHardContactCfm = 1e-9;
 // a pair whose layer moved less than this fraction of its thickness in a step has settled: no
 // reason to retake the step
 constexpr double kSettledLayerFraction = 0.1;
+// a layer with less than this fraction of its thickness left is pressed through (resting on
+// the geometry under it)
+constexpr double kPressedThroughFraction = 0.01;
 // contacts closer than this (or than the pair's padding sum) count as one point (m)
 constexpr double kMinimumMergeRadius = 1e-4;
 // sliding slower than this keeps ODE's default friction directions (m/s)
@@ -688,7 +691,7 @@ bool Simulator::NeedsRollback(const std::vector<ContactPair>& before, bool* unre
       // a new interpenetration through a layer that had room left is worth a smaller step; one
       // under a layer already pressed through (a soft layer resting on its core) or an old one
       // would roll back forever
-      const bool had_room = previous_remaining > kSettledLayerFraction * pair.tolerance;
+      const bool had_room = previous_remaining > kPressedThroughFraction * pair.tolerance;
       if (!was_in_contact || (!previous->penetrating && had_room)) rollback = true;
       continue;
     }
