@@ -36,6 +36,30 @@ TEST(RunCommandTest, JsonReportsFreeFallBeforeImpact) {
   EXPECT_EQ(sphere["quaternion"][0], 1.0);
 }
 
+TEST(RunCommandTest, JsonReportsContactsAndTheTimeSplit) {
+  const CommandResult result =
+      RunHeadless("run --json --duration 0.2 " +
+                  test::WorldsPath("klampt/simulation_test_worlds/stacktest.xml"));
+  ASSERT_EQ(result.exit_code, 0) << result.out;
+  const nlohmann::json json = nlohmann::json::parse(result.out);
+  // ten boxes, each resting on the one below (or the slab) on 4 corners: 40 contacts per step
+  // once the initial millimetre gaps have closed
+  EXPECT_EQ(json["max_contacts"], 40);
+  EXPECT_GT(json["mean_contacts"].get<double>(), 36.0);
+  EXPECT_LE(json["mean_contacts"].get<double>(), 40.0);
+  EXPECT_EQ(json["instability_corrections"], 0);
+  const nlohmann::json& split = json["time_split"];
+  double parts = 0.0;
+  for (const char* part : {"broad_phase", "contact_generation", "clustering", "solver", "other"}) {
+    ASSERT_TRUE(split.contains(part)) << part;
+    EXPECT_GE(split[part].get<double>(), 0.0) << part;
+    parts += split[part].get<double>();
+  }
+  // the parts cover the time spent in Simulate, which is most of the wall time reported
+  EXPECT_GT(parts, 0.0);
+  EXPECT_LE(parts, json["wall_time"].get<double>() * 1.05 + 1e-3);
+}
+
 TEST(RunCommandTest, LogFollowsKlamptColumns) {
   const std::string log = test::ScratchDir() + "/log.csv";
   const CommandResult result =
