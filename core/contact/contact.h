@@ -18,7 +18,18 @@ struct Contact {
   /// The underlying (unpadded) geometries interpenetrate here: the penetration went beyond the
   /// boundary layer and `depth` understates it.
   bool penetrating = false;
+  /// How much of the pair's pressure this contact stands for: 0 for a contact straight from the
+  /// geometry (it counts as depth²), the members' sum for a cluster (see ClusterContacts).
+  double weight = 0.0;
 };
+
+/// The pressure weight of a contact: its own `weight`, or depth² (floored at `floor`²) for a
+/// contact straight from the geometry.
+inline double PressureWeight(const Contact& contact, double floor) {
+  if (contact.weight > 0.0) return contact.weight;
+  const double depth = contact.depth > floor ? contact.depth : floor;
+  return depth * depth;
+}
 
 using ContactList = std::vector<Contact>;
 

@@ -22,12 +22,17 @@ constexpr int kMaxIterations = 20;
 constexpr std::size_t kSubsampleWorkLimit = 5000;
 constexpr std::size_t kSubsampleSquareLimit = 2000;
 constexpr std::size_t kMinSubsampleSize = 44;
+// contacts shallower than this (m) weigh as if this deep, so that a cluster of contacts at
+// depth 0 still has a centre
+constexpr double kMinPressureDepth = 1e-9;
 // Below this length the mean of the members' unit normals has no usable direction (they cancel).
 constexpr double kMinMeanNormalLength = 1e-6;
 
 /// What the final assignment gathers about one cluster's members.
 struct ClusterSums {
   Vec3 position_sum = Vec3::Zero();
+  Vec3 weighted_position_sum = Vec3::Zero();  ///< positions times pressure weights
+  double weight_sum = 0.0;
   Vec3 normal_sum = Vec3::Zero();
   std::size_t count = 0;
   double max_depth = 0.0;  ///< of the first member of maximal depth (the deepest)
@@ -194,7 +199,10 @@ void GatherClusters(const ContactList& contacts, Workspace* workspace) {
       sums.max_depth = contact.depth;
       sums.deepest_normal = contact.normal;
     }
+    const double weight = PressureWeight(contact, kMinPressureDepth);
     sums.position_sum += contact.position;
+    sums.weighted_position_sum += weight * contact.position;
+    sums.weight_sum += weight;
     sums.normal_sum += contact.normal;
     sums.penetrating = sums.penetrating || contact.penetrating;
     ++sums.count;
@@ -206,7 +214,12 @@ Contact SummarizeCluster(const ClusterSums& sums) {
   const Vec3 mean_normal = sums.normal_sum / count;
   const double length = mean_normal.norm();
   Contact out;
-  out.position = sums.position_sum / count;
+  // the centre of the members' pressure, so that a cluster pushes where its members would
+  // (a plain centroid moves the pair's centre of pressure, and a symmetric patch reduced to
+  // asymmetric clusters would twist the body)
+  out.position = sums.weight_sum > 0.0 ? Vec3(sums.weighted_position_sum / sums.weight_sum)
+                                       : Vec3(sums.position_sum / count);
+  out.weight = sums.weight_sum;
   out.normal = length > kMinMeanNormalLength ? Vec3(mean_normal / length) : sums.deepest_normal;
   out.depth = sums.max_depth;
   out.penetrating = sums.penetrating;

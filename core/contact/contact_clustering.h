@@ -10,8 +10,10 @@ namespace lamina::core {
 /// 7-D feature space (position, normal_scale * normal, depth), as Klamp't does, but with a
 /// deterministic initialisation, no random restarts, a uniform-stride subsample when the input
 /// is very large, and the cluster depth taken as the deepest member (not the mean). Each output
-/// contact: centroid position, renormalized mean normal, max depth, penetrating if any member
-/// is. Fewer contacts than `max_contacts` are left untouched. Same input, same output.
+/// contact: the centre of its members' pressure (positions weighted by PressureWeight, i.e.
+/// depth²; Klamp't takes the plain centroid), their summed weight, the renormalized mean
+/// normal, the max depth, penetrating if any member is. Fewer contacts than `max_contacts` are
+/// left untouched. Same input, same output.
 void ClusterContacts(int max_contacts, double normal_scale, ContactList* contacts);
 
 /// Klamp't's default weight of normals against positions in the clustering features.

@@ -31,7 +31,11 @@ constexpr double kSettledLayerFraction = 0.1;
 // a layer with less than this fraction of its thickness left is pressed through (resting on
 // the geometry under it)
 constexpr double kPressedThroughFraction = 0.01;
-// contacts closer than this (or than the pair's padding sum) count as one point (m)
+// contacts closer than this fraction of the pair's padding sum (or than kMinimumMergeRadius)
+// count as one point: the same corner reported by both meshes. Merging farther apart points
+// would move a pair's contacts by jumps as points enter and leave the layer, and a body resting
+// on them could pick up energy from that.
+constexpr double kMergeFraction = 0.05;
 constexpr double kMinimumMergeRadius = 1e-4;
 // sliding slower than this keeps ODE's default friction directions (m/s)
 constexpr double kSlidingSpeedThreshold = 1e-6;
@@ -835,7 +839,8 @@ void Simulator::AddPairContacts(int first, int second) {
     pair.max_depth = std::max(pair.max_depth, contact.depth);
     pair.penetrating = pair.penetrating || contact.penetrating;
   }
-  MergeCoincidentContacts(std::max(pair.tolerance, kMinimumMergeRadius), &scratch_contacts_);
+  MergeCoincidentContacts(std::max(kMergeFraction * pair.tolerance, kMinimumMergeRadius),
+                          &scratch_contacts_);
   ClusterContacts(world_.settings.max_contacts, kDefaultClusterNormalScale, &scratch_contacts_);
   pair.contacts = scratch_contacts_;
   pairs_.push_back(std::move(pair));
@@ -863,26 +868,28 @@ void Simulator::AddContactJoints(const ContactPair& pair, double step) {
   const BlendedSurface surface =
       BlendSurfaces(sim_params(pair.a).surface, sim_params(pair.b).surface);
   // the pair pushes with k times its penetration (its deepest overlap) and damps with c, however
-  // many points the clustering kept (Klamp't gives every point the full k and c): contact i
-  // gets k·d_max·d_i/Σd² and c·d_i/Σd, so a point entering or leaving the layer at depth 0
-  // changes nothing
-  double depth_sum = 0.0, depth_square_sum = 0.0, max_depth = 0.0;
+  // many points the clustering kept (Klamp't gives every point the full k and c): each contact
+  // takes a share w_i/Σw of both by its pressure weight (depth², summed over a cluster's
+  // members), so the pair's centre of pressure does not depend on the clustering, and a point
+  // entering or leaving the layer at depth 0 changes nothing
+  const double floor = ContactWeightDepth(Contact{}, pair);
+  double weight_sum = 0.0, max_depth = 0.0;
   for (const Contact& contact : pair.contacts) {
-    const double d = ContactWeightDepth(contact, pair);
-    depth_sum += d;
-    depth_square_sum += d * d;
-    max_depth = std::max(max_depth, d);
+    weight_sum += PressureWeight(contact, floor);
+    max_depth = std::max(max_depth, ContactWeightDepth(contact, pair));
   }
   const SoftContactParams pair_soft = SoftContact(surface.stiffness, surface.damping, step);
   // a layer without stiffness or damping pushes with no force at all
   if (pair_soft.soft && !std::isfinite(pair_soft.cfm)) return;
   const ContactFeedbackRecord* record = feedback_.empty() ? nullptr : FindFeedback(pair.a, pair.b);
   for (const Contact& contact : pair.contacts) {
-    const double d = ContactWeightDepth(contact, pair);
+    // force share = k·d_max·share = k_i·d_i
+    const double share = PressureWeight(contact, floor) / weight_sum;
     const SoftContactParams soft =
-        pair_soft.soft ? SoftContact(surface.stiffness * max_depth * d / depth_square_sum,
-                                     surface.damping * d / depth_sum, step)
-                       : pair_soft;
+        pair_soft.soft
+            ? SoftContact(surface.stiffness * max_depth * share / ContactWeightDepth(contact, pair),
+                          surface.damping * share, step)
+            : pair_soft;
     dContact joint{};
     joint.surface.mode = dContactApprox1;
     joint.surface.mu = std::isinf(surface.friction) ? dInfinity : surface.friction;

@@ -73,7 +73,7 @@ TEST(ContactClusteringTest, ZeroMaxContactsLeavesNone) {
 // an aggregated list of several feet would be): one output per group, at the group's centroid,
 // with its deepest depth. Seeding from the contacts at indices floor(i n / k) (Klamp't) would
 // put two seeds in group 0 here (indices 0 and 4) and end with one output straddling two groups.
-TEST(ContactClusteringTest, TightGroupsReduceToTheirCentroids) {
+TEST(ContactClusteringTest, TightGroupsReduceToTheirCentresOfPressure) {
   const std::vector<Vec3> group_centres = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),
                                            Vec3(1, 1, 0.5)};
   const std::vector<int> group_sizes = {3, 5, 4, 6};
@@ -97,21 +97,26 @@ TEST(ContactClusteringTest, TightGroupsReduceToTheirCentroids) {
   ASSERT_EQ(contacts.size(), 4u);
   for (std::size_t g = 0; g < groups.size(); ++g) {
     SCOPED_TRACE(g);
-    Vec3 position_sum = Vec3::Zero();
+    // the members' positions weighted by depth² (a member at depth 0 weighs (1e-9)²)
+    Vec3 weighted_sum = Vec3::Zero();
+    double weight_sum = 0.0;
     Vec3 normal_sum = Vec3::Zero();
     double max_depth = 0.0;
     for (const Contact& member : groups[g]) {
-      position_sum += member.position;
+      const double depth = std::max(member.depth, 1e-9);
+      weighted_sum += depth * depth * member.position;
+      weight_sum += depth * depth;
       normal_sum += member.normal;
       max_depth = std::max(max_depth, member.depth);
     }
-    const Vec3 centroid = position_sum / static_cast<double>(groups[g].size());
+    const Vec3 centroid = weighted_sum / weight_sum;
     const auto output = std::find_if(contacts.begin(), contacts.end(), [&](const Contact& c) {
       return (c.position - centroid).norm() <= kMeanTolerance;
     });
     ASSERT_TRUE(output != contacts.end()) << "no output at " << centroid.transpose();
     EXPECT_LE((output->normal - normal_sum.normalized()).norm(), kMeanTolerance);
     EXPECT_EQ(output->depth, max_depth);
+    EXPECT_NEAR(output->weight, weight_sum, 1e-15);
     EXPECT_EQ(output->penetrating, g == 2);
   }
 }
@@ -127,7 +132,9 @@ TEST(ContactClusteringTest, OppositeNormalsFallBackToTheDeepestNormal) {
   ASSERT_EQ(contacts.size(), 1u);
   EXPECT_EQ(contacts[0].normal, -Vec3::UnitZ());
   EXPECT_EQ(contacts[0].depth, 3e-3);
-  EXPECT_LE((contacts[0].position - Vec3(0, 0, 0.003)).norm(), kMeanTolerance);
+  // centre of pressure: depths 1, 3, 2, 3 mm weigh 1, 9, 4, 9 at z = 0, 2, 4, 6 mm
+  const double z = (9 * 0.002 + 4 * 0.004 + 9 * 0.006) / 23.0;
+  EXPECT_LE((contacts[0].position - Vec3(0, 0, z)).norm(), kMeanTolerance);
 }
 
 TEST(ContactClusteringTest, MeanNormalIsRenormalized) {
