@@ -2,13 +2,16 @@
 # The two commands of the README:
 #   make run   installs missing Debian packages, builds, and opens the editor (WORLD=... optional)
 #   make test  installs missing Debian packages, builds, and runs the whole CTest suite
+#   make bench builds the benchmarks in BENCH_BUILD (optimized, no editor) and prints medians
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 CTEST_FLAGS ?=
 WORLD ?=
+BENCH_BUILD ?= build-bench
+BENCH_FLAGS ?= --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
-.PHONY: all deps configure build run test test-asan format format-check clean
+.PHONY: all deps configure build run test test-asan bench format format-check clean
 
 all: build
 
@@ -28,11 +31,20 @@ test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) $(CTEST_FLAGS)
 
 # the core and its tests under AddressSanitizer + UndefinedBehaviorSanitizer; the long physics
-# runs (label "physics") stay in the optimized `make test`
+# runs (label "physics") and the benchmark smoke run (label "bench") stay in the optimized
+# `make test`
 test-asan:
-	$(MAKE) test BUILD=build-asan CTEST_FLAGS="-LE physics" CMAKE_FLAGS="-DCMAKE_BUILD_TYPE=Debug \
+	$(MAKE) test BUILD=build-asan CTEST_FLAGS="-LE 'physics|bench'" CMAKE_FLAGS="-DCMAKE_BUILD_TYPE=Debug \
 	  -DLAMINA_SANITIZE='address;undefined' -DLAMINA_BUILD_EDITOR=OFF -DLAMINA_BUILD_HEADLESS=OFF \
 	  $(CMAKE_FLAGS)"
+
+# timings from one run: every benchmark repeated, the console shows medians (and the spread);
+# BENCH_FLAGS="--benchmark_filter=BoxStack" for a subset
+bench: deps
+	cmake -S . -B $(BENCH_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLAMINA_BUILD_EDITOR=OFF \
+	  -DLAMINA_BUILD_HEADLESS=OFF -DLAMINA_BUILD_TESTS=OFF -DLAMINA_BUILD_BENCHMARKS=ON $(CMAKE_FLAGS)
+	cmake --build $(BENCH_BUILD) -j$(JOBS) --target lamina_bench
+	$(BENCH_BUILD)/bin/lamina_bench $(BENCH_FLAGS)
 
 SOURCES = $(shell git ls-files '*.cpp' '*.h')
 
@@ -43,4 +55,4 @@ format-check:
 	clang-format --dry-run --Werror $(SOURCES)
 
 clean:
-	rm -rf build build-asan
+	rm -rf build build-asan $(BENCH_BUILD)
