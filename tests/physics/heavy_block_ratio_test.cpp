@@ -51,6 +51,8 @@ void ExpectBlocksStayPut(double ratio) {
   // has paddings of 2.5 mm on each side, 5 mm in all
   const double padding_sum = world.objects[0].sim.padding + world.objects[1].sim.padding;
   EXPECT_LT(simulator.statistics().max_penetration, padding_sum);
+  // the bar: no instability correction (Klamp't fires them here)
+  EXPECT_EQ(simulator.statistics().instability_corrections, 0);
   // the stack stands: the light block's centre 0.05 m (half its side) plus at most the 5 mm
   // layer above the slab's top (z = 0), the heavy one's 0.2 m above the light block's top
   const double light_z = simulator.GetObjectPose(0).translation().z();
