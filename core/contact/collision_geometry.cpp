@@ -5,7 +5,9 @@
 #include "core/contact/collision_geometry.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <tuple>
 
@@ -20,11 +22,24 @@ namespace lamina::core {
 struct MeshBvh {
   fcl::BVHModel<fcl::OBBRSSd> model;
   mesh_detail::MeshTopology topology;
+  /// The plane of a triangle: normal.dot(x) == offset on it; a zero normal if degenerate.
+  struct Plane {
+    Vec3 normal = Vec3::Zero();
+    double offset = 0.0;
+  };
+  /// Per triangle, its corners, and its axis-aligned bounds and plane (the cheap tests that
+  /// spare most far triangle pairs the exact distance), in the mesh frame.
+  std::vector<std::array<Vec3, 3>> triangle_corners;
+  std::vector<Eigen::AlignedBox3d> triangle_bounds;
+  std::vector<Plane> triangle_planes;
+  /// Per hierarchy node, the radius of the sphere about its box's centre that holds the box.
+  std::vector<double> node_radii;
 };
 
 namespace {
 
 using mesh_detail::MeshTopology;
+using mesh_detail::PairSearch;
 using mesh_detail::TrianglePairHit;
 
 using FclModel = fcl::BVHModel<fcl::OBBRSSd>;
@@ -110,6 +125,40 @@ std::vector<Eigen::Vector3i> TriangleNeighbors(const TriangleMesh& mesh,
   return neighbors;
 }
 
+Eigen::AlignedBox3d TriangleBounds(const Vec3& p, const Vec3& q, const Vec3& r) {
+  return Eigen::AlignedBox3d(p.cwiseMin(q).cwiseMin(r), p.cwiseMax(q).cwiseMax(r));
+}
+
+std::vector<std::array<Vec3, 3>> AllTriangleCorners(const TriangleMesh& mesh) {
+  std::vector<std::array<Vec3, 3>> corners;
+  corners.reserve(mesh.triangles.size());
+  for (const Eigen::Vector3i& t : mesh.triangles) {
+    corners.push_back({mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]});
+  }
+  return corners;
+}
+
+std::vector<Eigen::AlignedBox3d> AllTriangleBounds(
+    const std::vector<std::array<Vec3, 3>>& triangle_corners) {
+  std::vector<Eigen::AlignedBox3d> bounds;
+  bounds.reserve(triangle_corners.size());
+  for (const std::array<Vec3, 3>& c : triangle_corners) {
+    bounds.push_back(TriangleBounds(c[0], c[1], c[2]));
+  }
+  return bounds;
+}
+
+std::vector<MeshBvh::Plane> AllTrianglePlanes(const TriangleMesh& mesh,
+                                              const std::vector<Vec3>& face_normals) {
+  std::vector<MeshBvh::Plane> planes;
+  planes.reserve(mesh.triangles.size());
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Vec3& n = face_normals[t];
+    planes.push_back({n, n.dot(mesh.vertices[mesh.triangles[t][0]])});
+  }
+  return planes;
+}
+
 std::shared_ptr<const MeshBvh> BuildBvh(const TriangleMesh& mesh,
                                         const std::vector<Vec3>& face_normals) {
   auto bvh = std::make_shared<MeshBvh>();
@@ -123,6 +172,12 @@ std::shared_ptr<const MeshBvh> BuildBvh(const TriangleMesh& mesh,
   bvh->topology.welded = WeldVertices(mesh);
   bvh->topology.vertex_normals = VertexNormals(mesh, face_normals, bvh->topology.welded);
   bvh->topology.neighbors = TriangleNeighbors(mesh, bvh->topology.welded);
+  bvh->triangle_corners = AllTriangleCorners(mesh);
+  bvh->triangle_bounds = AllTriangleBounds(bvh->triangle_corners);
+  bvh->triangle_planes = AllTrianglePlanes(mesh, face_normals);
+  for (int node = 0; node < bvh->model.getNumBVs(); ++node) {
+    bvh->node_radii.push_back(bvh->model.getBV(node).bv.obb.extent.norm());
+  }
   return bvh;
 }
 
@@ -211,25 +266,193 @@ Eigen::AlignedBox3d PrimitiveBounds(const Primitive& p) {
   return Eigen::AlignedBox3d(c - half, c + half);
 }
 
-// Pairs of nodes are pruned by the distance between their bounding volumes (b's volumes are
-// mapped into a's frame by R, T, as FCL's own distance traversal does).
-class PairTraversal {
+// Box tests prune only pairs farther apart than the tolerance by this much more (m): far beyond
+// the rounding of any distance here, so that every search path keeps the same triangle pairs.
+constexpr double kBoundsSlack = 1e-9;
+// Meshes this small against each other test every triangle pair (bounds first): cheaper than
+// traversing two hierarchies whose volumes nearly all overlap when small meshes touch.
+constexpr long kEveryPairLimit = 4096;
+// A mesh this small is bounded as a whole and run through the other mesh's hierarchy.
+constexpr int kSmallMeshTriangles = 64;
+
+// A triangle of b in a's frame with its bounds and plane there.
+struct PlacedTriangle {
+  std::array<Vec3, 3> corners;
+  Eigen::AlignedBox3d bounds;
+  MeshBvh::Plane plane;
+};
+
+// True when the boxes are more than `reach` apart along an axis: so is every pair of points.
+bool Apart(const Eigen::AlignedBox3d& x, const Eigen::AlignedBox3d& y, double reach) {
+  return ((x.min() - y.max()).array() > reach).any() || ((y.min() - x.max()).array() > reach).any();
+}
+
+// True when all three corners lie more than `reach` to one side of the plane.
+bool Beyond(const MeshBvh::Plane& plane, const std::array<Vec3, 3>& corners, double reach) {
+  const Vec3 heights(plane.normal.dot(corners[0]), plane.normal.dot(corners[1]),
+                     plane.normal.dot(corners[2]));
+  return heights.minCoeff() - plane.offset > reach || heights.maxCoeff() - plane.offset < -reach;
+}
+
+// False when the oriented box and the aligned box (centre, half extents) are separated along
+// one of their six face axes (a conservative overlap test).
+bool MayOverlap(const fcl::OBBd& volume, const Vec3& centre, const Vec3& half) {
+  const Vec3 offset = volume.To - centre;
+  const Mat3& axes = volume.axis;
+  const Vec3 volume_reach = axes.cwiseAbs() * volume.extent;
+  if (((offset.cwiseAbs() - volume_reach - half).array() > 0.0).any()) return false;
+  const Vec3 box_reach = axes.transpose().cwiseAbs() * half;
+  return !(((axes.transpose() * offset).cwiseAbs() - box_reach - volume.extent).array() > 0.0)
+              .any();
+}
+
+// A bounding volume of b in a's frame: the centre of its box, and its rectangle's axes and
+// centre.
+struct PlacedVolume {
+  Vec3 obb_centre;
+  Mat3 rss_axis;
+  Vec3 rss_centre;
+};
+
+// Working memory of NearPairSearch, kept between queries so that a query does not allocate.
+struct PairSearchScratch {
+  mesh_detail::SparseArray<PlacedTriangle> placed_triangles;  // b's, in a's frame
+  mesh_detail::SparseArray<PlacedVolume> placed_volumes;      // b's, in a's frame
+  std::vector<int> triangles;                                 // SmallerInLarger's near ones
+};
+
+PairSearchScratch& SearchScratch() {
+  thread_local PairSearchScratch scratch;
+  return scratch;
+}
+
+// Depth-first over one hierarchy, descending where `keep(bounding volume)` holds. Gives up
+// (returns false) once `triangles` holds more than `limit`.
+template <typename Keep>
+bool CollectTriangles(const FclModel& model, int node, const Keep& keep, size_t limit,
+                      std::vector<int>* triangles) {
+  const fcl::BVNode<fcl::OBBRSSd>& n = model.getBV(node);
+  if (!keep(n.bv.obb)) return true;
+  if (n.isLeaf()) {
+    triangles->push_back(n.primitiveId());
+    return triangles->size() <= limit;
+  }
+  return CollectTriangles(model, n.leftChild(), keep, limit, triangles) &&
+         CollectTriangles(model, n.rightChild(), keep, limit, triangles);
+}
+
+// Triangles of `model` whose volumes may come within reach of `bounds` (model frame), sorted;
+// false if there are more than `limit`.
+bool TrianglesNearBounds(const FclModel& model, const Eigen::AlignedBox3d& bounds, double reach,
+                         size_t limit, std::vector<int>* triangles) {
+  const Vec3 centre = bounds.center();
+  const Vec3 half = 0.5 * bounds.sizes() + Vec3::Constant(reach);
+  const auto near = [&centre, &half](const fcl::OBBd& volume) {
+    return MayOverlap(volume, centre, half);
+  };
+  if (!CollectTriangles(model, 0, near, limit, triangles)) return false;
+  std::sort(triangles->begin(), triangles->end());
+  return true;
+}
+
+// Every pair of a triangle of a and a triangle of b (placed in a's frame by R, T) within the
+// tolerance. Each path only narrows down the candidates; the test of a pair is always the
+// same: the triangles' bounds and planes, then FCL's exact triangle distance with b's corners
+// computed as R v + T (as FCL itself maps them), so all paths report bitwise the same pairs.
+class NearPairSearch {
  public:
-  PairTraversal(const FclModel& a, const FclModel& b, const Pose& X_ab, double tolerance,
-                std::vector<TrianglePairHit>* hits)
+  NearPairSearch(const MeshBvh& a, const MeshBvh& b, const Pose& X_ab, double tolerance,
+                 std::vector<TrianglePairHit>* hits)
       : a_(a),
         b_(b),
+        X_ab_(X_ab),
         R_(X_ab.linear()),
         T_(X_ab.translation()),
         tolerance_(tolerance),
-        hits_(hits) {}
+        reach_(tolerance + kBoundsSlack),
+        hits_(hits),
+        scratch_(SearchScratch()) {
+    scratch_.placed_triangles.Clear(b.model.num_tris);
+    scratch_.placed_volumes.Clear(b.model.getNumBVs());
+  }
+
+  // Every triangle of a against every triangle of b.
+  void EveryPair() const {
+    for (int ta = 0; ta < a_.model.num_tris; ++ta) {
+      for (int tb = 0; tb < b_.model.num_tris; ++tb) Test(ta, tb);
+    }
+  }
+
+  // The bounds of the mesh with fewer triangles through the other's hierarchy, then the
+  // triangles found there against every triangle of the smaller mesh. Finds nothing and
+  // returns false when more than `limit` triangles are near the bounds: a small mesh may
+  // still span a large one.
+  bool SmallerInLarger(size_t limit) const {
+    std::vector<int>& near = scratch_.triangles;
+    near.clear();
+    if (b_.model.num_tris <= a_.model.num_tris) {
+      Eigen::AlignedBox3d bounds;
+      for (int tb = 0; tb < b_.model.num_tris; ++tb) bounds.extend(PlacedOfB(tb).bounds);
+      if (!TrianglesNearBounds(a_.model, bounds, reach_, limit, &near)) return false;
+      for (const int ta : near) {
+        for (int tb = 0; tb < b_.model.num_tris; ++tb) Test(ta, tb);
+      }
+    } else {
+      const Pose X_ba = X_ab_.inverse();
+      Eigen::AlignedBox3d bounds;
+      for (int v = 0; v < a_.model.num_vertices; ++v) bounds.extend(X_ba * a_.model.vertices[v]);
+      if (!TrianglesNearBounds(b_.model, bounds, reach_, limit, &near)) return false;
+      for (int ta = 0; ta < a_.model.num_tris; ++ta) {
+        for (const int tb : near) Test(ta, tb);
+      }
+    }
+    return true;
+  }
+
+  // A traversal of both hierarchies, pairs of nodes pruned by the distance between their
+  // bounding volumes; the pairs then sorted.
+  void BothHierarchies() const {
+    const size_t first = hits_->size();
+    Visit(0, 0);
+    std::sort(hits_->begin() + static_cast<std::ptrdiff_t>(first), hits_->end(),
+              [](const TrianglePairHit& x, const TrianglePairHit& y) {
+                return std::tie(x.triangle_a, x.triangle_b) < std::tie(y.triangle_a, y.triangle_b);
+              });
+  }
+
+ private:
+  // Triangle tb of b in a's frame, mapped on first use in the query.
+  const PlacedTriangle& PlacedOfB(int tb) const {
+    if (scratch_.placed_triangles.Has(tb)) return scratch_.placed_triangles[tb];
+    const std::array<Vec3, 3>& corners = b_.triangle_corners[tb];
+    PlacedTriangle& placed = scratch_.placed_triangles.Set(tb);
+    for (int k = 0; k < 3; ++k) placed.corners[k] = R_ * corners[k] + T_;
+    placed.bounds = TriangleBounds(placed.corners[0], placed.corners[1], placed.corners[2]);
+    placed.plane.normal = R_ * b_.triangle_planes[tb].normal;
+    placed.plane.offset = placed.plane.normal.dot(placed.corners[0]);
+    return placed;
+  }
+
+  void Test(int ta, int tb) const {
+    const PlacedTriangle& placed = PlacedOfB(tb);
+    if (Apart(a_.triangle_bounds[ta], placed.bounds, reach_)) return;
+    const std::array<Vec3, 3>& corners = a_.triangle_corners[ta];
+    if (Beyond(a_.triangle_planes[ta], placed.corners, reach_) ||
+        Beyond(placed.plane, corners, reach_)) {
+      return;
+    }
+    fcl::Vector3d p, q;
+    const double distance = fcl::detail::TriangleDistance<double>::triDistance(
+        corners.data(), placed.corners.data(), p, q);
+    if (distance <= tolerance_) hits_->push_back({ta, tb, distance, p, q});
+  }
 
   void Visit(int node_a, int node_b) const {
-    const fcl::BVNode<fcl::OBBRSSd>& na = a_.getBV(node_a);
-    const fcl::BVNode<fcl::OBBRSSd>& nb = b_.getBV(node_b);
-    if (Far(na.bv, nb.bv)) return;
+    const fcl::BVNode<fcl::OBBRSSd>& na = a_.model.getBV(node_a);
+    const fcl::BVNode<fcl::OBBRSSd>& nb = b_.model.getBV(node_b);
+    if (Far(node_a, node_b)) return;
     if (na.isLeaf() && nb.isLeaf()) {
-      Leaf(na.primitiveId(), nb.primitiveId());
+      Test(na.primitiveId(), nb.primitiveId());
     } else if (nb.isLeaf() || (!na.isLeaf() && na.bv.size() >= nb.bv.size())) {
       Visit(na.leftChild(), node_b);
       Visit(na.rightChild(), node_b);
@@ -239,52 +462,40 @@ class PairTraversal {
     }
   }
 
- private:
-  // FCL's RSS distance (the rectangles' distance minus the radii), after a cheaper test of the
-  // boxes grown by half the tolerance each; both volumes share their axes
-  bool Far(const fcl::OBBRSSd& va, const fcl::OBBRSSd& vb) const {
-    const Mat3 at = va.obb.axis.transpose();
-    const Mat3 B = at * R_ * vb.obb.axis;
-    const Vec3 grow = Vec3::Constant(0.5 * tolerance_);
-    const Vec3 T_obb = at * (R_ * vb.obb.To + T_ - va.obb.To);
-    if (fcl::obbDisjoint(B, T_obb, Vec3(va.obb.extent + grow), Vec3(vb.obb.extent + grow))) {
-      return true;
+  // Node b's volume in a's frame, mapped on the first visit of the query.
+  const PlacedVolume& PlacedVolumeOfB(int node_b) const {
+    mesh_detail::SparseArray<PlacedVolume>& placed = scratch_.placed_volumes;
+    if (!placed.Has(node_b)) {
+      const fcl::OBBRSSd& v = b_.model.getBV(node_b).bv;
+      placed.Set(node_b) = {R_ * v.obb.To + T_, R_ * v.rss.axis, R_ * v.rss.To + T_};
     }
-    const Vec3 T_rss = at * (R_ * vb.rss.To + T_ - va.rss.To);
-    return fcl::rectDistance(B, T_rss, va.rss.l, vb.rss.l) - va.rss.r - vb.rss.r > tolerance_;
+    return placed[node_b];
   }
 
-  void Leaf(int triangle_a, int triangle_b) const {
-    const fcl::Triangle& ta = a_.tri_indices[triangle_a];
-    const fcl::Triangle& tb = b_.tri_indices[triangle_b];
-    fcl::Vector3d p, q;
-    const double distance = fcl::detail::TriangleDistance<double>::triDistance(
-        a_.vertices[ta[0]], a_.vertices[ta[1]], a_.vertices[ta[2]], b_.vertices[tb[0]],
-        b_.vertices[tb[1]], b_.vertices[tb[2]], R_, T_, p, q);
-    if (distance <= tolerance_) hits_->push_back({triangle_a, triangle_b, distance, p, q});
+  // The volumes' spheres beyond reach, or else FCL's RSS distance (the rectangles' distance
+  // minus the radii) beyond reach. (FCL's box test on top prunes hardly more and costs as much.)
+  bool Far(int node_a, int node_b) const {
+    const fcl::OBBRSSd& va = a_.model.getBV(node_a).bv;
+    const fcl::OBBRSSd& vb = b_.model.getBV(node_b).bv;
+    const PlacedVolume& pb = PlacedVolumeOfB(node_b);
+    const double spheres = a_.node_radii[node_a] + b_.node_radii[node_b] + reach_;
+    if ((pb.obb_centre - va.obb.To).squaredNorm() > spheres * spheres) return true;
+    const Mat3 at = va.rss.axis.transpose();
+    const Mat3 B = at * pb.rss_axis;
+    const Vec3 T = at * (pb.rss_centre - va.rss.To);
+    return fcl::rectDistance(B, T, va.rss.l, vb.rss.l) - va.rss.r - vb.rss.r > reach_;
   }
 
-  const FclModel& a_;
-  const FclModel& b_;
+  const MeshBvh& a_;
+  const MeshBvh& b_;
+  const Pose X_ab_;
   const Mat3 R_;
   const Vec3 T_;
   const double tolerance_;
+  const double reach_;
   std::vector<TrianglePairHit>* hits_;
+  PairSearchScratch& scratch_;
 };
-
-// Depth-first over one hierarchy, descending where `keep(bounding volume)` holds.
-template <typename Keep>
-void CollectTriangles(const FclModel& model, int node, const Keep& keep,
-                      std::vector<int>* triangles) {
-  const fcl::BVNode<fcl::OBBRSSd>& n = model.getBV(node);
-  if (!keep(n.bv.obb)) return;
-  if (n.isLeaf()) {
-    triangles->push_back(n.primitiveId());
-    return;
-  }
-  CollectTriangles(model, n.leftChild(), keep, triangles);
-  CollectTriangles(model, n.rightChild(), keep, triangles);
-}
 
 }  // namespace
 
@@ -295,9 +506,29 @@ const MeshTopology& Topology(const MeshBvh& bvh) {
 }
 
 void NearTrianglePairs(const MeshBvh& a, const MeshBvh& b, const Pose& X_ab, double tolerance,
-                       std::vector<TrianglePairHit>* hits) {
+                       std::vector<TrianglePairHit>* hits, PairSearch search) {
   if (a.model.getNumBVs() == 0 || b.model.getNumBVs() == 0) return;
-  PairTraversal(a.model, b.model, X_ab, tolerance, hits).Visit(0, 0);
+  const NearPairSearch finder(a, b, X_ab, tolerance, hits);
+  const long pairs = static_cast<long>(a.model.num_tris) * b.model.num_tris;
+  const int fewer = std::min(a.model.num_tris, b.model.num_tris);
+  switch (search) {
+    case PairSearch::kAuto:
+      if (pairs <= kEveryPairLimit) {
+        finder.EveryPair();
+      } else if (fewer > kSmallMeshTriangles || !finder.SmallerInLarger(kEveryPairLimit / fewer)) {
+        finder.BothHierarchies();
+      }
+      break;
+    case PairSearch::kEveryPair:
+      finder.EveryPair();
+      break;
+    case PairSearch::kSmallerInLarger:
+      finder.SmallerInLarger(std::numeric_limits<size_t>::max());
+      break;
+    case PairSearch::kBothHierarchies:
+      finder.BothHierarchies();
+      break;
+  }
 }
 
 void TrianglesNearBox(const MeshBvh& bvh, const Pose& X_mesh_box, const Vec3& half_extents,
@@ -307,8 +538,8 @@ void TrianglesNearBox(const MeshBvh& bvh, const Pose& X_mesh_box, const Vec3& ha
   box.axis = X_mesh_box.linear();
   box.To = X_mesh_box.translation();
   box.extent = half_extents;
-  CollectTriangles(
-      bvh.model, 0, [&box](const fcl::OBBd& volume) { return volume.overlap(box); }, triangles);
+  const auto overlaps = [&box](const fcl::OBBd& volume) { return volume.overlap(box); };
+  CollectTriangles(bvh.model, 0, overlaps, std::numeric_limits<size_t>::max(), triangles);
 }
 
 void TrianglesBelowPlane(const MeshBvh& bvh, const Vec3& normal, double height,
@@ -318,7 +549,7 @@ void TrianglesBelowPlane(const MeshBvh& bvh, const Vec3& normal, double height,
     const double reach = (volume.axis.transpose() * normal).cwiseAbs().dot(volume.extent);
     return normal.dot(volume.To) - reach < height;
   };
-  CollectTriangles(bvh.model, 0, below, triangles);
+  CollectTriangles(bvh.model, 0, below, std::numeric_limits<size_t>::max(), triangles);
 }
 
 }  // namespace mesh_detail

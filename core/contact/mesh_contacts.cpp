@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <tuple>
 
 #include "core/contact/mesh_query.h"
@@ -21,21 +22,57 @@ using mesh_detail::TrianglePairHit;
 namespace {
 
 using mesh_detail::BarycentricCoordinates;
+using mesh_detail::BarycentricMap;
 using mesh_detail::ClosestPointsOfTriangles;
 using mesh_detail::kFeatureNormalDistance;
 using mesh_detail::kMinNormalLength;
+using mesh_detail::SparseArray;
 using mesh_detail::TrianglePairPoints;
 using mesh_detail::TrianglesCross;
 
 // Klamp't's rule: a barycentric coordinate this close to zero counts as zero
 constexpr double kBarycentricZero = 1e-3;
 
-Triangle3 MeshTriangle(const CollisionGeometry& mesh, int triangle,
-                       const Pose& X = Pose::Identity()) {
+Triangle3 MeshTriangle(const CollisionGeometry& mesh, int triangle) {
   const Eigen::Vector3i& t = mesh.mesh().triangles[triangle];
   const std::vector<Vec3>& v = mesh.mesh().vertices;
-  return {X * v[t[0]], X * v[t[1]], X * v[t[2]]};
+  return {v[t[0]], v[t[1]], v[t[2]]};
 }
+
+// b's vertices in a's frame, each mapped once per query and only when asked for.
+class PlacedVertices {
+ public:
+  void Reset(const TriangleMesh& mesh, const Pose& X) {
+    mesh_ = &mesh;
+    X_ = X;
+    positions_.Clear(mesh.vertices.size());
+  }
+
+  const Vec3& operator[](int vertex) {
+    if (!positions_.Has(vertex)) positions_.Set(vertex) = X_ * mesh_->vertices[vertex];
+    return positions_[vertex];
+  }
+
+ private:
+  const TriangleMesh* mesh_ = nullptr;
+  Pose X_ = Pose::Identity();
+  SparseArray<Vec3> positions_;
+};
+
+// The meshes of one query: a in its own frame, b placed in it by X_ab.
+struct MeshPair {
+  const CollisionGeometry& a;
+  const CollisionGeometry& b;
+  const Pose& X_ab;
+  PlacedVertices* b_vertices;
+
+  Triangle3 TriangleA(int t) const { return MeshTriangle(a, t); }
+  Triangle3 TriangleB(int t) const {
+    const Eigen::Vector3i& corners = b.mesh().triangles[t];
+    return {(*b_vertices)[corners[0]], (*b_vertices)[corners[1]], (*b_vertices)[corners[2]]};
+  }
+  const Vec3& VertexB(int vertex) const { return (*b_vertices)[vertex]; }
+};
 
 Vec3 UnitOrZero(const Vec3& v) {
   const double length = v.norm();
@@ -68,15 +105,16 @@ Vec3 EdgeEdgeNormal(const Triangle3& ta, int ea, const Triangle3& tb, int eb, co
 
 // Klamp't's ContactNormal: the normal from b into a at nearly coincident closest points p (on
 // a's triangle) and q (on b's), all in a's frame.
-Vec3 MeshMeshFeatureNormal(const CollisionGeometry& a, int ta, const CollisionGeometry& b, int tb,
-                           const Pose& X_ab, const Vec3& p, const Vec3& q) {
-  const Triangle3 tri_a = MeshTriangle(a, ta);
-  const Triangle3 tri_b = MeshTriangle(b, tb, X_ab);
+Vec3 MeshMeshFeatureNormal(const MeshPair& m, int ta, int tb, const Vec3& p, const Vec3& q) {
+  const CollisionGeometry& a = m.a;
+  const CollisionGeometry& b = m.b;
+  const Triangle3 tri_a = m.TriangleA(ta);
+  const Triangle3 tri_b = m.TriangleB(tb);
   const TriangleFeature fa = ClassifyFeature(BarycentricCoordinates(p, tri_a));
   const TriangleFeature fb = ClassifyFeature(BarycentricCoordinates(q, tri_b));
   using Type = TriangleFeature::Type;
   if (fa.type == Type::kFace) return -a.triangle_normals()[ta];
-  const Mat3 R = X_ab.linear();
+  const Mat3 R = m.X_ab.linear();
   if (fb.type == Type::kFace) return R * b.triangle_normals()[tb];
   const Vec3 na = FeatureNormal(a, ta, fa);
   const Vec3 nb = R * FeatureNormal(b, tb, fb);
@@ -99,17 +137,31 @@ constexpr double kOverFaceTolerance = 1e-9;
 // A mesh vertex over a face of the other mesh.
 struct VertexHit {
   int vertex = 0;
+  int face = 0;                ///< the other mesh's triangle it lies over
   double distance = 0.0;       ///< signed along the face normal, negative behind the face
   Vec3 normal = Vec3::Zero();  ///< from b into a, in a's frame
   Vec3 on_a = Vec3::Zero();
   Vec3 on_b = Vec3::Zero();
 };
 
+// Working memory of MeshMeshContacts, kept between calls so that a call does not allocate.
 struct MeshMeshScratch {
+  PlacedVertices b_vertices;
   std::vector<TrianglePairHit> hits;
   std::vector<PairCandidate> candidates;
+  // SelectPairs: the candidates taking part, each triangle's closest one, the result
   std::vector<int> order;
+  SparseArray<int> closest_partner;
+  std::vector<int> owners;  // the triangles that have a closest partner
   std::vector<int> selected;
+  // CollectVertexHits: the candidates chained by face (GroupByFace), the face each vertex was
+  // last tested against, each vertex's nearest face, the vertices that have one, the result
+  std::vector<int> faces;
+  SparseArray<int> first_of_face;
+  std::vector<int> next_of_face;
+  SparseArray<int> tested_face;
+  SparseArray<VertexHit> nearest_face;
+  std::vector<int> vertices;
   std::vector<VertexHit> vertex_hits;
 };
 
@@ -121,14 +173,13 @@ MeshMeshScratch& Scratch() {
 // Crossing pairs have distance 0 and their closest points at the middle of the crossing. FCL
 // reports other pairs at distance exactly 0 (touching) with arbitrary points: those are
 // recomputed from the triangles' features.
-void FindCrossings(const CollisionGeometry& a, const CollisionGeometry& b, const Pose& X_ab,
-                   MeshMeshScratch* s) {
+void FindCrossings(const MeshPair& m, MeshMeshScratch* s) {
   s->candidates.clear();
   for (const TrianglePairHit& hit : s->hits) {
     PairCandidate candidate{hit, false};
     if (hit.distance < kFeatureNormalDistance) {
-      const Triangle3 ta = MeshTriangle(a, hit.triangle_a);
-      const Triangle3 tb = MeshTriangle(b, hit.triangle_b, X_ab);
+      const Triangle3 ta = m.TriangleA(hit.triangle_a);
+      const Triangle3 tb = m.TriangleB(hit.triangle_b);
       Vec3 middle;
       if (TrianglesCross(ta, tb, &middle)) {
         candidate = {{hit.triangle_a, hit.triangle_b, 0.0, middle, middle}, true};
@@ -148,16 +199,16 @@ void FindCrossings(const CollisionGeometry& a, const CollisionGeometry& b, const
 // that has sunk behind the face is pushed back out instead of further in (a closest-point
 // direction flips when surfaces cross). Otherwise the feature normal or the closest-point
 // direction, as Klamp't does.
-Vec3 PairNormal(const CollisionGeometry& a, const CollisionGeometry& b, const Pose& X_ab,
-                const PairCandidate& c, double* signed_distance, bool* from_face) {
+Vec3 PairNormal(const MeshPair& m, const PairCandidate& c, double* signed_distance,
+                bool* from_face) {
   *from_face = false;
   const Vec3& p = c.hit.point_a;
   const Vec3& q = c.hit.point_b;
   const double d = c.hit.distance;
   if (!c.crossing) {
     using Type = TriangleFeature::Type;
-    const Triangle3 tri_a = MeshTriangle(a, c.hit.triangle_a);
-    const Triangle3 tri_b = MeshTriangle(b, c.hit.triangle_b, X_ab);
+    const Triangle3 tri_a = m.TriangleA(c.hit.triangle_a);
+    const Triangle3 tri_b = m.TriangleB(c.hit.triangle_b);
     const bool q_on_face = ClassifyFeature(BarycentricCoordinates(q, tri_b)).type == Type::kFace;
     const bool p_on_face = ClassifyFeature(BarycentricCoordinates(p, tri_a)).type == Type::kFace;
     // parallel faces: their closest points are an arbitrary spot of the overlap; the vertex
@@ -165,9 +216,9 @@ Vec3 PairNormal(const CollisionGeometry& a, const CollisionGeometry& b, const Po
     if (q_on_face && p_on_face) return Vec3::Zero();
     Vec3 face_normal = Vec3::Zero();
     if (q_on_face) {
-      face_normal = X_ab.linear() * b.triangle_normals()[c.hit.triangle_b];
+      face_normal = m.X_ab.linear() * m.b.triangle_normals()[c.hit.triangle_b];
     } else if (p_on_face) {
-      face_normal = -a.triangle_normals()[c.hit.triangle_a];
+      face_normal = -m.a.triangle_normals()[c.hit.triangle_a];
     }
     if (!face_normal.isZero()) {
       *signed_distance = face_normal.dot(p - q);
@@ -177,31 +228,38 @@ Vec3 PairNormal(const CollisionGeometry& a, const CollisionGeometry& b, const Po
   }
   *signed_distance = d;
   return d < kFeatureNormalDistance
-             ? MeshMeshFeatureNormal(a, c.hit.triangle_a, b, c.hit.triangle_b, X_ab, p, q)
+             ? MeshMeshFeatureNormal(m, c.hit.triangle_a, c.hit.triangle_b, p, q)
              : Vec3((p - q) / d);
 }
 
 // Appends to `selected` the closest partner of every triangle of one side: `side` 0 groups by
 // a's triangles, 1 by b's. Ties go to crossing pairs, then to the lower partner index.
-void SelectClosestPartners(int side, MeshMeshScratch* s) {
-  const auto key = [s, side](int i) {
-    const PairCandidate& c = s->candidates[i];
-    const int own = side == 0 ? c.hit.triangle_a : c.hit.triangle_b;
-    const int partner = side == 0 ? c.hit.triangle_b : c.hit.triangle_a;
-    return std::make_tuple(own, c.hit.distance, !c.crossing, partner);
+void SelectClosestPartners(int side, int triangle_count, MeshMeshScratch* s) {
+  const auto own = [side](const PairCandidate& c) {
+    return side == 0 ? c.hit.triangle_a : c.hit.triangle_b;
   };
-  std::sort(s->order.begin(), s->order.end(), [&key](int i, int j) { return key(i) < key(j); });
-  for (size_t k = 0; k < s->order.size(); ++k) {
-    if (k == 0 || std::get<0>(key(s->order[k])) != std::get<0>(key(s->order[k - 1]))) {
-      s->selected.push_back(s->order[k]);
+  const auto key = [side](const PairCandidate& c) {
+    const int partner = side == 0 ? c.hit.triangle_b : c.hit.triangle_a;
+    return std::make_tuple(c.hit.distance, !c.crossing, partner);
+  };
+  s->closest_partner.Clear(triangle_count);
+  s->owners.clear();
+  for (const int i : s->order) {
+    const int triangle = own(s->candidates[i]);
+    if (!s->closest_partner.Has(triangle)) {
+      s->closest_partner.Set(triangle) = i;
+      s->owners.push_back(triangle);
+    } else if (key(s->candidates[i]) < key(s->candidates[s->closest_partner[triangle]])) {
+      s->closest_partner.Set(triangle) = i;
     }
   }
+  for (const int triangle : s->owners) s->selected.push_back(s->closest_partner[triangle]);
 }
 
 // Crossing triangles (the meshes interpenetrate beyond the boundary layer) give no usable
 // normal: a side face crossing a bottom face would push sideways. They only take part when no
 // triangle pair of the two meshes is separated, so deep overlaps still produce contacts.
-void SelectPairs(MeshMeshScratch* s) {
+void SelectPairs(int triangles_a, int triangles_b, MeshMeshScratch* s) {
   s->order.clear();
   for (size_t i = 0; i < s->candidates.size(); ++i) {
     if (!s->candidates[i].crossing) s->order.push_back(static_cast<int>(i));
@@ -210,8 +268,8 @@ void SelectPairs(MeshMeshScratch* s) {
     for (size_t i = 0; i < s->candidates.size(); ++i) s->order.push_back(static_cast<int>(i));
   }
   s->selected.clear();
-  SelectClosestPartners(0, s);
-  SelectClosestPartners(1, s);
+  SelectClosestPartners(0, triangles_a, s);
+  SelectClosestPartners(1, triangles_b, s);
   const auto pair = [s](int i) {
     return std::make_pair(s->candidates[i].hit.triangle_a, s->candidates[i].hit.triangle_b);
   };
@@ -220,51 +278,100 @@ void SelectPairs(MeshMeshScratch* s) {
   s->selected.erase(std::unique(s->selected.begin(), s->selected.end()), s->selected.end());
 }
 
+// A face of the other mesh that CollectVertexHits holds vertices against, in a's frame.
+struct FaceFrame {
+  FaceFrame(const MeshPair& m, int face_index, bool face_of_b)
+      : face(face_index),
+        triangle(face_of_b ? m.TriangleB(face) : m.TriangleA(face)),
+        to_face(triangle),
+        outward(face_of_b ? Vec3(m.X_ab.linear() * m.b.triangle_normals()[face])
+                          : m.a.triangle_normals()[face]) {}
+
+  int face;
+  Triangle3 triangle;
+  BarycentricMap to_face;
+  Vec3 outward;
+};
+
+// Vertex `vertex` at v (a's frame) over the face within `tolerance`, if it is: the vertex must
+// project onto the face or its boundary (aligned boxes put corners on the partner's edges).
+std::optional<VertexHit> VertexOverFace(const FaceFrame& f, int vertex, const Vec3& v,
+                                        double tolerance, bool from_a) {
+  const Vec3 barycentric = f.to_face(v);
+  if ((barycentric.array() < -kOverFaceTolerance).any()) return std::nullopt;
+  const Vec3 projected = barycentric[0] * f.triangle[0] + barycentric[1] * f.triangle[1] +
+                         barycentric[2] * f.triangle[2];
+  const double distance = f.outward.dot(v - projected);
+  if (distance > tolerance || distance < -tolerance) return std::nullopt;
+  // touching the face's boundary: the face normal is one of several; the triangle pairs'
+  // feature normals decide there
+  const bool on_boundary = (barycentric.array() <= kOverFaceTolerance).any();
+  if (on_boundary && std::abs(distance) < kFeatureNormalDistance) return std::nullopt;
+  VertexHit hit{vertex, f.face, distance, from_a ? f.outward : Vec3(-f.outward), v, projected};
+  if (!from_a) std::swap(hit.on_a, hit.on_b);
+  return hit;
+}
+
+// Chains the candidates by their face of the other mesh (b's triangle if `from_a`), so that
+// each face is set up once: s->faces holds each face once, and each face's candidates run
+// from s->first_of_face through s->next_of_face (-1 ends the chain).
+void GroupByFace(bool from_a, int face_count, MeshMeshScratch* s) {
+  s->first_of_face.Clear(face_count);
+  s->faces.clear();
+  s->next_of_face.resize(s->candidates.size());
+  for (int i = static_cast<int>(s->candidates.size()) - 1; i >= 0; --i) {
+    const PairCandidate& c = s->candidates[i];
+    const int face = from_a ? c.hit.triangle_b : c.hit.triangle_a;
+    s->next_of_face[i] = s->first_of_face.Has(face) ? s->first_of_face[face] : -1;
+    if (!s->first_of_face.Has(face)) s->faces.push_back(face);
+    s->first_of_face.Set(face) = i;
+  }
+}
+
+// Keeps each vertex's nearest face (the lowest-numbered of equally near ones).
+void KeepNearest(const VertexHit& hit, MeshMeshScratch* s) {
+  if (!s->nearest_face.Has(hit.vertex)) {
+    s->nearest_face.Set(hit.vertex) = hit;
+    s->vertices.push_back(hit.vertex);
+    return;
+  }
+  const VertexHit& kept = s->nearest_face[hit.vertex];
+  if (std::make_pair(std::abs(hit.distance), hit.face) <
+      std::make_pair(std::abs(kept.distance), kept.face)) {
+    s->nearest_face.Set(hit.vertex) = hit;
+  }
+}
+
 // The vertices of one mesh that lie over a face of the other within `tolerance` (or behind it by
 // less than `tolerance`), each with its nearest face: a face resting on a face touches at its
 // corners, which the closest points of triangle pairs alone do not find. `from_a` picks whose
-// vertices; everything is in a's frame.
-void CollectVertexHits(const CollisionGeometry& a, const CollisionGeometry& b, const Pose& X_ab,
-                       const std::vector<PairCandidate>& candidates, double tolerance, bool from_a,
-                       std::vector<VertexHit>* hits) {
-  hits->clear();
-  const CollisionGeometry& own = from_a ? a : b;
-  for (const PairCandidate& c : candidates) {
-    const int own_triangle = from_a ? c.hit.triangle_a : c.hit.triangle_b;
-    const int face = from_a ? c.hit.triangle_b : c.hit.triangle_a;
-    const Triangle3 face_triangle = from_a ? MeshTriangle(b, face, X_ab) : MeshTriangle(a, face);
-    const Vec3 outward =
-        from_a ? Vec3(X_ab.linear() * b.triangle_normals()[face]) : a.triangle_normals()[face];
-    for (int k = 0; k < 3; ++k) {
-      const int vertex = own.mesh().triangles[own_triangle][k];
-      const Vec3 v =
-          from_a ? own.mesh().vertices[vertex] : Vec3(X_ab * own.mesh().vertices[vertex]);
-      // the vertex must project onto the face or its boundary (aligned boxes put corners on
-      // the partner's edges)
-      const Vec3 barycentric = BarycentricCoordinates(v, face_triangle);
-      if ((barycentric.array() < -kOverFaceTolerance).any()) continue;
-      const Vec3 projected = barycentric[0] * face_triangle[0] + barycentric[1] * face_triangle[1] +
-                             barycentric[2] * face_triangle[2];
-      const double distance = outward.dot(v - projected);
-      if (distance > tolerance || distance < -tolerance) continue;
-      // touching the face's boundary: the face normal is one of several; the triangle pairs'
-      // feature normals decide there
-      const bool on_boundary = (barycentric.array() <= kOverFaceTolerance).any();
-      if (on_boundary && std::abs(distance) < kFeatureNormalDistance) continue;
-      VertexHit hit{vertex, distance, from_a ? outward : Vec3(-outward), v, projected};
-      if (!from_a) std::swap(hit.on_a, hit.on_b);
-      hits->push_back(hit);
+// vertices; everything is in a's frame. The result is s->vertex_hits, in vertex order.
+void CollectVertexHits(const MeshPair& m, double tolerance, bool from_a, MeshMeshScratch* s) {
+  const CollisionGeometry& own = from_a ? m.a : m.b;
+  const CollisionGeometry& other = from_a ? m.b : m.a;
+  GroupByFace(from_a, other.mesh().triangle_count(), s);
+  s->nearest_face.Clear(own.mesh().vertices.size());
+  s->tested_face.Clear(own.mesh().vertices.size());
+  s->vertices.clear();
+  for (const int face : s->faces) {
+    const FaceFrame frame(m, face, from_a);
+    for (int i = s->first_of_face[face]; i >= 0; i = s->next_of_face[i]) {
+      const PairCandidate& c = s->candidates[i];
+      const Eigen::Vector3i& corners =
+          own.mesh().triangles[from_a ? c.hit.triangle_a : c.hit.triangle_b];
+      for (int k = 0; k < 3; ++k) {
+        const int vertex = corners[k];
+        if (s->tested_face.Has(vertex) && s->tested_face[vertex] == face) continue;
+        s->tested_face.Set(vertex) = face;
+        const Vec3& v = from_a ? own.mesh().vertices[vertex] : m.VertexB(vertex);
+        const std::optional<VertexHit> hit = VertexOverFace(frame, vertex, v, tolerance, from_a);
+        if (hit) KeepNearest(*hit, s);
+      }
     }
   }
-  // keep each vertex's nearest face, in vertex order
-  std::sort(hits->begin(), hits->end(), [](const VertexHit& x, const VertexHit& y) {
-    return std::make_tuple(x.vertex, std::abs(x.distance)) <
-           std::make_tuple(y.vertex, std::abs(y.distance));
-  });
-  hits->erase(
-      std::unique(hits->begin(), hits->end(),
-                  [](const VertexHit& x, const VertexHit& y) { return x.vertex == y.vertex; }),
-      hits->end());
+  std::sort(s->vertices.begin(), s->vertices.end());
+  s->vertex_hits.clear();
+  for (const int vertex : s->vertices) s->vertex_hits.push_back(s->nearest_face[vertex]);
 }
 
 // a contact between point p on a and q on b (a's frame) with normal n (a's frame): positioned
@@ -332,14 +439,16 @@ void MeshMeshContacts(const CollisionGeometry& a, const Pose& X_Wa, double pad_a
   s.hits.clear();
   mesh_detail::NearTrianglePairs(a.bvh(), b.bvh(), X_ab, tolerance, &s.hits);
   if (s.hits.empty()) return;
-  FindCrossings(a, b, X_ab, &s);
+  s.b_vertices.Reset(b.mesh(), X_ab);
+  const MeshPair m{a, b, X_ab, &s.b_vertices};
+  FindCrossings(m, &s);
   const bool crossing = std::any_of(s.candidates.begin(), s.candidates.end(),
                                     [](const PairCandidate& c) { return c.crossing; });
-  SelectPairs(&s);
+  SelectPairs(a.mesh().triangle_count(), b.mesh().triangle_count(), &s);
   // vertices over faces first: their face normals tell which way the pair separates
   Vec3 reference = Vec3::Zero();
   for (const bool from_a : {true, false}) {
-    CollectVertexHits(a, b, X_ab, s.candidates, tolerance, from_a, &s.vertex_hits);
+    CollectVertexHits(m, tolerance, from_a, &s);
     for (const VertexHit& hit : s.vertex_hits) {
       reference += hit.normal;
       AppendContact(X_Wa, pad_a, pad_b, hit.on_a, hit.on_b, hit.normal, tolerance - hit.distance,
@@ -350,7 +459,7 @@ void MeshMeshContacts(const CollisionGeometry& a, const Pose& X_Wa, double pad_a
     const PairCandidate& c = s.candidates[i];
     double signed_distance = c.hit.distance;
     bool from_face = false;
-    Vec3 n_a = PairNormal(a, b, X_ab, c, &signed_distance, &from_face);
+    Vec3 n_a = PairNormal(m, c, &signed_distance, &from_face);
     if (!(n_a.norm() >= kMinNormalLength)) continue;  // also rejects NaN
     if (!from_face && n_a.dot(reference) < 0.0) {
       // an edge or vertex closest-point direction flips once the surfaces have crossed

@@ -6,6 +6,7 @@
 // the feature normals in mesh_contacts.cpp.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "core/contact/collision_geometry.h"
@@ -16,6 +17,39 @@ namespace lamina::core::mesh_detail {
 /// gNormalFromGeometryTolerance); normals shorter than kMinNormalLength are dropped.
 inline constexpr double kFeatureNormalDistance = 1e-5;
 inline constexpr double kMinNormalLength = 1e-4;
+
+/// Values over the vertices, triangles or hierarchy nodes of a mesh, all emptied at once in
+/// constant time: a query on a large terrain touches few of them. Keep one per thread and
+/// reuse it, so that queries do not allocate.
+template <typename T>
+class SparseArray {
+ public:
+  /// Empties the array and makes room for indices below `size`.
+  void Clear(size_t size) {
+    if (stamps_.size() < size) {
+      values_.resize(size);
+      stamps_.resize(size, 0);
+    }
+    if (++generation_ == 0) {  // wrapped around: forget every stamp
+      std::fill(stamps_.begin(), stamps_.end(), 0u);
+      generation_ = 1;
+    }
+  }
+  /// True when i was set since the last Clear.
+  bool Has(int i) const { return stamps_[i] == generation_; }
+  /// The value at i (meaningful when Has(i)).
+  const T& operator[](int i) const { return values_[i]; }
+  /// Marks i as set; returns its value to assign.
+  T& Set(int i) {
+    stamps_[i] = generation_;
+    return values_[i];
+  }
+
+ private:
+  std::vector<T> values_;
+  std::vector<unsigned> stamps_;  // values_[i] is set when stamps_[i] == generation_
+  unsigned generation_ = 0;
+};
 
 /// Adjacency of a collision mesh. Vertices at identical positions count as one vertex.
 struct MeshTopology {
@@ -55,10 +89,19 @@ struct TrianglePairHit {
   Vec3 point_b = Vec3::Zero();
 };
 
+/// How NearTrianglePairs narrows down the triangle pairs it measures. Every way reports
+/// bitwise the same pairs; they differ only in speed.
+enum class PairSearch {
+  kAuto,             ///< the fastest for the two meshes' sizes
+  kEveryPair,        ///< every triangle of a against every triangle of b
+  kSmallerInLarger,  ///< the smaller mesh's bounds through the larger mesh's hierarchy
+  kBothHierarchies,  ///< a traversal of both hierarchies
+};
+
 /// Every triangle pair of a and b (b placed in a's frame by X_ab) whose distance is at most
-/// `tolerance`, appended to `hits` in traversal order (deterministic).
+/// `tolerance`, appended to `hits` in (triangle_a, triangle_b) order.
 void NearTrianglePairs(const MeshBvh& a, const MeshBvh& b, const Pose& X_ab, double tolerance,
-                       std::vector<TrianglePairHit>* hits);
+                       std::vector<TrianglePairHit>* hits, PairSearch search = PairSearch::kAuto);
 
 /// Triangles whose bounding volumes overlap the box with centre frame X_mesh_box and
 /// `half_extents`, appended to `triangles` (a superset of the triangles touching the box).

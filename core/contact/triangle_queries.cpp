@@ -269,13 +269,24 @@ TrianglePoint ClosestPointOnTriangle(const Vec3& p, const Triangle3& t) {
 }
 
 Vec3 BarycentricCoordinates(const Vec3& p, const Triangle3& t) {
-  const Vec3 e0 = t[1] - t[0], e1 = t[2] - t[0], q = p - t[0];
-  const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1);
-  const double denominator = d00 * d11 - d01 * d01;
-  if (!(denominator > 1e-24 * d00 * d11)) return Vec3(1.0, 0.0, 0.0);
-  const double d20 = q.dot(e0), d21 = q.dot(e1);
-  const double v = (d11 * d20 - d01 * d21) / denominator;
-  const double w = (d00 * d21 - d01 * d20) / denominator;
+  return BarycentricMap(t)(p);
+}
+
+BarycentricMap::BarycentricMap(const Triangle3& t)
+    : origin_(t[0]), e0_(t[1] - t[0]), e1_(t[2] - t[0]) {
+  d00_ = e0_.dot(e0_);
+  d01_ = e0_.dot(e1_);
+  d11_ = e1_.dot(e1_);
+  denominator_ = d00_ * d11_ - d01_ * d01_;
+  degenerate_ = !(denominator_ > 1e-24 * d00_ * d11_);
+}
+
+Vec3 BarycentricMap::operator()(const Vec3& p) const {
+  if (degenerate_) return Vec3(1.0, 0.0, 0.0);
+  const Vec3 q = p - origin_;
+  const double d20 = q.dot(e0_), d21 = q.dot(e1_);
+  const double v = (d11_ * d20 - d01_ * d21) / denominator_;
+  const double w = (d00_ * d21 - d01_ * d20) / denominator_;
   return Vec3(1.0 - v - w, v, w);
 }
 

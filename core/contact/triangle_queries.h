@@ -25,6 +25,19 @@ TrianglePoint ClosestPointOnTriangle(const Vec3& p, const Triangle3& triangle);
 /// degenerate triangle.
 Vec3 BarycentricCoordinates(const Vec3& p, const Triangle3& triangle);
 
+/// BarycentricCoordinates for many points of one triangle: the triangle's part is computed
+/// once. Gives bitwise the same coordinates.
+class BarycentricMap {
+ public:
+  explicit BarycentricMap(const Triangle3& triangle);
+  Vec3 operator()(const Vec3& p) const;
+
+ private:
+  Vec3 origin_, e0_, e1_;
+  double d00_, d01_, d11_, denominator_;
+  bool degenerate_;
+};
+
 /// Closest points of two triangles: the nearest of the vertex-triangle and edge-edge pairs
 /// (exact for triangles that do not cross).
 struct TrianglePairPoints {

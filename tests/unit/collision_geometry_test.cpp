@@ -1,15 +1,19 @@
 // SPDX-License-Identifier: MIT
 // Collision geometry: meshes with scale and placement baked in, primitives kept analytic when
-// their scale allows it, the mesh topology built with the hierarchy, the hierarchy queries,
+// their scale allows it, the mesh topology built with the hierarchy, the hierarchy queries
+// (every way of finding near triangle pairs gives the same pairs), the sparse scratch arrays,
 // and the cache that builds each (mesh, placement) once.
 #include "core/contact/collision_geometry.h"
 
 #include <algorithm>
 #include <cmath>
+#include <random>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
 #include "core/contact/mesh_query.h"
+#include "core/contact/triangle_queries.h"
 #include "core/io/mesh_file.h"
 #include "tests/common/test_support.h"
 
@@ -190,6 +194,220 @@ TEST(CollisionGeometryTest, BoxQueryFindsTheTrianglesItTouches) {
   // the top face z = 1 is triangles 10 and 11; bounding volumes may add neighbours, never drop
   EXPECT_TRUE(std::binary_search(triangles.begin(), triangles.end(), 10));
   EXPECT_TRUE(std::binary_search(triangles.begin(), triangles.end(), 11));
+}
+
+// ---- near triangle pairs ----
+
+using core::mesh_detail::PairSearch;
+using core::mesh_detail::TrianglePairHit;
+
+std::shared_ptr<const CollisionGeometry> MeshGeometry(
+    std::shared_ptr<const core::TriangleMesh> mesh, const Vec3& scale = Vec3::Ones()) {
+  return CollisionGeometry::Build(MeshDesc(std::move(mesh), scale));
+}
+
+// A bumpy n x n grid of squares (2 n^2 triangles) over [0, 1]^2, heights up to 0.1.
+std::shared_ptr<const core::TriangleMesh> BumpyGrid(int n) {
+  auto mesh = std::make_shared<core::TriangleMesh>();
+  for (int i = 0; i <= n; ++i) {
+    for (int j = 0; j <= n; ++j) {
+      const double x = static_cast<double>(i) / n, y = static_cast<double>(j) / n;
+      mesh->vertices.emplace_back(x, y, 0.05 * (std::sin(7 * x) * std::cos(5 * y) + 1));
+    }
+  }
+  const auto at = [n](int i, int j) { return i * (n + 1) + j; };
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      mesh->triangles.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      mesh->triangles.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  }
+  return mesh;
+}
+
+// Turned by up to `angle` about each axis, moved by up to `spread` along each from `centre`.
+Pose RandomPose(std::mt19937& random, const Vec3& centre, double spread, double angle) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Pose pose = Pose::Identity();
+  pose.linear() =
+      core::RotationFromRollPitchYaw(angle * u(random), angle * u(random), angle * u(random));
+  pose.translation() = centre + spread * Vec3(u(random), u(random), u(random));
+  return pose;
+}
+
+std::vector<TrianglePairHit> NearPairs(const CollisionGeometry& a, const CollisionGeometry& b,
+                                       const Pose& X_ab, double tolerance, PairSearch search) {
+  std::vector<TrianglePairHit> hits;
+  core::mesh_detail::NearTrianglePairs(a.bvh(), b.bvh(), X_ab, tolerance, &hits, search);
+  return hits;
+}
+
+void ExpectSameHits(const std::vector<TrianglePairHit>& expected,
+                    const std::vector<TrianglePairHit>& actual, const std::string& what) {
+  ASSERT_EQ(expected.size(), actual.size()) << what;
+  for (size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(expected[i].triangle_a, actual[i].triangle_a) << what << " hit " << i;
+    EXPECT_EQ(expected[i].triangle_b, actual[i].triangle_b) << what << " hit " << i;
+    EXPECT_EQ(expected[i].distance, actual[i].distance) << what << " hit " << i;
+    EXPECT_EQ(expected[i].point_a, actual[i].point_a) << what << " hit " << i;
+    EXPECT_EQ(expected[i].point_b, actual[i].point_b) << what << " hit " << i;
+  }
+}
+
+// Each triangle's corners placed by X.
+std::vector<core::mesh_detail::Triangle3> PlacedTriangles(const CollisionGeometry& mesh,
+                                                          const Pose& X) {
+  std::vector<core::mesh_detail::Triangle3> triangles;
+  for (const Eigen::Vector3i& c : mesh.mesh().triangles) {
+    const std::vector<Vec3>& v = mesh.mesh().vertices;
+    triangles.push_back({X * v[c[0]], X * v[c[1]], X * v[c[2]]});
+  }
+  return triangles;
+}
+
+// True when the triangles' boxes are at least `gap` apart along some axis.
+bool BoxesApart(const core::mesh_detail::Triangle3& s, const core::mesh_detail::Triangle3& t,
+                double gap) {
+  for (int axis = 0; axis < 3; ++axis) {
+    const double s_low = std::min({s[0][axis], s[1][axis], s[2][axis]});
+    const double s_high = std::max({s[0][axis], s[1][axis], s[2][axis]});
+    const double t_low = std::min({t[0][axis], t[1][axis], t[2][axis]});
+    const double t_high = std::max({t[0][axis], t[1][axis], t[2][axis]});
+    if (s_low - t_high >= gap || t_low - s_high >= gap) return true;
+  }
+  return false;
+}
+
+// Every pair whose distance is surely below the tolerance is reported (the closest points of
+// edges and vertices bound the distance from above, the triangles' boxes from below), and
+// every reported pair is within it.
+void ExpectComplete(const CollisionGeometry& a, const CollisionGeometry& b, const Pose& X_ab,
+                    double tolerance, const std::vector<TrianglePairHit>& hits) {
+  std::vector<std::pair<int, int>> reported;
+  for (const TrianglePairHit& hit : hits) {
+    EXPECT_LE(hit.distance, tolerance);
+    reported.emplace_back(hit.triangle_a, hit.triangle_b);
+  }
+  std::sort(reported.begin(), reported.end());
+  const std::vector<core::mesh_detail::Triangle3> triangles_a =
+      PlacedTriangles(a, Pose::Identity());
+  const std::vector<core::mesh_detail::Triangle3> triangles_b = PlacedTriangles(b, X_ab);
+  for (int ta = 0; ta < a.mesh().triangle_count(); ++ta) {
+    for (int tb = 0; tb < b.mesh().triangle_count(); ++tb) {
+      if (BoxesApart(triangles_a[ta], triangles_b[tb], tolerance)) continue;
+      const double bound =
+          core::mesh_detail::ClosestPointsOfTriangles(triangles_a[ta], triangles_b[tb]).distance;
+      if (bound >= tolerance - 1e-9) continue;
+      EXPECT_TRUE(std::binary_search(reported.begin(), reported.end(), std::make_pair(ta, tb)))
+          << "pair " << ta << ", " << tb << " at most " << bound << " apart is missing";
+    }
+  }
+}
+
+// b at `poses` random poses (a's frame, from `random_pose`): every search reports bitwise the
+// same pairs, in (triangle_a, triangle_b) order, and no near pair is missed. Returns how many
+// poses had pairs.
+template <typename RandomPose>
+int CompareSearches(const CollisionGeometry& a, const CollisionGeometry& b, int poses,
+                    const RandomPose& random_pose) {
+  constexpr double kTolerance = 0.005;
+  std::mt19937 random(7);
+  int with_hits = 0;
+  for (int i = 0; i < poses; ++i) {
+    const Pose X_ab = random_pose(random);
+    const std::vector<TrianglePairHit> every =
+        NearPairs(a, b, X_ab, kTolerance, PairSearch::kEveryPair);
+    EXPECT_TRUE(std::is_sorted(every.begin(), every.end(), [](const auto& x, const auto& y) {
+      return std::tie(x.triangle_a, x.triangle_b) < std::tie(y.triangle_a, y.triangle_b);
+    }));
+    const std::string pose = "pose " + std::to_string(i);
+    for (const PairSearch search :
+         {PairSearch::kAuto, PairSearch::kSmallerInLarger, PairSearch::kBothHierarchies}) {
+      ExpectSameHits(every, NearPairs(a, b, X_ab, kTolerance, search),
+                     pose + " search " + std::to_string(static_cast<int>(search)));
+    }
+    ExpectComplete(a, b, X_ab, kTolerance, every);
+    with_hits += !every.empty();
+  }
+  return with_hits;
+}
+
+TEST(NearTrianglePairsTest, SmallMeshesGiveTheSamePairsEveryWay) {
+  // two 10 cm cubes near touching, b turned every way
+  const auto cube = MeshGeometry(LoadMesh("klampt/objects/cube.off"), Vec3::Constant(0.1));
+  const int with_hits = CompareSearches(*cube, *cube, 300, [](std::mt19937& random) {
+    return RandomPose(random, Vec3(0.05, 0.05, 0.15), 0.06, core::kPi);
+  });
+  EXPECT_GT(with_hits, 100);
+}
+
+TEST(NearTrianglePairsTest, SmallMeshOnALargeOneGivesTheSamePairsEveryWay) {
+  const auto cube = MeshGeometry(LoadMesh("klampt/objects/cube.off"), Vec3::Constant(0.1));
+  const auto grid = MeshGeometry(BumpyGrid(16));  // 512 triangles
+  const auto cube_on_grid = [](std::mt19937& random) {
+    return RandomPose(random, Vec3(0.5, 0.5, 0.08), 0.2, core::kPi);
+  };
+  EXPECT_GT(CompareSearches(*grid, *cube, 40, cube_on_grid), 10);
+  // the same with the roles swapped: the grid placed in the cube's frame
+  EXPECT_GT(CompareSearches(*cube, *grid, 40,
+                            [&cube_on_grid](std::mt19937& random) {
+                              return Pose(cube_on_grid(random).inverse());
+                            }),
+            10);
+}
+
+TEST(NearTrianglePairsTest, SmallMeshSpanningALargeOneGivesTheSamePairs) {
+  // a 2 m cube under which the whole grid lies: bounding the cube as a whole finds every
+  // triangle of the grid, so the automatic search falls back to both hierarchies
+  const auto big_cube = MeshGeometry(LoadMesh("klampt/objects/cube.off"), Vec3::Constant(2.0));
+  const auto grid = MeshGeometry(BumpyGrid(16));
+  const int with_hits = CompareSearches(*grid, *big_cube, 10, [](std::mt19937& random) {
+    return RandomPose(random, Vec3(-0.5, -0.5, -1.92), 0.02, 0.02);
+  });
+  EXPECT_GT(with_hits, 5);
+}
+
+TEST(NearTrianglePairsTest, LargeMeshesGiveTheSamePairsEveryWay) {
+  // 128 triangles each: the automatic search traverses both hierarchies
+  const auto cylinder = MeshGeometry(LoadMesh("klampt/objects/cylinder.off"));
+  ASSERT_EQ(cylinder->mesh().triangle_count(), 128);
+  const Vec3 size = cylinder->local_bounds().sizes();
+  const int with_hits = CompareSearches(*cylinder, *cylinder, 20, [&size](std::mt19937& random) {
+    return RandomPose(random, Vec3(0, 0, size.z()), 0.5 * size.x(), core::kPi);
+  });
+  EXPECT_GT(with_hits, 5);
+}
+
+TEST(NearTrianglePairsTest, FarMeshesGiveNoPairs) {
+  const auto cube = MeshGeometry(LoadMesh("klampt/objects/cube.off"));
+  Pose X_ab = Pose::Identity();
+  X_ab.translation() = Vec3(0, 0, 1.0051);  // 5.1 mm above: beyond a 5 mm tolerance
+  for (const PairSearch search : {PairSearch::kAuto, PairSearch::kEveryPair,
+                                  PairSearch::kSmallerInLarger, PairSearch::kBothHierarchies}) {
+    EXPECT_TRUE(NearPairs(*cube, *cube, X_ab, 0.005, search).empty());
+  }
+  X_ab.translation().z() = 1.0049;
+  EXPECT_FALSE(NearPairs(*cube, *cube, X_ab, 0.005, PairSearch::kAuto).empty());
+}
+
+// ---- sparse scratch arrays ----
+
+TEST(SparseArrayTest, ClearForgetsEverySetValueAndGrows) {
+  core::mesh_detail::SparseArray<int> values;
+  values.Clear(4);
+  EXPECT_FALSE(values.Has(2));
+  values.Set(2) = 7;
+  EXPECT_TRUE(values.Has(2));
+  EXPECT_EQ(values[2], 7);
+  EXPECT_FALSE(values.Has(3));
+  values.Clear(10);  // grows, and forgets index 2
+  EXPECT_FALSE(values.Has(2));
+  values.Set(9) = 1;
+  EXPECT_TRUE(values.Has(9));
+  values.Clear(3);  // a smaller size keeps the room
+  EXPECT_FALSE(values.Has(9));
+  for (int i = 0; i < 1000; ++i) values.Clear(10);
+  EXPECT_FALSE(values.Has(9));
 }
 
 TEST(CollisionGeometryCacheTest, SharesGeometryPerMeshAndScale) {

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Mesh contacts with known answers: unit cube meshes resting, turned, separated, touching at
 // faces, edges and corners, and overlapping; mesh vertices on planes; the cube mesh against
-// analytic boxes, spheres, capsules and cylinders; determinism; and the per-call time of a
-// cube on a 32768-triangle terrain (printed, not asserted).
+// analytic boxes, spheres, capsules and cylinders; determinism, also across calls that reuse
+// the working memory; and the per-call time of a cube on a 32768-triangle terrain (printed,
+// not asserted).
 #include "core/contact/mesh_contacts.h"
 
 #include <chrono>
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "core/contact/mesh_query.h"
+#include "core/contact/triangle_queries.h"
 #include "core/io/mesh_file.h"
 #include "tests/common/test_support.h"
 
@@ -200,6 +202,33 @@ TEST(MeshMeshContactsTest, SameCallTwiceGivesIdenticalContacts) {
   const ContactList box_first = MeshPrimitive(Cube(), At(Vec3::Zero()), box, box_pose);
   ASSERT_FALSE(box_first.empty());
   ExpectIdentical(box_first, MeshPrimitive(Cube(), At(Vec3::Zero()), box, box_pose));
+}
+
+TEST(MeshMeshContactsTest, EarlierCallsOnOtherMeshesDoNotChangeTheContacts) {
+  // calls reuse working memory sized by the meshes they see: a small pair, then large meshes in
+  // both roles, then the small pair again
+  const auto sphere = MeshGeometry("klampt/objects/sphere.off", 0.5);
+  const Pose on_top = At(Vec3(0.1, 0.2, 1.002), core::RotationFromRollPitchYaw(0.01, -0.02, 0.3));
+  const ContactList first = MeshMesh(Cube(), on_top, Cube(), At(Vec3::Zero()));
+  ASSERT_FALSE(first.empty());
+  const Pose sphere_on_cube = At(Vec3(0.5, 0.5, 1.501));
+  const ContactList sphere_first = MeshMesh(*sphere, sphere_on_cube, Cube(), At(Vec3::Zero()));
+  ASSERT_FALSE(sphere_first.empty());
+  ASSERT_FALSE(MeshMesh(Cube(), At(Vec3::Zero()), *sphere, sphere_on_cube).empty());
+  ExpectIdentical(first, MeshMesh(Cube(), on_top, Cube(), At(Vec3::Zero())));
+  ExpectIdentical(sphere_first, MeshMesh(*sphere, sphere_on_cube, Cube(), At(Vec3::Zero())));
+}
+
+TEST(BarycentricMapTest, MatchesBarycentricCoordinatesBitwise) {
+  const core::mesh_detail::Triangle3 triangle = {Vec3(0.1, 0.2, 0.3), Vec3(1.3, -0.2, 0.1),
+                                                 Vec3(0.2, 0.9, -0.4)};
+  const core::mesh_detail::BarycentricMap map(triangle);
+  for (const Vec3& p : {Vec3(0.3, 0.3, 0.0), Vec3(-2.0, 1.0, 0.5), Vec3(0.1, 0.2, 0.3)}) {
+    EXPECT_EQ(map(p), core::mesh_detail::BarycentricCoordinates(p, triangle));
+  }
+  // a degenerate triangle maps everything to its first corner
+  const core::mesh_detail::Triangle3 line = {Vec3::Zero(), Vec3::UnitX(), Vec3(2, 0, 0)};
+  EXPECT_EQ(core::mesh_detail::BarycentricMap(line)(Vec3(0.5, 1, 0)), Vec3(1, 0, 0));
 }
 
 // ---- mesh-plane ----
