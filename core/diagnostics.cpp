@@ -22,10 +22,16 @@ const char* SeverityName(Severity severity) {
 }  // namespace
 
 std::string Diagnostic::Format() const {
+  // appended piece by piece: GCC 12 at -O3 flags `":" + std::to_string(...)` with a false
+  // -Wrestrict warning
   std::string out = where.file.empty() ? std::string("<input>") : where.file;
   if (where.line > 0) {
-    out += ":" + std::to_string(where.line);
-    if (where.column > 0) out += ":" + std::to_string(where.column);
+    out += ':';
+    out += std::to_string(where.line);
+    if (where.column > 0) {
+      out += ':';
+      out += std::to_string(where.column);
+    }
   }
   out += ": ";
   out += SeverityName(severity);

@@ -56,8 +56,12 @@ bool ReadFileText(const std::string& path, std::string* text) {
 
 bool WriteFileAtomically(const std::string& path, const std::string& text, std::string* error) {
   const fs::path target(path);
-  const fs::path temporary =
-      target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(getpid()));
+  // appended piece by piece: GCC 12 at -O3 flags `"." + std::string` with a false -Wrestrict
+  std::string name = ".";
+  name += target.filename().string();
+  name += ".tmp";
+  name += std::to_string(getpid());
+  const fs::path temporary = target.parent_path() / name;
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out) {

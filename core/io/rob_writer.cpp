@@ -158,7 +158,10 @@ void RobWriter::WriteGeometry() {
   for (int i = 0; i < robot_.dof(); ++i) {
     const LinkDesc& link = robot_.links[i];
     const GeometryDesc* own = link.geometry.empty() ? nullptr : &link.geometry.front();
-    files += " " + Quote(own ? FileOf(*own, i) : "");
+    // appended piece by piece here and below: GCC 12 at -O3 flags `" " + std::string` with a
+    // false -Wrestrict
+    files += ' ';
+    files += Quote(own ? FileOf(*own, i) : "");
     const GeometryDesc* first = FirstGeometry(link);
     margins.push_back(first ? first->margin : 0.0);
     const bool has_own = own != nullptr && !own->empty();
@@ -202,7 +205,8 @@ void RobWriter::WriteMounts() {
 void RobWriter::WriteJoints() {
   for (const JointDesc& joint : robot_.joints) {
     const std::string link = std::to_string(joint.link);
-    const std::string base = " " + std::to_string(joint.base);
+    std::string base = " ";
+    base += std::to_string(joint.base);
     switch (joint.type) {
       case JointType::kNormal:
         out_ += "joint normal " + link + "\n";
@@ -230,7 +234,10 @@ void RobWriter::WriteDrivers() {
   if (robot_.drivers.empty()) return;
   for (const DriverDesc& driver : robot_.drivers) {
     std::string links;
-    for (int link : driver.links) links += " " + std::to_string(link);
+    for (int link : driver.links) {
+      links += ' ';
+      links += std::to_string(link);
+    }
     switch (driver.type) {
       case DriverType::kNormal:
         out_ += "driver normal" + links + "\n";
@@ -251,7 +258,10 @@ void RobWriter::WriteDrivers() {
     }
   }
   std::string names = "drivers";
-  for (const DriverDesc& driver : robot_.drivers) names += " " + Quote(driver.name);
+  for (const DriverDesc& driver : robot_.drivers) {
+    names += ' ';
+    names += Quote(driver.name);
+  }
   out_ += names + "\n";
   out_ += PerDriver(robot_, "servoP", &DriverDesc::servo_p);
   out_ += PerDriver(robot_, "servoI", &DriverDesc::servo_i);

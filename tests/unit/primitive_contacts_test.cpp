@@ -79,6 +79,35 @@ bool HasContactAt(const ContactList& contacts, const Vec3& position, double tole
   });
 }
 
+// Box face contacts drop a vertex lying within 1e-3 of the overlap's diameter of the segment
+// between two others: at least this for the 0.1-0.2 m faces below (m).
+constexpr double kBetweenTolerance = 1e-4;
+
+// Distance from `point` to the segment from `start` to `end`.
+double DistanceToSegment(const Vec3& point, const Vec3& start, const Vec3& end) {
+  const Vec3 chord = end - start;
+  const double squared = chord.squaredNorm();
+  const double t = squared > 0.0 ? std::clamp((point - start).dot(chord) / squared, 0.0, 1.0) : 0.0;
+  return (point - (start + t * chord)).norm();
+}
+
+// some contact lies within `tolerance` of the segment between two others: it adds nothing to the
+// support they give
+bool SomeContactLiesBetweenTwoOthers(const ContactList& contacts, double tolerance) {
+  const size_t count = contacts.size();
+  for (size_t i = 0; i < count; ++i) {
+    for (size_t j = 0; j < count; ++j) {
+      for (size_t k = j + 1; k < count; ++k) {
+        if (i == j || i == k) continue;
+        const double distance =
+            DistanceToSegment(contacts[i].position, contacts[j].position, contacts[k].position);
+        if (distance <= tolerance) return true;
+      }
+    }
+  }
+  return false;
+}
+
 const Primitive kBox = Primitive::Box(Vec3(0.2, 0.2, 0.2));
 const Primitive kPlane = Primitive::Plane();
 
@@ -262,6 +291,49 @@ TEST(PrimitiveContactsTest, BoxTurned45DegreesOnBoxGivesTheOctagon) {
     // inside both squares (turned: |x| + |y| <= 0.1 sqrt(2))
     EXPECT_LE(contact.position.head<2>().cwiseAbs().maxCoeff(), 0.1 + kExact);
     EXPECT_LE(contact.position.head<2>().cwiseAbs().sum(), 0.1 * std::sqrt(2.0) + kExact);
+  }
+  // every vertex turns the outline by 45 degrees: none is dropped as lying between others
+  EXPECT_FALSE(SomeContactLiesBetweenTwoOthers(contacts, kBetweenTolerance));
+}
+
+TEST(PrimitiveContactsTest, EqualBoxesExactlyAlignedGiveFourCorners) {
+  const ContactList contacts = Contacts(kBox, At(0, 0, 0.201), kBox, At(0, 0, 0));
+  ASSERT_EQ(contacts.size(), 4u);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
+  for (const double x : {-0.1, 0.1}) {
+    for (const double y : {-0.1, 0.1}) {
+      EXPECT_TRUE(HasContactAt(contacts, Vec3(x, y, 0.1005), kExact)) << x << " " << y;
+    }
+  }
+}
+
+TEST(PrimitiveContactsTest, SmallBoxTurnedOnALargerBoxGivesItsFourCorners) {
+  const Primitive small = Primitive::Box(Vec3(0.1, 0.1, 0.1));
+  const Pose X_Wa = Rotated(Vec3::UnitZ(), 0.01, Vec3(0.02, -0.03, 0.151));
+  const ContactList contacts = Contacts(small, X_Wa, kBox, At(0, 0, 0));
+  ASSERT_EQ(contacts.size(), 4u);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
+  for (const double x : {-0.05, 0.05}) {
+    for (const double y : {-0.05, 0.05}) {
+      const Vec3 corner = X_Wa * Vec3(x, y, -0.05);
+      EXPECT_TRUE(HasContactAt(contacts, Vec3(corner.x(), corner.y(), 0.1005), kExact))
+          << x << " " << y;
+    }
+  }
+}
+
+TEST(PrimitiveContactsTest, BoxTiltedOntoItsEdgeOnABoxGivesTheEdgeEnds) {
+  // a, tilted 0.3 rad about y, rests its lowest edge (along y) 1 mm above b's top face; the rest
+  // of its bottom face rises out of the layer
+  const Primitive wide = Primitive::Box(Vec3(0.6, 0.6, 0.2));
+  const Pose turn = Rotated(Vec3::UnitY(), 0.3, Vec3::Zero());
+  const Vec3 lowest_edge = turn * Vec3(0.1, 0, -0.1);
+  const Pose X_Wa = At(0, 0, 0.101 - lowest_edge.z()) * turn;
+  const ContactList contacts = Contacts(kBox, X_Wa, wide, At(0, 0, 0));
+  ASSERT_EQ(contacts.size(), 2u);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
+  for (const double y : {-0.1, 0.1}) {
+    EXPECT_TRUE(HasContactAt(contacts, Vec3(lowest_edge.x(), y, 0.1005), kExact)) << y;
   }
 }
 
@@ -803,6 +875,60 @@ TEST(PrimitiveContactsTest, RandomPairsMatchTheSupportFunctionDistance) {
         } else if (distance < -kDistanceTolerance) {
           ASSERT_NE(deepest, nullptr) << "distance " << distance;
           EXPECT_TRUE(deepest->penetrating) << "distance " << distance;
+        }
+      }
+    }
+  }
+}
+
+// A box of a stack placed over the one below it, at the origin.
+struct StackedBox {
+  Pose X_Wa = Pose::Identity();
+  Vec3 shift = Vec3::Zero();  ///< its sideways offset from the box below (m)
+};
+
+// A box of side `side` over an equal one: turned by up to `yaw` (rad) about the vertical, shifted
+// by up to `shift` (m) along x and y and tilted by up to `tilt` (rad), its bottom face from 1 mm
+// into to 4 mm above the top face below (within the 5 mm layer).
+StackedBox RandomStackedBox(double side, double yaw, double shift, double tilt, Random* random) {
+  StackedBox stacked;
+  stacked.shift = Vec3(random->Uniform(-shift, shift), random->Uniform(-shift, shift), 0.0);
+  const Vec3 tilt_axis = Vec3(random->Normal(), random->Normal(), 0.0).normalized();
+  const double gap = random->Uniform(-0.001, 0.004);
+  stacked.X_Wa = At(stacked.shift.x(), stacked.shift.y(), side + gap) *
+                 Rotated(tilt_axis, random->Uniform(0.0, tilt), Vec3::Zero()) *
+                 Rotated(Vec3::UnitZ(), random->Uniform(-yaw, yaw), Vec3::Zero());
+  return stacked;
+}
+
+TEST(PrimitiveContactsTest, NearlyAlignedStackedBoxesGiveJustTheOverlapCorners) {
+  const double side = 0.1;
+  const Primitive box = Primitive::Box(Vec3::Constant(side));
+  // turning by the largest yaw moves a face corner this far sideways, tilting it even less (m)
+  const double corner_tolerance = 1e-4;
+  Random random(11);
+  // perturbations at full size, at a micrometre scale, and at the rounding scale of a settled
+  // stack (where the nearly parallel edges cross near their middles)
+  for (const double scale : {1.0, 1e-3, 1e-12}) {
+    for (int trial = 0; trial < kRandomTrials; ++trial) {
+      SCOPED_TRACE(testing::Message() << "scale " << scale << " trial " << trial);
+      const StackedBox stacked =
+          RandomStackedBox(side, scale * 1e-3, scale * 1e-3, scale * 1e-4, &random);
+      const ContactList contacts = Contacts(box, stacked.X_Wa, box, Pose::Identity());
+      ExpectWellFormedAndSymmetric(contacts, Contacts(box, Pose::Identity(), box, stacked.X_Wa));
+      ASSERT_EQ(contacts.size(), 4u);
+      EXPECT_FALSE(SomeContactLiesBetweenTwoOthers(contacts, kBetweenTolerance));
+      // the corners of the overlap of the two squares (taken unturned)
+      for (const double x : {-1.0, 1.0}) {
+        for (const double y : {-1.0, 1.0}) {
+          const Vec3 corner(x * (0.5 * side - 0.5 * std::abs(stacked.shift.x())),
+                            y * (0.5 * side - 0.5 * std::abs(stacked.shift.y())), 0.0);
+          const Vec3 centred = corner + 0.5 * stacked.shift;
+          const bool found =
+              std::any_of(contacts.begin(), contacts.end(), [&](const Contact& contact) {
+                return (contact.position - centred).head<2>().norm() <= corner_tolerance;
+              });
+          EXPECT_TRUE(found) << "no contact at " << centred.transpose();
         }
       }
     }
