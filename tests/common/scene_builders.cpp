@@ -1,13 +1,30 @@
 // SPDX-License-Identifier: MIT
 #include "tests/common/scene_builders.h"
 
+#include <utility>
+
 namespace lamina::test {
+
+core::GeometryDesc PrimitiveGeometry(const core::Primitive& primitive) {
+  core::GeometryDesc geometry;
+  geometry.kind = core::GeometryKind::kPrimitive;
+  geometry.primitive = primitive;
+  return geometry;
+}
+
+core::GeometryDesc MeshGeometry(std::shared_ptr<const core::TriangleMesh> mesh,
+                                const core::Vec3& scale) {
+  core::GeometryDesc geometry;
+  geometry.kind = core::GeometryKind::kMesh;
+  geometry.mesh = std::move(mesh);
+  geometry.scale = scale;
+  return geometry;
+}
 
 core::TerrainDesc PlaneTerrain(double friction, double restitution) {
   core::TerrainDesc ground;
   ground.name = "ground";
-  ground.geometry.kind = core::GeometryKind::kPrimitive;
-  ground.geometry.primitive = core::Primitive::Plane();
+  ground.geometry = PrimitiveGeometry(core::Primitive::Plane());
   ground.sim = core::DefaultTerrainSimParams();
   ground.sim.surface.friction = friction;
   ground.sim.surface.restitution = restitution;
@@ -17,8 +34,7 @@ core::TerrainDesc PlaneTerrain(double friction, double restitution) {
 core::RigidObjectDesc BoxObject(double side, double mass, const core::Vec3& position) {
   core::RigidObjectDesc box;
   box.name = "box";
-  box.geometry.kind = core::GeometryKind::kPrimitive;
-  box.geometry.primitive = core::Primitive::Box(core::Vec3::Constant(side));
+  box.geometry = PrimitiveGeometry(core::Primitive::Box(core::Vec3::Constant(side)));
   box.mass = mass;
   box.inertia = core::Mat3::Identity() * (mass * side * side / 6.0);
   box.pose.translation() = position;
@@ -29,8 +45,7 @@ core::RigidObjectDesc BoxObject(double side, double mass, const core::Vec3& posi
 core::RigidObjectDesc SphereObject(double radius, double mass, const core::Vec3& position) {
   core::RigidObjectDesc sphere;
   sphere.name = "sphere";
-  sphere.geometry.kind = core::GeometryKind::kPrimitive;
-  sphere.geometry.primitive = core::Primitive::Sphere(radius);
+  sphere.geometry = PrimitiveGeometry(core::Primitive::Sphere(radius));
   sphere.mass = mass;
   sphere.inertia = core::Mat3::Identity() * (0.4 * mass * radius * radius);
   sphere.pose.translation() = position;

@@ -13,6 +13,7 @@
 #include "core/diagnostics.h"
 #include "core/geometry/tessellate.h"
 #include "core/io/mesh_file.h"
+#include "tests/common/scene_builders.h"
 #include "tests/common/test_support.h"
 
 namespace lamina::core {
@@ -28,20 +29,8 @@ std::shared_ptr<const TriangleMesh> LoadMesh(const std::string& relative) {
   return std::make_shared<const TriangleMesh>(mesh ? std::move(*mesh) : TriangleMesh());
 }
 
-GeometryDesc MeshGeometry(std::shared_ptr<const TriangleMesh> mesh, const Vec3& scale) {
-  GeometryDesc geometry;
-  geometry.kind = GeometryKind::kMesh;
-  geometry.mesh = std::move(mesh);
-  geometry.scale = scale;
-  return geometry;
-}
-
-GeometryDesc PrimitiveGeometry(const Primitive& primitive) {
-  GeometryDesc geometry;
-  geometry.kind = GeometryKind::kPrimitive;
-  geometry.primitive = primitive;
-  return geometry;
-}
+using test::MeshGeometry;
+using test::PrimitiveGeometry;
 
 // |a - b| <= tolerance * max(|b|, scale) entrywise, with `scale` the size of the matrix so
 // that near-zero off-diagonal entries are compared in absolute terms.

@@ -13,24 +13,18 @@
 #include "core/geometry/geometry_desc.h"
 #include "core/geometry/tessellate.h"
 #include "core/io/mesh_file.h"
+#include "tests/common/scene_builders.h"
 #include "tests/common/test_support.h"
 
 namespace lamina::core {
 namespace {
 
+// a geometry holding its own copy of `mesh`
 GeometryDesc MeshGeometry(const TriangleMesh& mesh) {
-  GeometryDesc geometry;
-  geometry.kind = GeometryKind::kMesh;
-  geometry.mesh = std::make_shared<const TriangleMesh>(mesh);
-  return geometry;
+  return test::MeshGeometry(std::make_shared<const TriangleMesh>(mesh));
 }
 
-GeometryDesc PrimitiveGeometry(const Primitive& primitive) {
-  GeometryDesc geometry;
-  geometry.kind = GeometryKind::kPrimitive;
-  geometry.primitive = primitive;
-  return geometry;
-}
+using test::PrimitiveGeometry;
 
 // The cube [0, 1]^3 as Klamp't's cube.off lists it: 8 corners, 12 outward triangles.
 TriangleMesh UnitCube() {
