@@ -628,13 +628,17 @@ double Simulator::ContactEnergyAllowance(int id, double step) const {
 
 bool Simulator::CorrectInstabilities(double step) {
   // bodies pushed by a kinematic body may gain any energy: leave them out of the check
-  std::vector<bool> pushed(bodies_.size(), false);
+  // scratch storage kept between steps: no allocation per sub-step
+  std::vector<bool>& pushed = energy_scratch_.pushed;
+  pushed.assign(bodies_.size(), false);
   for (const ContactPair& pair : saved_pairs_) {
     if (bodies_[pair.a].body && !bodies_[pair.a].dynamic) pushed[pair.b] = true;
     if (bodies_[pair.b].body && !bodies_[pair.b].dynamic) pushed[pair.a] = true;
   }
-  std::vector<BodyEnergySample> samples;
-  std::vector<int> checked;
+  std::vector<BodyEnergySample>& samples = energy_scratch_.samples;
+  std::vector<int>& checked = energy_scratch_.checked;
+  samples.clear();
+  checked.clear();
   for (size_t i = 0; i < object_ids_.size(); ++i) {
     const int id = object_ids_[i];
     BodyRecord& body = bodies_[id];

@@ -13,6 +13,7 @@
 #include "core/diagnostics.h"
 #include "core/model/world_desc.h"
 #include "core/sim/contact_feedback.h"
+#include "core/sim/energy_guard.h"
 #include "core/sim/sim_state.h"
 #include "core/sim/sim_timing.h"
 
@@ -274,6 +275,11 @@ class Simulator {
   std::vector<std::vector<FeedbackContact>> step_feedback_;  ///< per feedback record, one step
   std::vector<JointFeedbackSlot> joint_feedback_;            ///< ODE feedback of this step's joints
   size_t next_feedback_slot_ = 0;
+  struct EnergyScratch {
+    std::vector<bool> pushed;  ///< per body: touched a kinematic body this step
+    std::vector<BodyEnergySample> samples;
+    std::vector<int> checked;  ///< body id of each sample
+  } energy_scratch_;
   double time_ = 0.0;
   SimStatistics statistics_;
 };
