@@ -27,11 +27,14 @@ using mesh_detail::ClosestPointsOfTriangles;
 using mesh_detail::kFeatureNormalDistance;
 using mesh_detail::kMinNormalLength;
 using mesh_detail::SparseArray;
+using mesh_detail::Topology;
 using mesh_detail::TrianglePairPoints;
 using mesh_detail::TrianglesCross;
 
 // Klamp't's rule: a barycentric coordinate this close to zero counts as zero
 constexpr double kBarycentricZero = 1e-3;
+// two triangles whose normals are within 1° of each other make a flat edge
+constexpr double kFlatEdgeCosine = 0.99984769515639127;  // cos(1°)
 
 Triangle3 MeshTriangle(const CollisionGeometry& mesh, int triangle) {
   const Eigen::Vector3i& t = mesh.mesh().triangles[triangle];
@@ -103,6 +106,30 @@ Vec3 EdgeEdgeNormal(const Triangle3& ta, int ea, const Triangle3& tb, int eb, co
   return flip ? Vec3(-unit) : unit;
 }
 
+// True when the two triangles that share the edge opposite `corner` are coplanar within
+// kFlatEdgeCosine: such an edge (a square face's diagonal, say) has no direction of its own,
+// and the cross product with another edge would point anywhere along the face.
+bool IsFlatEdge(const CollisionGeometry& mesh, int triangle, int corner) {
+  const int neighbor = Topology(mesh.bvh()).neighbors[triangle][corner];
+  if (neighbor < 0) return false;
+  return mesh.triangle_normals()[triangle].dot(mesh.triangle_normals()[neighbor]) >=
+         kFlatEdgeCosine;
+}
+
+// Where a closest point lies on its triangle, as far as the face normal is concerned.
+enum class FacePlace { kInterior, kFlatEdge, kElsewhere };
+
+// kFlatEdge: on an edge between coplanar triangles, where the face's normal is the surface's
+// only normal.
+FacePlace PlaceOnFace(const CollisionGeometry& mesh, int triangle, const Vec3& barycentric) {
+  const TriangleFeature feature = ClassifyFeature(barycentric);
+  if (feature.type == TriangleFeature::Type::kFace) return FacePlace::kInterior;
+  if (feature.type == TriangleFeature::Type::kEdge && IsFlatEdge(mesh, triangle, feature.index)) {
+    return FacePlace::kFlatEdge;
+  }
+  return FacePlace::kElsewhere;
+}
+
 // Klamp't's ContactNormal: the normal from b into a at nearly coincident closest points p (on
 // a's triangle) and q (on b's), all in a's frame.
 Vec3 MeshMeshFeatureNormal(const MeshPair& m, int ta, int tb, const Vec3& p, const Vec3& q) {
@@ -118,6 +145,9 @@ Vec3 MeshMeshFeatureNormal(const MeshPair& m, int ta, int tb, const Vec3& p, con
   if (fb.type == Type::kFace) return R * b.triangle_normals()[tb];
   const Vec3 na = FeatureNormal(a, ta, fa);
   const Vec3 nb = R * FeatureNormal(b, tb, fb);
+  // an edge inside a flat region is a face: its normal is the only one it has
+  if (fb.type == Type::kEdge && IsFlatEdge(b, tb, fb.index)) return nb;
+  if (fa.type == Type::kEdge && IsFlatEdge(a, ta, fa.index)) return -na;
   if (fa.type == Type::kVertex && fb.type == Type::kVertex) return UnitOrZero(nb - na);
   if (fa.type == Type::kVertex) return UnitOrZero(nb - AcrossEdge(na, EdgeVector(tri_b, fb.index)));
   if (fb.type == Type::kVertex) return UnitOrZero(AcrossEdge(nb, EdgeVector(tri_a, fa.index)) - na);
@@ -198,7 +228,7 @@ void FindCrossings(const MeshPair& m, MeshMeshScratch* s) {
 // a face, that face's outward normal is used and the distance is signed along it, so a point
 // that has sunk behind the face is pushed back out instead of further in (a closest-point
 // direction flips when surfaces cross). Otherwise the feature normal or the closest-point
-// direction, as Klamp't does.
+// direction, as Klamp't does. A point on a flat edge counts as on the face.
 Vec3 PairNormal(const MeshPair& m, const PairCandidate& c, double* signed_distance,
                 bool* from_face) {
   *from_face = false;
@@ -206,18 +236,17 @@ Vec3 PairNormal(const MeshPair& m, const PairCandidate& c, double* signed_distan
   const Vec3& q = c.hit.point_b;
   const double d = c.hit.distance;
   if (!c.crossing) {
-    using Type = TriangleFeature::Type;
     const Triangle3 tri_a = m.TriangleA(c.hit.triangle_a);
     const Triangle3 tri_b = m.TriangleB(c.hit.triangle_b);
-    const bool q_on_face = ClassifyFeature(BarycentricCoordinates(q, tri_b)).type == Type::kFace;
-    const bool p_on_face = ClassifyFeature(BarycentricCoordinates(p, tri_a)).type == Type::kFace;
+    const FacePlace q_place = PlaceOnFace(m.b, c.hit.triangle_b, BarycentricCoordinates(q, tri_b));
+    const FacePlace p_place = PlaceOnFace(m.a, c.hit.triangle_a, BarycentricCoordinates(p, tri_a));
     // parallel faces: their closest points are an arbitrary spot of the overlap; the vertex
     // contacts (CollectVertexHits) hold such faces at their corners instead
-    if (q_on_face && p_on_face) return Vec3::Zero();
+    if (q_place == FacePlace::kInterior && p_place == FacePlace::kInterior) return Vec3::Zero();
     Vec3 face_normal = Vec3::Zero();
-    if (q_on_face) {
+    if (q_place != FacePlace::kElsewhere && p_place != FacePlace::kInterior) {
       face_normal = m.X_ab.linear() * m.b.triangle_normals()[c.hit.triangle_b];
-    } else if (p_on_face) {
+    } else if (p_place != FacePlace::kElsewhere) {
       face_normal = -m.a.triangle_normals()[c.hit.triangle_a];
     }
     if (!face_normal.isZero()) {

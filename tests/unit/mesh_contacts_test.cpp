@@ -190,6 +190,27 @@ TEST(MeshMeshContactsTest, CrossedEdgesTakeTheEdgeNormal) {
   }
 }
 
+TEST(MeshMeshContactsTest, CornerSunkOnAFaceDiagonalIsPushedStraightOut) {
+  // a stands on its corner (body diagonal vertical), sunk 3 mm into b's top face exactly on the
+  // face's diagonal, where b's two top triangles meet flat: the diagonal has no direction of
+  // its own, so every contact must push along the face normal (closest points between a's
+  // rising edges and the diagonal would point sideways)
+  const Mat3 corner_down =
+      AboutZ(0.3) * Eigen::Quaterniond::FromTwoVectors(Vec3(1, 1, 1).normalized(), -Vec3::UnitZ())
+                        .toRotationMatrix();
+  const Vec3 lowest_corner = corner_down * Vec3(1, 1, 1);
+  const Pose a = At(Vec3(0.5, 0.5, 1 - 0.003) - lowest_corner, corner_down);
+  const ContactList contacts = MeshMesh(Cube(), a, Cube(), At(Vec3::Zero()));
+  ASSERT_FALSE(contacts.empty());
+  double deepest = 0.0;
+  for (const Contact& c : contacts) {
+    EXPECT_NEAR((c.normal - Vec3::UnitZ()).norm(), 0.0, kNormalTolerance);
+    EXPECT_GT(c.depth, 0.0);
+    deepest = std::max(deepest, c.depth);
+  }
+  EXPECT_NEAR(deepest, kTolerance + 0.003, 1e-9);  // at the corner
+}
+
 TEST(MeshMeshContactsTest, SameCallTwiceGivesIdenticalContacts) {
   const Pose a = At(Vec3(0.1, 0.2, 1.002), core::RotationFromRollPitchYaw(0.001, -0.002, 0.3));
   const ContactList first = MeshMesh(Cube(), a, Cube(), At(Vec3::Zero()));
