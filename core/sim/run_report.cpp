@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <sstream>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -63,6 +64,25 @@ std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
                        {"angular_velocity", Vector(velocity.angular)}});
   }
   out["objects"] = objects;
+  ordered_json robots = ordered_json::array();
+  for (int r = 0; r < simulator.robot_count(); ++r) {
+    const VecX q = simulator.GetRobotConfig(r);
+    const VecX dq = simulator.GetRobotVelocity(r);
+    VecX commanded;
+    ordered_json robot = {{"name", simulator.world().robots[r].name},
+                          {"config", std::vector<double>(q.data(), q.data() + q.size())},
+                          {"velocity", std::vector<double>(dq.data(), dq.data() + dq.size())}};
+    const VecX torques = simulator.GetActuatorTorques(r);
+    robot["actuator_torques"] =
+        std::vector<double>(torques.data(), torques.data() + torques.size());
+    if (simulator.controller(r).GetCommandedConfig(&commanded)) {
+      robot["commanded_config"] =
+          std::vector<double>(commanded.data(), commanded.data() + commanded.size());
+      robot["tracking_error"] = (commanded - q).cwiseAbs().maxCoeff();
+    }
+    robots.push_back(robot);
+  }
+  out["robots"] = robots;
   return out.dump(2) + "\n";
 }
 
@@ -101,6 +121,20 @@ std::string RunReportText(const Simulator& simulator, const RunTiming& timing) {
                   simulator.world().objects[i].name.c_str(), p.x(), p.y(), p.z(), v.x(), v.y(),
                   v.z());
     out << line;
+  }
+  for (int r = 0; r < simulator.robot_count(); ++r) {
+    const VecX q = simulator.GetRobotConfig(r);
+    out << "robot '" << simulator.world().robots[r].name << "': config";
+    for (const double value : q) out << " " << value;
+    VecX commanded;
+    if (simulator.controller(r).GetCommandedConfig(&commanded)) {
+      out << "\n  tracking error (commanded - sensed, largest) "
+          << (commanded - q).cwiseAbs().maxCoeff();
+    }
+    const VecX torques = simulator.GetActuatorTorques(r);
+    out << "\n  actuator torques";
+    for (const double value : torques) out << " " << value;
+    out << "\n";
   }
   return out.str();
 }

@@ -7,6 +7,16 @@ namespace lamina::core {
 
 std::string SimLogHeader(const Simulator& simulator) {
   std::string header = "time,";
+  // robots first, as Klamp't's simtest_log.csv: configuration, velocity, actuator torques
+  for (const RobotDesc& robot : simulator.world().robots) {
+    for (const char* column : {"_q[", "_dq["}) {
+      for (const LinkDesc& link : robot.links) header += robot.name + column + link.name + "],";
+    }
+    for (const DriverDesc& driver : robot.drivers) {
+      header += robot.name + "_torque[" + driver.name + "],";
+    }
+    header += ",";
+  }
   for (const RigidObjectDesc& object : simulator.world().objects) {
     for (const char* column :
          {"_x", "_y", "_z", "_rz", "_ry", "_rx", "_dx", "_dy", "_dz", "_wz", "_wy", "_wx"}) {
@@ -19,6 +29,13 @@ std::string SimLogHeader(const Simulator& simulator) {
 
 std::string SimLogRow(const Simulator& simulator) {
   std::string row = FormatDouble(simulator.time()) + ",";
+  for (int r = 0; r < simulator.robot_count(); ++r) {
+    for (const VecX& values : {simulator.GetRobotConfig(r), simulator.GetRobotVelocity(r),
+                               simulator.GetActuatorTorques(r)}) {
+      for (const double value : values) row += FormatDouble(value) + ",";
+    }
+    row += ",";
+  }
   for (int i = 0; i < simulator.object_count(); ++i) {
     const Pose pose = simulator.GetObjectPose(i);
     const Vec3 rpy = RollPitchYawFromRotation(pose.linear());

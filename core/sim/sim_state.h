@@ -4,7 +4,9 @@
 
 #include <vector>
 
+#include "core/control/robot_controller.h"
 #include "core/math_types.h"
+#include "core/sim/robot_joint_state.h"
 
 namespace lamina::core {
 
@@ -22,9 +24,21 @@ struct BodyState {
   }
 };
 
+/// A robot's bodies, joint bookkeeping and controller.
+struct RobotSimState {
+  std::vector<BodyState> bodies;  ///< one per body of the robot, in link order
+  RobotJointState joints;
+  RobotControllerState controller;
+  /// Physical state only (the controller's state has no equality).
+  bool operator==(const RobotSimState& other) const {
+    return bodies == other.bodies && joints == other.joints;
+  }
+};
+
 struct SimState {
   double time = 0.0;               ///< s
   std::vector<BodyState> objects;  ///< one per rigid object
+  std::vector<RobotSimState> robots;
   bool operator==(const SimState&) const = default;
 };
 

@@ -10,6 +10,8 @@
 #include "core/geometry/shrink.h"
 #include "core/sim/energy_guard.h"
 #include "core/sim/ode_handle.h"
+#include "core/sim/ode_robot.h"
+#include "core/sim/simulator_records.h"
 
 namespace lamina::core {
 
@@ -97,24 +99,6 @@ const char* StepStatusName(StepStatus status) {
   return "error";
 }
 
-struct Simulator::BodyRecord {
-  WorldId::Kind kind = WorldId::Kind::kInvalid;
-  int index = -1;          ///< terrain or object index
-  dBodyID body = nullptr;  ///< null for static bodies (terrains) and ids without a body
-  std::shared_ptr<const CollisionGeometry> geometry;
-  Vec3 com = Vec3::Zero();  ///< in the body frame
-  double mass = 0.0;
-  Mat3 inertia = Mat3::Zero();  ///< about the COM, body axes
-  bool enabled = true;
-  bool dynamic = true;         ///< false: kinematic
-  Vec3 force = Vec3::Zero();   ///< world, at the COM, for the sub-steps of the next Simulate
-  Vec3 torque = Vec3::Zero();  ///< world
-  Eigen::AlignedBox3d bounds;  ///< padded world bounds
-  double energy = -1.0;        ///< kinetic energy after the last accepted step; < 0 unknown
-
-  bool moves_freely() const { return body != nullptr && enabled && dynamic; }
-};
-
 /// ODE's force readout of one contact joint of the current step.
 struct Simulator::JointFeedbackSlot {
   dJointFeedback ode{};
@@ -182,6 +166,9 @@ void Simulator::BuildBodies() {
       body.inertia << mass.I[0], mass.I[1], mass.I[2], mass.I[4], mass.I[5], mass.I[6], mass.I[8],
           mass.I[9], mass.I[10];
       RebuildCollisionGeometry(id);
+    } else if (resolved.kind == WorldId::Kind::kRobot) {
+      body.index = resolved.index;
+      BuildRobot(resolved.index, id + 1);
     }
   }
 }
@@ -191,8 +178,16 @@ void Simulator::RebuildCollisionGeometry(int id) {
   const GeometryDesc* desc = nullptr;
   if (body.kind == WorldId::Kind::kTerrain) desc = &world_.terrains[body.index].geometry;
   if (body.kind == WorldId::Kind::kRigidObject) desc = &world_.objects[body.index].geometry;
-  if (desc == nullptr) return;
   const BodySimParams& sim = sim_params(id);
+  if (body.kind == WorldId::Kind::kRobotLink) {
+    body.geometry = LinkCollisionGeometry(body.index, body.link);
+    if (body.geometry && body.body == nullptr) {
+      body.bounds = WorldBounds(*body.geometry, body.fixed_pose, sim.padding);
+    }
+    contacts_current_ = false;
+    return;
+  }
+  if (desc == nullptr) return;
   if (sim.preshrink != Preshrink::kNone && sim.padding > 0.0) {
     // shrunk geometries are the body's own: a shrunk mesh is new for every padding, so it cannot
     // be a key of the shared cache
@@ -210,6 +205,13 @@ void Simulator::ApplyInitialState() {
   for (int i = 0; i < object_count(); ++i) {
     SetObjectPose(i, world_.objects[i].pose);
     SetObjectVelocity(i, world_.objects[i].initial_velocity);
+  }
+  for (int r = 0; r < robot_count(); ++r) {
+    const RobotDesc& robot = world_.robots[r];
+    SetRobotConfig(r, robot.config);
+    SetRobotVelocity(
+        r, robot.velocity.size() == robot.config.size() ? robot.velocity : VecX::Zero(robot.dof()));
+    controllers_[r] = RobotController(robot);
   }
   ForgetEnergies();
 }
@@ -250,6 +252,7 @@ const Simulator::BodyRecord* Simulator::record(int id) const {
 
 const BodySimParams& Simulator::sim_params(int id) const {
   const BodyRecord& body = bodies_[id];
+  if (body.kind == WorldId::Kind::kRobotLink) return world_.robots[body.index].links[body.link].sim;
   return body.kind == WorldId::Kind::kTerrain ? world_.terrains[body.index].sim
                                               : world_.objects[body.index].sim;
 }
@@ -259,13 +262,16 @@ BodySimParams* Simulator::mutable_sim_params(int id) {
   if (body == nullptr) return nullptr;
   if (body->kind == WorldId::Kind::kTerrain) return &world_.terrains[body->index].sim;
   if (body->kind == WorldId::Kind::kRigidObject) return &world_.objects[body->index].sim;
+  if (body->kind == WorldId::Kind::kRobotLink) {
+    return &world_.robots[body->index].links[body->link].sim;
+  }
   return nullptr;
 }
 
 Pose Simulator::GetBodyPose(const BodyRecord& body) const {
+  if (body.body == nullptr) return body.fixed_pose;
   Pose pose = Pose::Identity();
-  if (body.body == nullptr) return pose;
-  pose.linear() = ToMat3(dBodyGetRotation(body.body));
+  pose.linear() = ToMat3(dBodyGetRotation(body.body)) * body.rotation_in_body;
   pose.translation() = ToVec3(dBodyGetPosition(body.body)) - pose.linear() * body.com;
   return pose;
 }
@@ -276,13 +282,13 @@ void Simulator::SetBodyPose(const BodyRecord& body, const Pose& pose) {
   contacts_current_ = false;
   const Vec3 com_world = pose * body.com;
   dBodySetPosition(body.body, com_world.x(), com_world.y(), com_world.z());
-  SetBodyRotation(body.body, pose.linear());
+  SetBodyRotation(body.body, pose.linear() * body.rotation_in_body.transpose());
 }
 
 Twist Simulator::GetBodyVelocity(const BodyRecord& body) const {
   if (body.body == nullptr) return {};
   const Vec3 angular = ToVec3(dBodyGetAngularVel(body.body));
-  const Vec3 com_offset = ToMat3(dBodyGetRotation(body.body)) * body.com;
+  const Vec3 com_offset = GetBodyPose(body).linear() * body.com;
   // v_origin = v_com - w x (com - origin)
   return {ToVec3(dBodyGetLinearVel(body.body)) - angular.cross(com_offset), angular};
 }
@@ -290,7 +296,7 @@ Twist Simulator::GetBodyVelocity(const BodyRecord& body) const {
 void Simulator::SetBodyVelocity(const BodyRecord& body, const Twist& velocity) {
   RequireFinite(velocity.linear.allFinite() && velocity.angular.allFinite(), "a body velocity");
   if (body.body == nullptr) return;
-  const Vec3 com_offset = ToMat3(dBodyGetRotation(body.body)) * body.com;
+  const Vec3 com_offset = GetBodyPose(body).linear() * body.com;
   const Vec3 com_velocity = velocity.linear + velocity.angular.cross(com_offset);
   dBodySetLinearVel(body.body, com_velocity.x(), com_velocity.y(), com_velocity.z());
   dBodySetAngularVel(body.body, velocity.angular.x(), velocity.angular.y(), velocity.angular.z());
@@ -416,6 +422,7 @@ void Simulator::UpdateWorld(WorldDesc* world) const {
     object.pose = GetObjectPose(i);
     object.initial_velocity = GetObjectVelocity(i);
   }
+  UpdateWorldRobots(world);
 }
 
 // ---- state ------------------------------------------------------------------------------
@@ -427,6 +434,10 @@ SimState Simulator::GetState() const {
 }
 
 void Simulator::CaptureState(SimState* state) const {
+  CaptureBodyState(state, true);
+}
+
+void Simulator::CaptureBodyState(SimState* state, bool with_controllers) const {
   state->time = time_;
   state->objects.resize(object_ids_.size());
   for (size_t i = 0; i < object_ids_.size(); ++i) {
@@ -435,10 +446,12 @@ void Simulator::CaptureState(SimState* state) const {
     state->objects[i] = {ToVec3(dBodyGetPosition(body)), Eigen::Quaterniond(q[0], q[1], q[2], q[3]),
                          ToVec3(dBodyGetLinearVel(body)), ToVec3(dBodyGetAngularVel(body))};
   }
+  CaptureRobotState(state, with_controllers);
 }
 
 void Simulator::SetState(const SimState& state) {
   RestoreState(state);
+  RestoreRobotState(state, true);
   ForgetEnergies();
 }
 
@@ -456,6 +469,7 @@ void Simulator::RestoreState(const SimState& state) {
     dBodySetAngularVel(body, s.angular_velocity.x(), s.angular_velocity.y(),
                        s.angular_velocity.z());
   }
+  RestoreRobotState(state, false);
 }
 
 // ---- stepping ---------------------------------------------------------------------------
@@ -493,6 +507,7 @@ StepStatus Simulator::Simulate(double dt) {
 // halves until it is acceptable or the step reaches kMinimumAdaptiveStep
 StepStatus Simulator::Step(double step) {
   StepStatus status = StepStatus::kNormal;
+  RunControllers(step);
   if (!contacts_current_) DetectContacts();
   MeasureUnknownEnergies();
   if (StopOverflowingBodies()) status = StepStatus::kUnstable;
@@ -501,7 +516,8 @@ StepStatus Simulator::Step(double step) {
   bool recovered = false;
   while (remaining > 0.0) {
     h = std::min(h, remaining);
-    CaptureState(&rollback_state_);  // reuses its storage: no allocation per sub-step
+    // reuses its storage: no allocation per sub-step; controllers only change after a step
+    CaptureBodyState(&rollback_state_, false);
     const IntegrateResult result = Integrate(h);
     if (result == IntegrateResult::kOdeError) {
       // ODE's internal state cannot be trusted after one of its errors
@@ -544,6 +560,7 @@ StepStatus Simulator::Step(double step) {
 void Simulator::AcceptStep(double step) {
   RecordAcceptedContacts();
   RecordFeedback(step);
+  AcceptRobotStep(step);
   time_ += step;
   ++statistics_.steps;
 }
@@ -727,6 +744,7 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     next_feedback_slot_ = 0;
     for (const ContactPair& pair : pairs_) AddContactJoints(pair, step);
     ApplyAccumulatedForces();
+    PrepareRobotsForStep();
     if (solver_.type == SolverType::kQuickStep) {
       dWorldSetQuickStepNumIterations(ode_world_.get(), solver_.quick_step_iterations);
       dWorldQuickStep(ode_world_.get(), step);
@@ -786,6 +804,14 @@ bool Simulator::MayCollide(const BodyRecord& a, const BodyRecord& b) const {
   if (!a.moves_freely() && !b.moves_freely()) return false;
   if (a.kind == WorldId::Kind::kRigidObject && b.kind == WorldId::Kind::kRigidObject) {
     return world_.settings.rigid_object_collisions;
+  }
+  if (a.kind == WorldId::Kind::kRobotLink && b.kind == WorldId::Kind::kRobotLink) {
+    if (a.index != b.index) return world_.settings.robot_robot_collisions;
+    // links welded into one body never push each other; other pairs when allowed
+    if (a.body == b.body || !world_.settings.robot_self_collisions) return false;
+    const std::vector<std::pair<int, int>>& allowed = self_collision_pairs_[a.index];
+    return std::binary_search(allowed.begin(), allowed.end(),
+                              std::make_pair(std::min(a.link, b.link), std::max(a.link, b.link)));
   }
   return true;
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/contact/collision_geometry.h"
+#include "core/control/robot_controller.h"
 #include "core/diagnostics.h"
 #include "core/model/world_desc.h"
 #include "core/sim/contact_feedback.h"
@@ -25,6 +26,8 @@ struct dxJoint;
 struct dContact;
 
 namespace lamina::core {
+
+class OdeRobot;
 
 enum class StepStatus {
   kNormal = 0,
@@ -164,6 +167,23 @@ class Simulator {
   Twist GetObjectVelocity(int object) const;
   void SetObjectVelocity(int object, const Twist& velocity);
 
+  // robots, by index in world().robots
+  int robot_count() const { return static_cast<int>(robots_.size()); }
+  /// Joint values (rad or m; one per link; revolute joints keep whole turns) and rates.
+  VecX GetRobotConfig(int robot) const;
+  VecX GetRobotVelocity(int robot) const;
+  /// Teleports a robot (bodies placed by forward kinematics); the controller is not told.
+  void SetRobotConfig(int robot, const VecX& q);
+  void SetRobotVelocity(int robot, const VecX& dq);
+  /// The controller of a robot: commands, gains, limits and friction, all live.
+  RobotController& controller(int robot) { return controllers_[robot]; }
+  const RobotController& controller(int robot) const { return controllers_[robot]; }
+  /// Clamped driver efforts at the current state (driver-sized; Klamp't getActualTorque).
+  VecX GetActuatorTorques(int robot) const;
+  /// No physics: runs the controllers for dt, advances the time and moves every robot to its
+  /// commanded configuration with the commanded velocities. Objects stay where they are.
+  void FakeSimulate(double dt);
+
   // contacts at the current state (after clustering), one entry per touching pair
   const std::vector<ContactPair>& contact_pairs() const { return pairs_; }
 
@@ -195,6 +215,15 @@ class Simulator {
   struct BodyRecord;
 
   void BuildBodies();
+  void BuildRobot(int robot, int first_link_id);
+  void RunControllers(double step);
+  void PrepareRobotsForStep();
+  void AcceptRobotStep(double step);
+  void CaptureBodyState(SimState* state, bool with_controllers) const;
+  void CaptureRobotState(SimState* state, bool with_controllers) const;
+  void RestoreRobotState(const SimState& state, bool with_controllers);
+  void UpdateWorldRobots(WorldDesc* world) const;
+  std::shared_ptr<const CollisionGeometry> LinkCollisionGeometry(int robot, int link);
   /// SetState without forgetting the energies of the instability check (rollbacks).
   void RestoreState(const SimState& state);
   void ApplyInitialState();
@@ -264,7 +293,14 @@ class Simulator {
   std::unique_ptr<dxJointGroup, void (*)(dxJointGroup*)> contact_group_;
   std::vector<BodyRecord> bodies_;  ///< by world id
   std::vector<int> object_ids_;     ///< world id of each rigid object
-  std::vector<int> collidable_;     ///< ids of bodies with geometry, for the broad phase
+  std::vector<std::unique_ptr<OdeRobot>> robots_;
+  std::vector<RobotController> controllers_;
+  std::vector<std::vector<std::pair<int, int>>> self_collision_pairs_;  ///< per robot, sorted
+  struct RobotScratch {
+    VecX q, dq, forces;
+  };
+  std::vector<RobotScratch> robot_scratch_;  ///< per robot, reused every sub-step
+  std::vector<int> collidable_;              ///< ids of bodies with geometry, for the broad phase
   std::vector<std::pair<int, int>> candidates_;  ///< candidate pairs of the broad phase
   std::vector<ContactPair> pairs_;               ///< contacts at the current state
   std::vector<ContactPair> saved_pairs_;         ///< contacts at the start of a tentative step

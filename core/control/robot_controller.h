@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: MIT
+// RobotController: the controller and actuator emulation of one simulated robot, pure math.
+// It maps between link space (one value per link) and driver space (one value per actuator),
+// runs the per-driver actuator law at the physics rate, runs the motion-queue controller at its
+// own period, and implements the Klamp't SimRobotController command set (docs/motion.md,
+// "Controller").
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/control/actuator.h"
+#include "core/control/joint_limits.h"
+#include "core/control/motion_queue.h"
+#include "core/math_types.h"
+#include "core/model/world_desc.h"
+
+namespace lamina::core {
+
+/// Everything that evolves while simulating, for exact save/restore.
+struct RobotControllerState {
+  std::vector<ActuatorState> actuators;  ///< one per driver
+  MotionQueue queue{JointLimits{}};      ///< link space
+  double next_control_time = 0;          ///< s, simulation time
+  VecX sensed_q;                         ///< link space, last Update()
+  VecX sensed_dq;                        ///< link space, last Update()
+  bool manual = false;                   ///< manual override: the queue does not drive the PIDs
+};
+
+/// Default control period (s) when the robot has no `controller` property with a rate.
+inline constexpr double kDefaultControlPeriod = 0.01;
+/// Acceleration bound (rad/s² or m/s²) for ramps when a link has neither accMax nor torqueMax.
+inline constexpr double kDefaultAccelerationMax = 10.0;
+
+/// The controller of one robot. Vectors named q/dq/τ are link-sized unless said otherwise.
+/// Commands return false with a message in last_error() on bad input (wrong size, NaN, negative
+/// durations, failed ramps) and then leave the controller unchanged; nothing asserts.
+///
+/// Driver ↔ link mapping (driver value v):
+/// - normal: v = q[link];
+/// - affine: q[links[j]] = offset_j + scale_j·v, read back from the first link with a nonzero
+///   scale;
+/// - translation / rotation ({axis link, body link}): v = q[axis link], the virtual floating-base
+///   DOF whose axis the force/torque acts along; its effort goes on that link index (the
+///   simulator turns a virtual link's generalized force into a body force/torque along the
+///   link's axis).
+class RobotController {
+ public:
+  /// Copies the robot (robot() keeps no geometry and no drivers) and its drivers (drivers()).
+  /// Sensed and commanded state start at robot.config (zero if it has the wrong size) and
+  /// robot.velocity; every driver starts in PID mode holding its current value with its servo
+  /// gains. The control period is 1/rate (or timeStep) of the `controller` property when given,
+  /// else kDefaultControlPeriod.
+  explicit RobotController(const RobotDesc& robot);
+
+  int dof() const { return robot_.dof(); }
+  int driver_count() const { return static_cast<int>(drivers_.size()); }
+  const RobotDesc& robot() const { return robot_; }
+
+  /// Live-editable drivers: torque limits and friction are read at every use. After editing servo
+  /// gains here call ApplyDriverGains() (the actuators hold the active gains).
+  std::vector<DriverDesc>& drivers() { return drivers_; }
+  const std::vector<DriverDesc>& drivers() const { return drivers_; }
+  /// Copies each driver's servo_p/i/d into its actuator.
+  void ApplyDriverGains();
+  std::vector<ActuatorState>& actuators() { return actuators_; }
+  const std::vector<ActuatorState>& actuators() const { return actuators_; }
+
+  // ---- link ↔ driver mapping -------------------------------------------------------------
+
+  /// Driver value of driver d at link configuration q.
+  double DriverValue(int d, const VecX& q) const;
+  /// Driver velocity of driver d at link velocities dq.
+  double DriverVelocity(int d, const VecX& dq) const;
+  /// All driver values / velocities (driver-sized).
+  VecX DriverValues(const VecX& q) const;
+  VecX DriverVelocities(const VecX& dq) const;
+  /// `base` (link-sized) with every driven link set from driver values (offset included) or,
+  /// with `velocity`, from driver velocities (scale only).
+  VecX LinkValuesFromDrivers(const VecX& driver_values, const VecX& base, bool velocity) const;
+  /// Driver-space generalized forces of link-space ones (the transpose of the mapping):
+  /// normal τ[link], affine Σ scale_j·τ[links[j]], translation/rotation τ[axis link].
+  VecX DriverForcesFromLinks(const VecX& link_forces) const;
+
+  // ---- physics rate --------------------------------------------------------------------
+
+  /// Link-sized generalized forces of all drivers at state (q, dq) (N·m or N); no state change,
+  /// so the simulator may call it again when it retakes a step. Affine drivers in PID mode add
+  /// Klamp't's corrective transmission term.
+  void ComputeLinkForces(const VecX& q, const VecX& dq, VecX* link_forces) const;
+  /// The clamped driver efforts at (q, dq) (driver-sized; Klamp't getActualTorque).
+  VecX DriverEfforts(const VecX& q, const VecX& dq) const;
+  /// After an accepted physics step of h s ending at q: PID integrals, locked-velocity targets.
+  void AcceptStep(const VecX& q, double h);
+
+  // ---- control rate --------------------------------------------------------------------
+
+  double control_period() const { return control_period_; }
+  /// Period > 0 (s); false otherwise. Klamp't setRate.
+  bool SetControlPeriod(double period);
+  /// True when the controller should run for a step ending at simulation time `time` (s):
+  /// next control time <= time + 1 ns (the simulator passes curTime + h, Klamp't's rule; the
+  /// tolerance absorbs rounding in the accumulated periods).
+  bool ControlDue(double time) const;
+  double next_control_time() const { return next_control_time_; }
+  /// Stores the sensed state (exact simulated q, dq), starts the queue at the sensed config
+  /// clamped into the limits if it is empty, advances it by one control period and, unless in
+  /// manual mode, puts every driver in PID mode tracking it: q_des/dq_des from the queue, the
+  /// integral kept, feed-forward = gravity torques when enabled, else 0 (so a torque command
+  /// ends at the first update after a motion command, as in Klamp't). Schedules the next run
+  /// one period later. False on bad sizes/NaN.
+  bool Update(double time, const VecX& sensed_q, const VecX& sensed_dq);
+  /// Gravity compensation feed-forward (off by default; ignored for floating-base robots).
+  void SetGravityCompensation(bool on, const Vec3& gravity = Vec3(0, 0, -9.8));
+  bool gravity_compensation() const { return gravity_compensation_; }
+
+  // ---- Klamp't commands ----------------------------------------------------------------
+
+  /// PID mode on every driver with targets q, dq (link- or driver-sized; link-sized wins when
+  /// both sizes are equal) and feed-forward τ_ff (0 if omitted); keeps the integrals; manual on.
+  bool SetPIDCommand(const VecX& q, const VecX& dq);
+  bool SetPIDCommand(const VecX& q, const VecX& dq, const VecX& torque_ff);
+  /// Driver-sized gains.
+  bool SetPIDGains(const VecX& kp, const VecX& ki, const VecX& kd);
+  void GetPIDGains(VecX* kp, VecX* ki, VecX* kd) const;
+  /// Torque mode on every driver (link- or driver-sized); manual on.
+  bool SetTorque(const VecX& torque);
+  /// Raw `torque` fields (driver-sized; Klamp't getCommandedTorque).
+  VecX CommandedTorques() const;
+  /// Move at velocity dq for T s of queue time, then hold.
+  bool SetVelocity(const VecX& dq, double duration);
+  bool SetMilestone(const VecX& q);
+  bool SetMilestone(const VecX& q, const VecX& dq);
+  bool AddMilestone(const VecX& q);
+  bool AddMilestone(const VecX& q, const VecX& dq);
+  bool AddMilestoneLinear(const VecX& q);
+  bool SetLinear(const VecX& q, double duration);
+  bool AddLinear(const VecX& q, double duration);
+  bool SetCubic(const VecX& q, const VecX& dq, double duration);
+  bool AddCubic(const VecX& q, const VecX& dq, double duration);
+  /// Queue time left (s).
+  double RemainingTime() const { return queue_.RemainingTime(); }
+  void SetManualMode(bool manual) { manual_ = manual; }
+  bool manual_mode() const { return manual_; }
+
+  /// Commanded config / velocity from the PID targets, in link space (undriven links: sensed).
+  /// False if some driver is not in PID mode (Klamp't raises).
+  bool GetCommandedConfig(VecX* q) const;
+  bool GetCommandedVelocity(VecX* dq) const;
+  /// Link config from the drivers' q_des whatever their mode (for teleporting, fakeSimulate).
+  VecX CommandedLinkConfig() const;
+  const VecX& sensed_config() const { return sensed_q_; }
+  const VecX& sensed_velocity() const { return sensed_dq_; }
+
+  // ---- limits, queue, state --------------------------------------------------------------
+
+  /// Ramp limits (link space); derived from the links at construction, see LinkRampLimits.
+  const JointLimits& limits() const { return limits_; }
+  bool SetLimits(const JointLimits& limits);
+  const MotionQueue& queue() const { return queue_; }
+
+  RobotControllerState GetState() const;
+  /// False (nothing changed) when the sizes do not match this robot.
+  bool SetState(const RobotControllerState& state);
+
+  const std::string& last_error() const { return last_error_; }
+
+ private:
+  bool UsableDriver(int d) const;
+  bool AllPid() const;
+  // Checks a link-sized vector (finite entries).
+  bool CheckLinkVector(const VecX& v, const char* command, const char* name);
+  // Converts a link- or driver-sized value vector to driver space; velocity = scale only.
+  bool ToDriverSpace(const VecX& v, bool velocity, const char* command, const char* name,
+                     VecX* out);
+  bool ToDriverForces(const VecX& torque, const char* command, VecX* out);
+  void EnablePathControl();
+  // Runs a queue command on path control; restores queue and manual flag when it fails.
+  template <typename Command>
+  bool QueueCommand(const char* command, Command&& run);
+  void AddAffineCorrection(int d, const VecX& q, const VecX& dq, VecX* link_forces) const;
+  void SetTargetsFromQueue();
+  bool Fail(std::string message);
+  bool Succeed();
+
+  RobotDesc robot_;
+  std::vector<DriverDesc> drivers_;
+  std::vector<ActuatorState> actuators_;
+  JointLimits limits_;
+  MotionQueue queue_;
+  VecX sensed_q_;
+  VecX sensed_dq_;
+  double control_period_ = kDefaultControlPeriod;
+  double next_control_time_ = 0;
+  bool manual_ = false;
+  bool gravity_compensation_ = false;
+  bool floating_base_ = false;
+  Vec3 gravity_ = Vec3(0, 0, -9.8);
+  std::string last_error_;
+};
+
+/// Ramp limits from the links: q_min/q_max, velocity_max (min of velocity_max and −velocity_min),
+/// acceleration_max. An infinite acceleration_max with a finite torque_max uses
+/// torque_max / I_eff, I_eff the subtree's effective inertia (revolute) or mass (prismatic) about
+/// the joint at robot.config; when that is unavailable, kDefaultAccelerationMax.
+JointLimits LinkRampLimits(const RobotDesc& robot);
+
+/// The control period of a `controller` property's XML: 1/rate or timeStep (s); 0 if absent.
+double ControlPeriodFromProperty(const std::string& xml);
+
+}  // namespace lamina::core

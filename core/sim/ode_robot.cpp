@@ -1,0 +1,456 @@
+// SPDX-License-Identifier: MIT
+#include "core/sim/ode_robot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/robot/kinematics.h"
+
+namespace lamina::core {
+
+namespace {
+
+// a revolute joint whose range is this wide or wider is followed through whole turns
+constexpr double kFullTurn = 2 * kPi;
+// a stop of a wide-range joint is given to ODE only while it lies this far inside the hinge's
+// (-π, π] reading, where ODE's angle test does not wrap
+constexpr double kStopWrapMargin = 0.1;
+// ODE rejects massless bodies: a massless moving link gets this mass (kg), as in Klamp't
+constexpr double kMinimumLinkMass = 1e-3;
+
+Vec3 ToVec3(const dReal* v) {
+  return {v[0], v[1], v[2]};
+}
+
+Mat3 ToMat3(const dReal* r) {
+  Mat3 m;
+  m << r[0], r[1], r[2], r[4], r[5], r[6], r[8], r[9], r[10];
+  return m;
+}
+
+void PlaceBody(dBodyID body, const Mat3& rotation, const Vec3& position) {
+  const Eigen::Quaterniond q(rotation);
+  const dQuaternion ode_q = {q.w(), q.x(), q.y(), q.z()};
+  dBodySetQuaternion(body, ode_q);
+  dBodySetPosition(body, position.x(), position.y(), position.z());
+}
+
+std::vector<JointType> LinkJointTypes(const RobotDesc& robot) {
+  std::vector<JointType> types(robot.links.size(), JointType::kNormal);
+  for (const JointDesc& joint : robot.joints) {
+    if (joint.link < 0 || joint.link >= robot.dof()) continue;
+    if (joint.type == JointType::kFloating || joint.type == JointType::kFloatingPlanar ||
+        joint.type == JointType::kBallAndSocket) {
+      for (int i = joint.base + 1; i <= joint.link; ++i) types[i] = joint.type;
+    } else {
+      types[joint.link] = joint.type;
+    }
+  }
+  return types;
+}
+
+// true when links first..first+5 are Klamp't's floating base: translations along x, y, z,
+// then rotations about z, y, x, each frame on its parent's
+bool IsStandardFloatingBase(const RobotDesc& robot, int first, int last) {
+  if (last - first != 5) return false;
+  const Vec3 axes[6] = {Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ(),
+                        Vec3::UnitZ(), Vec3::UnitY(), Vec3::UnitX()};
+  for (int k = 0; k < 6; ++k) {
+    const LinkDesc& link = robot.links[first + k];
+    const LinkJointAxis expected = k < 3 ? LinkJointAxis::kPrismatic : LinkJointAxis::kRevolute;
+    if (link.axis_type != expected || (link.axis.normalized() - axes[k]).norm() > 1e-9) {
+      return false;
+    }
+    if (k > 0 && (link.parent != first + k - 1 ||
+                  !link.parent_transform.isApprox(Pose::Identity(), 1e-12))) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+OdeRobot::OdeRobot(dWorldID world, const RobotDesc& robot, Diagnostics& diagnostics)
+    : robot_(robot),
+      links_(robot.links.size()),
+      joint_types_(LinkJointTypes(robot)),
+      wide_(robot.links.size(), false),
+      model_config_(robot.config) {
+  joint_state_.turns.assign(robot.links.size(), 0);
+  joint_state_.last_angle.assign(robot.links.size(), 0.0);
+  for (const JointDesc& joint : robot.joints) {
+    if (joint.type == JointType::kFloating) {
+      if (floating_link_ >= 0 || !IsStandardFloatingBase(robot, joint.base + 1, joint.link)) {
+        diagnostics.Error({robot.source_path, 0},
+                          "robot '" + robot.name +
+                              "': only one floating base of 6 virtual links (x, y, z, then "
+                              "rotations about z, y, x) is supported; the joint is welded");
+        for (int i = joint.base + 1; i <= joint.link; ++i) joint_types_[i] = JointType::kWeld;
+        continue;
+      }
+      floating_first_ = joint.base + 1;
+      floating_link_ = joint.link;
+    } else if (joint.type == JointType::kFloatingPlanar ||
+               joint.type == JointType::kBallAndSocket) {
+      diagnostics.Error({robot.source_path, 0},
+                        "robot '" + robot.name + "': " + JointTypeName(joint.type) +
+                            " joints are not simulated yet; link " + std::to_string(joint.link) +
+                            " is welded to its parent");
+      for (int i = joint.base + 1; i <= joint.link; ++i) joint_types_[i] = JointType::kWeld;
+    }
+  }
+  // hinges read ODE angles in (-π, π]: a joint whose range is narrower than a turn is built at
+  // the middle of its range so that its stops never sit at the wrap (Klamp't drops stops that
+  // touch ±π); wider ones are built at their configuration and count turns
+  VecX build = robot.config;
+  for (int i = 0; i < dof(); ++i) {
+    const LinkDesc& link = robot.links[i];
+    if (link.axis_type != LinkJointAxis::kRevolute) continue;
+    const double range = link.q_max - link.q_min;
+    if (joint_types_[i] == JointType::kNormal && std::isfinite(range) && range < kFullTurn) {
+      build[i] = 0.5 * (link.q_min + link.q_max);
+    } else {
+      wide_[i] = true;
+    }
+  }
+  BuildBodies(world, build, diagnostics);
+  BuildJoints(world, build);
+  SetConfig(robot.config);
+  SetVelocity(robot.velocity.size() == robot.config.size() ? robot.velocity
+                                                           : VecX::Zero(robot.dof()));
+}
+
+OdeRobot::~OdeRobot() {
+  for (Link& link : links_) {
+    if (link.joint) dJointDestroy(link.joint);
+  }
+  for (Link& link : links_) {
+    if (link.owns_body) dBodyDestroy(link.body);
+  }
+}
+
+bool OdeRobot::is_moving_joint(int i) const {
+  if (joint_types_[i] == JointType::kFloating) return true;
+  return links_[i].joint != nullptr;
+}
+
+// Every link's body: a floating base and each moving link get their own; welded links join
+// their parent's body (or the world). Mass properties of a body are its links' exact sum.
+void OdeRobot::BuildBodies(dWorldID world, const VecX& q, Diagnostics& diagnostics) {
+  const std::vector<Pose> frames = LinkTransforms(robot_, q);
+  std::vector<int> owner(links_.size(), -1);
+  for (int i = 0; i < dof(); ++i) {
+    const LinkDesc& desc = robot_.links[i];
+    Link& link = links_[i];
+    const JointType type = joint_types_[i];
+    if (type == JointType::kFloating && i != floating_link_) {
+      link.kind = LinkKind::kVirtual;
+    } else if (type == JointType::kWeld &&
+               (desc.parent < 0 || links_[desc.parent].kind != LinkKind::kBody)) {
+      link.kind = LinkKind::kStatic;
+      link.fixed_pose = frames[i];
+    } else if (type == JointType::kWeld) {
+      owner[i] = owner[desc.parent];
+    } else {
+      owner[i] = i;
+    }
+  }
+  // composite mass of each owner's group, in the owner's link frame
+  for (int o = 0; o < dof(); ++o) {
+    if (owner[o] != o) continue;
+    double mass = 0.0;
+    Vec3 moment = Vec3::Zero();
+    for (int k = 0; k < dof(); ++k) {
+      if (owner[k] != o) continue;
+      const Pose o_from_k = frames[o].inverse() * frames[k];
+      mass += robot_.links[k].mass;
+      moment += robot_.links[k].mass * (o_from_k * robot_.links[k].com);
+    }
+    const Vec3 com = mass > 0.0 ? Vec3(moment / mass) : robot_.links[o].com;
+    Mat3 inertia = Mat3::Zero();
+    for (int k = 0; k < dof(); ++k) {
+      if (owner[k] != o) continue;
+      const Pose o_from_k = frames[o].inverse() * frames[k];
+      const Mat3 R = o_from_k.linear();
+      const Vec3 r = o_from_k * robot_.links[k].com - com;
+      inertia += R * robot_.links[k].inertia * R.transpose() +
+                 robot_.links[k].mass * (r.squaredNorm() * Mat3::Identity() - r * r.transpose());
+    }
+    Link& link = links_[o];
+    link.body = dBodyCreate(world);
+    link.owns_body = true;
+    dBodySetFiniteRotationMode(link.body, 1);
+    dMass ode_mass;
+    dMassSetParameters(&ode_mass, mass, 0, 0, 0, inertia(0, 0), inertia(1, 1), inertia(2, 2),
+                       inertia(0, 1), inertia(0, 2), inertia(1, 2));
+    if (!dMassCheck(&ode_mass)) {
+      diagnostics.Note({robot_.source_path, 0},
+                       "robot '" + robot_.name + "': link '" + robot_.links[o].name +
+                           "' has no valid mass or inertia; simulated with 1 g");
+      mass = std::max(mass, kMinimumLinkMass);
+      inertia = kMinimumLinkMass * Mat3::Identity();
+      dMassSetParameters(&ode_mass, mass, 0, 0, 0, inertia(0, 0), inertia(1, 1), inertia(2, 2), 0,
+                         0, 0);
+    }
+    dBodySetMass(link.body, &ode_mass);
+    link.mass = ode_mass.mass;
+    link.inertia = inertia;
+    link.com = com;
+    PlaceBody(link.body, frames[o].linear(), frames[o] * com);
+  }
+  for (int k = 0; k < dof(); ++k) {
+    if (owner[k] < 0 || owner[k] == k) continue;
+    const Link& carrier = links_[owner[k]];
+    const Pose o_from_k = frames[owner[k]].inverse() * frames[k];
+    links_[k].body = carrier.body;
+    links_[k].rotation_in_body = o_from_k.linear();
+    links_[k].com = o_from_k.inverse() * carrier.com;
+  }
+}
+
+void OdeRobot::BuildJoints(dWorldID world, const VecX& q) {
+  const std::vector<Pose> frames = LinkTransforms(robot_, q);
+  for (int i = 0; i < dof(); ++i) {
+    const JointType type = joint_types_[i];
+    if (type != JointType::kNormal && type != JointType::kSpin) continue;
+    const LinkDesc& desc = robot_.links[i];
+    Link& link = links_[i];
+    if (link.kind != LinkKind::kBody || !link.owns_body) continue;
+    const dBodyID parent = desc.parent >= 0 ? links_[desc.parent].body : nullptr;
+    const Vec3 axis = frames[i].linear() * desc.axis.normalized();
+    const Vec3 origin = frames[i].translation();
+    link.reference = q[i];
+    if (desc.axis_type == LinkJointAxis::kRevolute) {
+      link.joint = dJointCreateHinge(world, nullptr);
+      dJointAttach(link.joint, link.body, parent);
+      dJointSetHingeAnchor(link.joint, origin.x(), origin.y(), origin.z());
+      dJointSetHingeAxis(link.joint, axis.x(), axis.y(), axis.z());
+    } else {
+      link.joint = dJointCreateSlider(world, nullptr);
+      dJointAttach(link.joint, link.body, parent);
+      dJointSetSliderAxis(link.joint, axis.x(), axis.y(), axis.z());
+    }
+    SetStops(i);
+  }
+}
+
+// fixed stops: sliders and hinges narrower than a turn (built at mid-range); spin joints and
+// joints without limits have none; wide hinges get theirs in PrepareStep
+void OdeRobot::SetStops(int i) {
+  const LinkDesc& desc = robot_.links[i];
+  Link& link = links_[i];
+  if (joint_types_[i] == JointType::kSpin || wide_[i]) return;
+  const double lo = std::isfinite(desc.q_min) ? desc.q_min - link.reference : -dInfinity;
+  const double hi = std::isfinite(desc.q_max) ? desc.q_max - link.reference : dInfinity;
+  if (desc.axis_type == LinkJointAxis::kRevolute) {
+    dJointSetHingeParam(link.joint, dParamLoStop, lo);
+    dJointSetHingeParam(link.joint, dParamHiStop, hi);
+    dJointSetHingeParam(link.joint, dParamBounce, 0.0);
+  } else {
+    dJointSetSliderParam(link.joint, dParamLoStop, lo);
+    dJointSetSliderParam(link.joint, dParamHiStop, hi);
+    dJointSetSliderParam(link.joint, dParamBounce, 0.0);
+  }
+}
+
+double OdeRobot::HingeAngle(int i) const {
+  return dJointGetHingeAngle(links_[i].joint);
+}
+
+void OdeRobot::PrepareStep() {
+  for (int i = 0; i < dof(); ++i) {
+    if (!wide_[i] || links_[i].joint == nullptr || joint_types_[i] == JointType::kSpin) continue;
+    const LinkDesc& desc = robot_.links[i];
+    if (!std::isfinite(desc.q_min) && !std::isfinite(desc.q_max)) continue;
+    const double angle = HingeAngle(i);
+    const double q = links_[i].reference + angle + kFullTurn * joint_state_.turns[i];
+    // the stops in ODE's reading of the hinge, when they lie inside it
+    const double lo = angle + (desc.q_min - q);
+    const double hi = angle + (desc.q_max - q);
+    const double limit = kPi - kStopWrapMargin;
+    dJointSetHingeParam(links_[i].joint, dParamLoStop, -dInfinity);
+    dJointSetHingeParam(links_[i].joint, dParamHiStop, std::abs(hi) < limit ? hi : dInfinity);
+    dJointSetHingeParam(links_[i].joint, dParamLoStop, std::abs(lo) < limit ? lo : -dInfinity);
+  }
+}
+
+void OdeRobot::AcceptStep() {
+  for (int i = 0; i < dof(); ++i) {
+    if (!wide_[i] || links_[i].joint == nullptr) continue;
+    const double angle = HingeAngle(i);
+    const double jump = angle - joint_state_.last_angle[i];
+    if (jump > kPi) --joint_state_.turns[i];
+    if (jump < -kPi) ++joint_state_.turns[i];
+    joint_state_.last_angle[i] = angle;
+  }
+}
+
+void OdeRobot::CaptureJointState(RobotJointState* state) const {
+  *state = joint_state_;
+}
+
+void OdeRobot::RestoreJointState(const RobotJointState& state) {
+  if (state.turns.size() == joint_state_.turns.size()) joint_state_ = state;
+}
+
+Pose OdeRobot::FloatingBaseFrame(const VecX& q) const {
+  Pose frame = Pose::Identity();
+  const LinkDesc& first = robot_.links[floating_first_];
+  if (first.parent >= 0) frame = LinkTransforms(robot_, q)[first.parent];
+  for (int i = floating_first_; i <= floating_link_; ++i) {
+    frame = frame * robot_.links[i].parent_transform * LinkJointMotion(robot_.links[i], q[i]);
+  }
+  return frame;
+}
+
+void OdeRobot::GetConfig(VecX* q) const {
+  *q = model_config_;
+  for (int i = 0; i < dof(); ++i) {
+    const Link& link = links_[i];
+    if (link.joint == nullptr) continue;
+    if (robot_.links[i].axis_type == LinkJointAxis::kRevolute) {
+      (*q)[i] = link.reference + HingeAngle(i) + kFullTurn * joint_state_.turns[i];
+    } else {
+      (*q)[i] = link.reference + dJointGetSliderPosition(link.joint);
+    }
+  }
+  if (floating_link_ < 0) return;
+  const Link& base = links_[floating_link_];
+  const Mat3 R = ToMat3(dBodyGetRotation(base.body));
+  Pose frame = Pose::Identity();
+  frame.linear() = R;
+  frame.translation() = ToVec3(dBodyGetPosition(base.body)) - R * base.com;
+  const Pose parent = robot_.links[floating_first_].parent_transform;
+  const Pose local = parent.inverse() * frame;
+  const Vec3 rpy = RollPitchYawFromRotation(local.linear());
+  q->segment<3>(floating_first_) = local.translation();
+  (*q)[floating_first_ + 3] = rpy.z();
+  (*q)[floating_first_ + 4] = rpy.y();
+  (*q)[floating_first_ + 5] = rpy.x();
+}
+
+void OdeRobot::GetVelocity(VecX* dq) const {
+  *dq = VecX::Zero(dof());
+  for (int i = 0; i < dof(); ++i) {
+    const Link& link = links_[i];
+    if (link.joint == nullptr) continue;
+    (*dq)[i] = robot_.links[i].axis_type == LinkJointAxis::kRevolute
+                   ? dJointGetHingeAngleRate(link.joint)
+                   : dJointGetSliderPositionRate(link.joint);
+  }
+  if (floating_link_ < 0) return;
+  const Link& base = links_[floating_link_];
+  const Mat3 R = ToMat3(dBodyGetRotation(base.body));
+  const Vec3 w = ToVec3(dBodyGetAngularVel(base.body));
+  const Vec3 v_origin = ToVec3(dBodyGetLinearVel(base.body)) - w.cross(R * base.com);
+  const Mat3 P = robot_.links[floating_first_].parent_transform.linear();
+  dq->segment<3>(floating_first_) = P.transpose() * v_origin;
+  // ω = yaw' z + pitch' Rz(yaw) y + roll' Rz(yaw) Ry(pitch) x, in the base's parent axes
+  VecX q;
+  GetConfig(&q);
+  const Mat3 Rz = Eigen::AngleAxisd(q[floating_first_ + 3], Vec3::UnitZ()).toRotationMatrix();
+  const Mat3 Ry = Eigen::AngleAxisd(q[floating_first_ + 4], Vec3::UnitY()).toRotationMatrix();
+  Mat3 E;
+  E.col(0) = Vec3::UnitZ();
+  E.col(1) = Rz * Vec3::UnitY();
+  E.col(2) = Rz * Ry * Vec3::UnitX();
+  dq->segment<3>(floating_first_ + 3) =
+      E.completeOrthogonalDecomposition().solve(P.transpose() * w);
+}
+
+void OdeRobot::SetConfig(const VecX& q) {
+  model_config_ = q;
+  const std::vector<Pose> frames = LinkTransforms(robot_, q);
+  for (int i = 0; i < dof(); ++i) {
+    const Link& link = links_[i];
+    if (!link.owns_body) continue;
+    PlaceBody(link.body, frames[i].linear(), frames[i] * link.com);
+  }
+  for (int i = 0; i < dof(); ++i) {
+    if (!wide_[i] || links_[i].joint == nullptr) continue;
+    const double angle = HingeAngle(i);
+    joint_state_.turns[i] =
+        static_cast<int>(std::lround((q[i] - links_[i].reference - angle) / kFullTurn));
+    joint_state_.last_angle[i] = angle;
+  }
+}
+
+void OdeRobot::SetVelocity(const VecX& dq) {
+  VecX q;
+  GetConfig(&q);
+  const std::vector<Pose> frames = LinkTransforms(robot_, q);
+  std::vector<Vec3> w(dof(), Vec3::Zero()), v(dof(), Vec3::Zero());  // at link origins
+  for (int i = 0; i < dof(); ++i) {
+    const LinkDesc& desc = robot_.links[i];
+    if (desc.parent >= 0) {
+      w[i] = w[desc.parent];
+      v[i] = v[desc.parent] +
+             w[desc.parent].cross(frames[i].translation() - frames[desc.parent].translation());
+    }
+    if (joint_types_[i] == JointType::kWeld) continue;
+    const Vec3 axis = frames[i].linear() * desc.axis.normalized();
+    if (desc.axis_type == LinkJointAxis::kRevolute) {
+      w[i] += dq[i] * axis;
+    } else {
+      v[i] += dq[i] * axis;
+    }
+  }
+  for (int i = 0; i < dof(); ++i) {
+    const Link& link = links_[i];
+    if (!link.owns_body) continue;
+    const Vec3 com_velocity = v[i] + w[i].cross(frames[i].linear() * link.com);
+    dBodySetLinearVel(link.body, com_velocity.x(), com_velocity.y(), com_velocity.z());
+    dBodySetAngularVel(link.body, w[i].x(), w[i].y(), w[i].z());
+  }
+}
+
+void OdeRobot::ApplyLinkForces(const VecX& forces) {
+  for (int i = 0; i < dof(); ++i) {
+    const double f = forces[i];
+    if (f == 0.0) continue;
+    const Link& link = links_[i];
+    if (link.joint != nullptr) {
+      if (robot_.links[i].axis_type == LinkJointAxis::kRevolute) {
+        dJointAddHingeTorque(link.joint, f);
+      } else {
+        dJointAddSliderForce(link.joint, f);
+      }
+    }
+  }
+  if (floating_link_ < 0) return;
+  VecX q;
+  GetConfig(&q);
+  const std::vector<Pose> frames = LinkTransforms(robot_, q);
+  const dBodyID body = links_[floating_link_].body;
+  for (int i = floating_first_; i <= floating_link_; ++i) {
+    const double f = forces[i];
+    if (f == 0.0) continue;
+    const Vec3 axis = frames[i].linear() * robot_.links[i].axis.normalized();
+    if (robot_.links[i].axis_type == LinkJointAxis::kPrismatic) {
+      dBodyAddForce(body, f * axis.x(), f * axis.y(), f * axis.z());
+    } else {
+      dBodyAddTorque(body, f * axis.x(), f * axis.y(), f * axis.z());
+    }
+  }
+}
+
+void OdeRobot::SetJointFriction(const std::vector<DriverDesc>& drivers, const VecX& dq) {
+  for (const DriverDesc& driver : drivers) {
+    if (driver.type != DriverType::kNormal || driver.links.empty()) continue;
+    const int i = driver.links[0];
+    if (i < 0 || i >= dof() || links_[i].joint == nullptr) continue;
+    const double fmax =
+        std::max(0.0, driver.dry_friction + driver.viscous_friction * std::abs(dq[i]));
+    if (robot_.links[i].axis_type == LinkJointAxis::kRevolute) {
+      dJointSetHingeParam(links_[i].joint, dParamVel, 0.0);
+      dJointSetHingeParam(links_[i].joint, dParamFMax, fmax);
+    } else {
+      dJointSetSliderParam(links_[i].joint, dParamVel, 0.0);
+      dJointSetSliderParam(links_[i].joint, dParamFMax, fmax);
+    }
+  }
+}
+
+}  // namespace lamina::core

@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: MIT
+// A robot on ODE: links grouped into bodies (welded links merged into their parent's body with
+// the exact composite inertia, a floating base as one free body, links welded to the world as
+// static geometry), hinges and sliders with stops, joint friction motors, and the map between
+// joint coordinates and body states. The Simulator owns one per robot.
+#pragma once
+
+#include <vector>
+
+#include <ode/ode.h>
+
+#include "core/diagnostics.h"
+#include "core/model/world_desc.h"
+#include "core/sim/robot_joint_state.h"
+
+namespace lamina::core {
+
+class OdeRobot {
+ public:
+  enum class LinkKind {
+    kVirtual,  ///< a floating base's virtual link: no body, no geometry
+    kStatic,   ///< welded to the world (fixed base): geometry at a fixed pose
+    kBody,     ///< carried by an ODE body (its own, or its parent's when welded)
+  };
+  struct Link {
+    LinkKind kind = LinkKind::kBody;
+    dBodyID body = nullptr;                    ///< the carrying body (kBody)
+    bool owns_body = false;                    ///< the body was made for this link
+    Mat3 rotation_in_body = Mat3::Identity();  ///< link axes in the carrying body's axes
+    Vec3 com = Vec3::Zero();             ///< the carrying body's centre of mass in the link frame
+    Pose fixed_pose = Pose::Identity();  ///< kStatic: link frame in the world
+    dJointID joint = nullptr;            ///< hinge or slider to the parent's body (or the world)
+    double reference = 0.0;              ///< joint value where the ODE joint reads zero
+    double mass = 0.0;                   ///< owners: the body's mass (kg)
+    Mat3 inertia = Mat3::Zero();         ///< owners: about the COM, in the link axes
+  };
+
+  /// Builds the robot at robot.config. Unsupported joints (floating planar, ball and socket)
+  /// are reported to `diagnostics` and treated as welds.
+  OdeRobot(dWorldID world, const RobotDesc& robot, Diagnostics& diagnostics);
+  ~OdeRobot();
+  OdeRobot(const OdeRobot&) = delete;
+  OdeRobot& operator=(const OdeRobot&) = delete;
+
+  int dof() const { return static_cast<int>(links_.size()); }
+  const Link& link(int i) const { return links_[i]; }
+  /// Index of the floating base's body link, or -1.
+  int floating_link() const { return floating_link_; }
+  /// True for links whose value is a joint coordinate of the simulation (hinge, slider or
+  /// floating base); welded links keep their model value.
+  bool is_moving_joint(int i) const;
+
+  /// Joint values (rad or m) and rates of every link; revolute joints count whole turns.
+  void GetConfig(VecX* q) const;
+  void GetVelocity(VecX* dq) const;
+  /// Places every body for configuration q / joint rates dq (teleports the robot).
+  void SetConfig(const VecX& q);
+  void SetVelocity(const VecX& dq);
+
+  /// Before each ODE step: joint stops of wide-range joints around the current angle.
+  void PrepareStep();
+  /// Adds the generalized force of every link (N·m on hinges, N on sliders, along the virtual
+  /// axes of a floating base) for the coming ODE step.
+  void ApplyLinkForces(const VecX& forces);
+  /// Joint friction motors: each driven link resists motion with up to dry + viscous·|dq|.
+  void SetJointFriction(const std::vector<DriverDesc>& drivers, const VecX& dq);
+  /// After an accepted step: counts the turns of revolute joints.
+  void AcceptStep();
+
+  void CaptureJointState(RobotJointState* state) const;
+  void RestoreJointState(const RobotJointState& state);
+
+ private:
+  void BuildBodies(dWorldID world, const VecX& q, Diagnostics& diagnostics);
+  void BuildJoints(dWorldID world, const VecX& q);
+  void SetStops(int i);
+  double HingeAngle(int i) const;
+  Pose FloatingBaseFrame(const VecX& q) const;
+
+  const RobotDesc& robot_;
+  std::vector<Link> links_;
+  std::vector<JointType> joint_types_;  ///< per link
+  std::vector<bool> wide_;              ///< revolute range of 2π or more (turns are counted)
+  RobotJointState joint_state_;
+  int floating_link_ = -1;
+  int floating_first_ = -1;  ///< first virtual link of the floating base
+  VecX model_config_;        ///< values of welded links
+};
+
+}  // namespace lamina::core

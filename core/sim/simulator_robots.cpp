@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: MIT
+// The Simulator's robots: building their bodies and joints, running their controllers at the
+// control rate and their actuators and joint friction at every physics step, their part of the
+// simulation state, and fakeSimulate.
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "core/geometry/shrink.h"
+#include "core/sim/ode_robot.h"
+#include "core/sim/simulator.h"
+#include "core/sim/simulator_records.h"
+
+namespace lamina::core {
+
+namespace {
+
+Vec3 ToVec3(const dReal* v) {
+  return {v[0], v[1], v[2]};
+}
+
+void RequireRobot(int robot, int count) {
+  if (robot < 0 || robot >= count) {
+    throw std::out_of_range("robot index " + std::to_string(robot) + " out of range");
+  }
+}
+
+void RequireFiniteVector(const VecX& v, int size, const char* what) {
+  if (v.size() != size || !v.allFinite()) {
+    throw std::invalid_argument(std::string(what) + " must have " + std::to_string(size) +
+                                " finite entries");
+  }
+}
+
+// one mesh of every geometry of a link, in the link frame (a link's own file plus its mounts)
+GeometryDesc CombinedLinkGeometry(const LinkDesc& link) {
+  auto mesh = std::make_shared<TriangleMesh>();
+  for (const GeometryDesc& part : link.geometry) {
+    if (part.empty()) continue;
+    const TriangleMesh baked = BakedMesh(part);
+    const int offset = static_cast<int>(mesh->vertices.size());
+    mesh->vertices.insert(mesh->vertices.end(), baked.vertices.begin(), baked.vertices.end());
+    for (const Eigen::Vector3i& t : baked.triangles) {
+      mesh->triangles.push_back(t + Eigen::Vector3i::Constant(offset));
+    }
+  }
+  GeometryDesc combined;
+  combined.kind = GeometryKind::kMesh;
+  combined.mesh = std::move(mesh);
+  return combined;
+}
+
+}  // namespace
+
+void Simulator::BuildRobot(int robot, int first_link_id) {
+  const RobotDesc& desc = world_.robots[robot];
+  robots_.push_back(std::make_unique<OdeRobot>(ode_world_.get(), desc, diagnostics_));
+  controllers_.emplace_back(desc);
+  robot_scratch_.emplace_back();
+  self_collision_pairs_.push_back(desc.SelfCollisionPairs());
+  std::sort(self_collision_pairs_.back().begin(), self_collision_pairs_.back().end());
+  const OdeRobot& sim_robot = *robots_.back();
+  for (int l = 0; l < desc.dof(); ++l) {
+    const OdeRobot::Link& link = sim_robot.link(l);
+    BodyRecord& record = bodies_[first_link_id + l];
+    record.kind = WorldId::Kind::kRobotLink;
+    record.index = robot;
+    record.link = l;
+    record.body = link.kind == OdeRobot::LinkKind::kBody ? link.body : nullptr;
+    record.owns_body = link.owns_body;
+    record.rotation_in_body = link.rotation_in_body;
+    record.fixed_pose = link.fixed_pose;
+    record.com = link.com;
+    record.mass = link.owns_body ? link.mass : 0.0;
+    record.inertia = link.owns_body ? link.inertia : Mat3::Zero();
+    if (link.kind != OdeRobot::LinkKind::kVirtual) RebuildCollisionGeometry(first_link_id + l);
+  }
+}
+
+std::shared_ptr<const CollisionGeometry> Simulator::LinkCollisionGeometry(int robot, int link) {
+  const LinkDesc& desc = world_.robots[robot].links[link];
+  int parts = 0;
+  const GeometryDesc* single = nullptr;
+  for (const GeometryDesc& part : desc.geometry) {
+    if (part.empty()) continue;
+    ++parts;
+    single = &part;
+  }
+  if (parts == 0) return nullptr;
+  const GeometryDesc geometry = parts == 1 ? *single : CombinedLinkGeometry(desc);
+  if (desc.sim.preshrink != Preshrink::kNone && desc.sim.padding > 0.0) {
+    return CollisionGeometry::Build(ShrinkGeometry(geometry, desc.sim.padding, &diagnostics_));
+  }
+  return parts == 1 ? geometry_cache_.Get(geometry) : CollisionGeometry::Build(geometry);
+}
+
+// Klamp't's order within a sub-step: the controller runs when its next time falls within the
+// step, with the state at the start of the step as its sensor readings
+void Simulator::RunControllers(double step) {
+  for (int r = 0; r < robot_count(); ++r) {
+    RobotController& controller = controllers_[r];
+    if (!controller.ControlDue(time_ + step)) continue;
+    RobotScratch& scratch = robot_scratch_[r];
+    robots_[r]->GetConfig(&scratch.q);
+    robots_[r]->GetVelocity(&scratch.dq);
+    controller.Update(time_, scratch.q, scratch.dq);
+  }
+}
+
+// before every ODE step (also a retaken one): stops, joint friction and actuator efforts from
+// the state the step starts from
+void Simulator::PrepareRobotsForStep() {
+  for (int r = 0; r < robot_count(); ++r) {
+    OdeRobot& robot = *robots_[r];
+    RobotScratch& scratch = robot_scratch_[r];
+    robot.GetConfig(&scratch.q);
+    robot.GetVelocity(&scratch.dq);
+    robot.PrepareStep();
+    robot.SetJointFriction(controllers_[r].drivers(), scratch.dq);
+    controllers_[r].ComputeLinkForces(scratch.q, scratch.dq, &scratch.forces);
+    robot.ApplyLinkForces(scratch.forces);
+  }
+}
+
+void Simulator::AcceptRobotStep(double step) {
+  for (int r = 0; r < robot_count(); ++r) {
+    robots_[r]->AcceptStep();
+    RobotScratch& scratch = robot_scratch_[r];
+    robots_[r]->GetConfig(&scratch.q);
+    controllers_[r].AcceptStep(scratch.q, step);
+  }
+}
+
+void Simulator::CaptureRobotState(SimState* state, bool with_controllers) const {
+  state->robots.resize(robots_.size());
+  for (int r = 0; r < robot_count(); ++r) {
+    RobotSimState& robot_state = state->robots[r];
+    const OdeRobot& robot = *robots_[r];
+    robot_state.bodies.clear();
+    for (int l = 0; l < robot.dof(); ++l) {
+      if (!robot.link(l).owns_body) continue;
+      const dBodyID body = robot.link(l).body;
+      const dReal* q = dBodyGetQuaternion(body);
+      robot_state.bodies.push_back(
+          {ToVec3(dBodyGetPosition(body)), Eigen::Quaterniond(q[0], q[1], q[2], q[3]),
+           ToVec3(dBodyGetLinearVel(body)), ToVec3(dBodyGetAngularVel(body))});
+    }
+    robot.CaptureJointState(&robot_state.joints);
+    if (with_controllers) robot_state.controller = controllers_[r].GetState();
+  }
+}
+
+void Simulator::RestoreRobotState(const SimState& state, bool with_controllers) {
+  for (int r = 0; r < robot_count() && r < static_cast<int>(state.robots.size()); ++r) {
+    const RobotSimState& robot_state = state.robots[r];
+    OdeRobot& robot = *robots_[r];
+    size_t next = 0;
+    for (int l = 0; l < robot.dof() && next < robot_state.bodies.size(); ++l) {
+      if (!robot.link(l).owns_body) continue;
+      const BodyState& s = robot_state.bodies[next++];
+      const dBodyID body = robot.link(l).body;
+      dBodySetPosition(body, s.com_position.x(), s.com_position.y(), s.com_position.z());
+      const dQuaternion q = {s.orientation.w(), s.orientation.x(), s.orientation.y(),
+                             s.orientation.z()};
+      dBodySetQuaternion(body, q);
+      dBodySetLinearVel(body, s.linear_velocity.x(), s.linear_velocity.y(), s.linear_velocity.z());
+      dBodySetAngularVel(body, s.angular_velocity.x(), s.angular_velocity.y(),
+                         s.angular_velocity.z());
+    }
+    robot.RestoreJointState(robot_state.joints);
+    if (with_controllers) controllers_[r].SetState(robot_state.controller);
+  }
+}
+
+void Simulator::UpdateWorldRobots(WorldDesc* world) const {
+  if (world->robots.size() != world_.robots.size()) {
+    throw std::invalid_argument("UpdateWorld: the world does not match the simulated one");
+  }
+  for (int r = 0; r < robot_count(); ++r) {
+    RobotDesc& robot = world->robots[r];
+    for (size_t l = 0; l < robot.links.size() && l < world_.robots[r].links.size(); ++l) {
+      robot.links[l].sim = world_.robots[r].links[l].sim;
+    }
+    robot.config = GetRobotConfig(r);
+    robot.velocity = GetRobotVelocity(r);
+  }
+}
+
+VecX Simulator::GetRobotConfig(int robot) const {
+  RequireRobot(robot, robot_count());
+  VecX q;
+  robots_[robot]->GetConfig(&q);
+  return q;
+}
+
+VecX Simulator::GetRobotVelocity(int robot) const {
+  RequireRobot(robot, robot_count());
+  VecX dq;
+  robots_[robot]->GetVelocity(&dq);
+  return dq;
+}
+
+void Simulator::SetRobotConfig(int robot, const VecX& q) {
+  RequireRobot(robot, robot_count());
+  RequireFiniteVector(q, robots_[robot]->dof(), "a robot configuration");
+  robots_[robot]->SetConfig(q);
+  contacts_current_ = false;
+}
+
+void Simulator::SetRobotVelocity(int robot, const VecX& dq) {
+  RequireRobot(robot, robot_count());
+  RequireFiniteVector(dq, robots_[robot]->dof(), "a robot velocity");
+  robots_[robot]->SetVelocity(dq);
+}
+
+VecX Simulator::GetActuatorTorques(int robot) const {
+  RequireRobot(robot, robot_count());
+  return controllers_[robot].DriverEfforts(GetRobotConfig(robot), GetRobotVelocity(robot));
+}
+
+void Simulator::FakeSimulate(double dt) {
+  if (!(dt >= 0.0) || !std::isfinite(dt)) {
+    throw std::invalid_argument("FakeSimulate: dt must be finite and >= 0");
+  }
+  RunControllers(dt);
+  time_ += dt;
+  for (int r = 0; r < robot_count(); ++r) {
+    const RobotController& controller = controllers_[r];
+    VecX dq = VecX::Zero(robots_[r]->dof());
+    if (!controller.GetCommandedVelocity(&dq)) dq.setZero();
+    robots_[r]->SetConfig(controller.CommandedLinkConfig());
+    robots_[r]->SetVelocity(dq);
+  }
+  contacts_current_ = false;
+}
+
+}  // namespace lamina::core

@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: MIT
+// One-link robots on ODE against analytic answers: a pendulum's period, PID control from any
+// angle, torque limits, joint stops, dry and viscous joint friction.
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/io/load_context.h"
+#include "core/io/robot_file.h"
+#include "core/sim/simulator.h"
+
+namespace lamina {
+namespace {
+
+using core::VecX;
+
+constexpr double kGravity = 9.8;
+constexpr double kLength = 0.5;     // pivot to centre of mass, m
+constexpr double kMass = 2.0;       // kg
+constexpr double kInertiaC = 0.01;  // about the COM, kg·m²
+
+// A pendulum hinged to the world at (0, 0, 1) about y, its COM kLength below the pivot at q = 0.
+// `extra` adds .rob statements (limits, gains, friction).
+core::WorldDesc PendulumWorld(const std::string& extra, double q0) {
+  const std::string text =
+      "links \"pendulum\"\nparents -1\n"
+      "TParent 1 0 0  0 1 0  0 0 1  0 0 1\naxis 0 1 0\njointtype r\n"
+      "mass " +
+      std::to_string(kMass) + "\ncom 0 0 " + std::to_string(-kLength) + "\ninertia " +
+      std::to_string(kInertiaC) + " 0 0  0 " + std::to_string(kInertiaC) + " 0  0 0 " +
+      std::to_string(kInertiaC) + "\nq " + std::to_string(q0) +
+      "\njoint normal 0\ndriver normal 0\n" + extra;
+  core::Diagnostics diagnostics;
+  core::MeshCache meshes;
+  core::LoadContext context{diagnostics, meshes};
+  core::WorldDesc world;
+  world.robots.emplace_back();
+  EXPECT_TRUE(core::ParseRob(text, "/virtual/pendulum.rob", context, &world.robots[0]))
+      << diagnostics.FormatAll();
+  return world;
+}
+
+double PivotInertia() {
+  return kInertiaC + kMass * kLength * kLength;
+}
+
+// with the actuator off, a pendulum released at 0.05 rad swings with the small-angle period
+TEST(RobotJointTest, PassivePendulumSwingsWithItsPeriod) {
+  core::Simulator simulator(PendulumWorld("servoP 0\nservoI 0\nservoD 0\n", 0.05));
+  ASSERT_TRUE(simulator.controller(0).SetTorque(VecX::Zero(1)));
+  // time of the downward zero crossings of q
+  std::vector<double> crossings;
+  double previous = simulator.GetRobotConfig(0)[0];
+  for (int step = 0; step < 4000; ++step) {
+    simulator.Simulate(0.001);
+    const double q = simulator.GetRobotConfig(0)[0];
+    if (previous > 0.0 && q <= 0.0) {
+      crossings.push_back(simulator.time() - 0.001 * q / (q - previous));
+    }
+    previous = q;
+  }
+  ASSERT_GE(crossings.size(), 2u);
+  const double period = (crossings.back() - crossings.front()) / (crossings.size() - 1);
+  const double expected = 2 * core::kPi * std::sqrt(PivotInertia() / (kMass * kGravity * kLength));
+  // small-angle error at 0.05 rad: θ²/16 = 1.6e-4
+  EXPECT_NEAR(period, expected, 1e-3 * expected);
+}
+
+// the tutorial's batch example as a test loop: from anywhere in [-π, π] the PID brings the
+// pendulum to its target (a continuous joint takes the short way round)
+TEST(RobotJointTest, PidPendulumReachesItsTargetFromAnyAngle) {
+  const double target = 0.5;
+  for (double q0 = -3.0; q0 <= 3.01; q0 += 1.0) {
+    SCOPED_TRACE("q0 = " + std::to_string(q0));
+    core::Simulator simulator(PendulumWorld("servoP 60\nservoI 200\nservoD 8\ntorqueMax 50\n", q0));
+    ASSERT_TRUE(simulator.controller(0).SetPIDCommand(VecX::Constant(1, target), VecX::Zero(1)));
+    simulator.Simulate(6.0);
+    const double q = simulator.GetRobotConfig(0)[0];
+    EXPECT_NEAR(std::remainder(q - target, 2 * core::kPi), 0.0, 5e-3);
+    EXPECT_NEAR(simulator.GetRobotVelocity(0)[0], 0.0, 5e-3);
+  }
+}
+
+TEST(RobotJointTest, TorqueLimitClampsTheActuator) {
+  core::Simulator simulator(PendulumWorld("servoP 1000\nservoI 0\nservoD 0\ntorqueMax 3\n", 0.0));
+  ASSERT_TRUE(simulator.controller(0).SetPIDCommand(VecX::Constant(1, 1.0), VecX::Zero(1)));
+  simulator.Simulate(0.001);
+  // kP·Δq would be 1000 N·m; the actuator gives 3
+  EXPECT_NEAR(std::abs(simulator.GetActuatorTorques(0)[0]), 3.0, 1e-12);
+  // a constant 3 N·m from rest swings the arm up to θ with 3 θ = m g L (1 - cos θ) (0.62 rad),
+  // far short of the 1 rad target
+  double highest = 0.0;
+  for (int step = 0; step < 1000; ++step) {
+    simulator.Simulate(0.001);
+    highest = std::max(highest, simulator.GetRobotConfig(0)[0]);
+  }
+  double theta = 1.0;
+  for (int k = 0; k < 50; ++k) {  // Newton on f(θ) = 3 θ - m g L (1 - cos θ)
+    const double mgl = kMass * kGravity * kLength;
+    theta -= (3 * theta - mgl * (1 - std::cos(theta))) / (3 - mgl * std::sin(theta));
+  }
+  EXPECT_NEAR(highest, theta, 0.01 * theta);
+}
+
+TEST(RobotJointTest, JointStopsHoldAtTheLimit) {
+  // released at 0.3 rad under gravity towards q < 0 onto a stop at -0.2
+  core::Simulator simulator(
+      PendulumWorld("servoP 0\nservoI 0\nservoD 0\nqMin -0.2\nqMax 0.4\n", 0.3));
+  ASSERT_TRUE(simulator.controller(0).SetTorque(VecX::Zero(1)));
+  double lowest = 1.0;
+  for (int step = 0; step < 2000; ++step) {
+    simulator.Simulate(0.001);
+    lowest = std::min(lowest, simulator.GetRobotConfig(0)[0]);
+  }
+  EXPECT_GT(lowest, -0.2 - 0.01);  // overshoot through the stop within ODE's stop ERP
+}
+
+TEST(RobotJointTest, StopsWorkForLimitsBeyondPi) {
+  // Klamp't drops stops whose limits touch ±π; here the range [-3.5, 1] holds
+  core::Simulator simulator(
+      PendulumWorld("servoP 0\nservoI 0\nservoD 0\nqMin -3.5\nqMax 1.0\n", 0.9));
+  ASSERT_TRUE(simulator.controller(0).SetTorque(VecX::Constant(1, -40.0)));  // drive it round
+  double lowest = 0.0;
+  for (int step = 0; step < 3000; ++step) {
+    simulator.controller(0).SetTorque(VecX::Constant(1, -40.0));
+    simulator.Simulate(0.001);
+    lowest = std::min(lowest, simulator.GetRobotConfig(0)[0]);
+  }
+  EXPECT_LT(lowest, -3.3);         // it did go past -π
+  EXPECT_GT(lowest, -3.5 - 0.05);  // and stopped at its limit
+}
+
+// without gravity only the applied torque and dry friction act on the joint
+TEST(RobotJointTest, DryFrictionHoldsBelowItsLimitAndSlipsAbove) {
+  for (const double torque : {1.5, 4.0}) {
+    core::WorldDesc world = PendulumWorld("servoP 0\nservoI 0\nservoD 0\ndryFriction 2\n", 0.0);
+    world.settings.gravity = core::Vec3::Zero();
+    core::Simulator simulator(world);
+    simulator.controller(0).SetTorque(VecX::Constant(1, torque));
+    simulator.Simulate(1.0);
+    const double velocity = simulator.GetRobotVelocity(0)[0];
+    if (torque < 2.0) {
+      EXPECT_NEAR(velocity, 0.0, 1e-5);  // ODE's motor creeps by its CFM
+    } else {
+      // slips with (τ - μ_D) / I
+      EXPECT_NEAR(velocity, (torque - 2.0) / PivotInertia() * 1.0, 0.01 * velocity);
+    }
+  }
+}
+
+TEST(RobotJointTest, ViscousFrictionDampsWithItsTimeConstant) {
+  core::WorldDesc world = PendulumWorld("servoP 0\nservoI 0\nservoD 0\nviscousFriction 0.5\n", 0);
+  world.settings.gravity = core::Vec3::Zero();
+  world.robots[0].velocity = VecX::Constant(1, 4.0);
+  core::Simulator simulator(world);
+  simulator.controller(0).SetTorque(VecX::Zero(1));
+  simulator.Simulate(1.0);
+  // I dω/dt = -μ_V ω
+  const double expected = 4.0 * std::exp(-0.5 / PivotInertia() * 1.0);
+  EXPECT_NEAR(simulator.GetRobotVelocity(0)[0], expected, 0.01 * expected);
+}
+
+}  // namespace
+}  // namespace lamina
