@@ -5,6 +5,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/headless_render_commands.h"
+#include "core/control/send_motion.h"
+#include "core/io/trajectory_file.h"
 #include "core/io/world_file.h"
 #include "core/model/world_summary.h"
 #include "core/sim/run_report.h"
@@ -42,6 +45,7 @@ struct RunOptions {
   double step = 0.0;
   std::string solver = "step";
   std::string log;
+  std::string motion;  ///< --path or --milestones file, sent to robot 0
   bool json = false;
 };
 
@@ -66,6 +70,24 @@ bool ParseSolver(const std::string& text, lamina::core::SolverSettings* solver) 
   return solver->quick_step_iterations > 0;
 }
 
+// Klamp't SimTest sends a motion file to robot 0
+bool SendMotionFile(const std::string& path, lamina::core::Simulator* simulator) {
+  if (simulator->robot_count() == 0) {
+    std::cerr << path << ": error: the world has no robot to send the motion to\n";
+    return false;
+  }
+  lamina::core::Diagnostics diagnostics;
+  const auto motion = lamina::core::ReadMotionFile(path, diagnostics);
+  std::cerr << diagnostics.FormatAll();
+  if (!motion) return false;
+  std::string error;
+  if (!lamina::core::SendMotion(*motion, &simulator->controller(0), &error)) {
+    std::cerr << path << ": error: " << error << "\n";
+    return false;
+  }
+  return true;
+}
+
 int RunSimulation(const RunOptions& options) {
   lamina::core::SolverSettings solver;
   if (!ParseSolver(options.solver, &solver)) {
@@ -77,6 +99,7 @@ int RunSimulation(const RunOptions& options) {
   if (!LoadWorldReporting(options.world, &world)) return 1;
   lamina::core::Simulator simulator(world, solver);
   if (options.step > 0.0) simulator.SetSimStep(options.step);
+  if (!options.motion.empty() && !SendMotionFile(options.motion, &simulator)) return 1;
   std::ofstream log;
   if (!options.log.empty()) {
     log.open(options.log);
@@ -132,8 +155,17 @@ int main(int argc, char** argv) {
   run->add_option("--solver", run_options.solver, "step (exact), quick or quick:N");
   run->add_option("--log", run_options.log, "write a Klamp't-style CSV log (every 0.01 s)");
   run->add_flag("--json", run_options.json, "print JSON instead of text");
+  CLI::Option* path = run->add_option("--path", run_options.motion,
+                                      "timed .path (or MultiPath .xml) sent to robot 0");
+  run->add_option("--milestones", run_options.motion, ".milestones file sent to robot 0")
+      ->excludes(path);
+
+  const lamina::app::Subcommand shot = lamina::app::AddShotCommand(app);
+  const lamina::app::Subcommand record = lamina::app::AddRecordCommand(app);
 
   CLI11_PARSE(app, argc, argv);
+  if (shot.command->parsed()) return shot.run();
+  if (record.command->parsed()) return record.run();
   if (info->parsed()) return RunInfo(info_world, info_json);
   if (run->parsed()) return RunSimulation(run_options);
   return 2;

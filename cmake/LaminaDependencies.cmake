@@ -20,6 +20,8 @@ if(LAMINA_BUILD_EDITOR OR LAMINA_BUILD_HEADLESS)
   pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
   pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
 endif()
+# OSMesa: off-screen GL for lamina-headless, the golden-image tests and the render benchmark
+# (libosmesa6-dev); never linked into a program that also links libGL/libOpenGL
 if(LAMINA_BUILD_HEADLESS)
   pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
 endif()

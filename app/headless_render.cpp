@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: MIT
+// Shared pieces of the render commands: option parsing, loading, the off-screen view.
+#include "app/headless_render.h"
+
+#include <iostream>
+
+#include "core/io/world_file.h"
+#include "core/render/contact_markers.h"
+#include "core/render/scene_camera.h"
+#include "core/render/scene_extract.h"
+#include "core/sim/simulator.h"
+#include "ui/platform/osmesa_context.h"
+#include "ui/render/renderer.h"
+
+namespace lamina::app {
+
+namespace {
+
+bool ParseSize(const std::string& text, int* width, int* height) {
+  const size_t x = text.find('x');
+  if (x == std::string::npos) return false;
+  try {
+    size_t used_w = 0, used_h = 0;
+    const std::string w = text.substr(0, x), h = text.substr(x + 1);
+    *width = std::stoi(w, &used_w);
+    *height = std::stoi(h, &used_h);
+    if (used_w != w.size() || used_h != h.size()) return false;
+  } catch (const std::exception&) {
+    return false;
+  }
+  return *width >= 1 && *height >= 1 && *width <= 16384 && *height <= 16384;
+}
+
+}  // namespace
+
+bool ParseViewOptions(const std::string& size, const std::string& camera,
+                      const std::string& overlay, ViewOptions* options, std::string* error) {
+  if (!ParseSize(size, &options->width, &options->height)) {
+    *error = "--size expects WIDTHxHEIGHT with 1..16384 pixels per side (e.g. 1280x720), got '" +
+             size + "'";
+    return false;
+  }
+  std::string detail;
+  if (!core::ValidCameraSpec(camera, &detail)) {
+    *error = "--" + detail;  // "camera: ..."
+    return false;
+  }
+  options->camera = camera;
+  if (!core::ParseOverlayList(overlay, &options->overlays, &detail)) {
+    *error = "--overlay: " + detail;
+    return false;
+  }
+  return true;
+}
+
+bool LoadWorldForRendering(const std::string& path, core::WorldDesc* world) {
+  core::Diagnostics diagnostics;
+  core::MeshCache meshes;
+  core::LoadContext context{diagnostics, meshes};
+  const bool ok = core::LoadWorldFile(path, context, world);
+  std::cerr << diagnostics.FormatAll();
+  return ok && !diagnostics.HasErrors();
+}
+
+std::unique_ptr<core::Simulator> MakeRenderSimulator(const core::WorldDesc& world) {
+  auto simulator = std::make_unique<core::Simulator>(world);
+  simulator->EnableContactFeedbackAll();
+  return simulator;
+}
+
+struct OffscreenView::State {
+  ViewOptions options;
+  ui::OsmesaContext context;
+  ui::Renderer renderer;
+  core::RenderMeshCache meshes;
+  core::RenderScene scene;
+  core::OrbitCamera camera;
+  bool camera_chosen = false;
+};
+
+OffscreenView::OffscreenView() : state_(std::make_unique<State>()) {}
+OffscreenView::~OffscreenView() = default;
+
+bool OffscreenView::Open(const ViewOptions& options, std::string* error) {
+  state_->options = options;
+  if (!state_->context.Create(options.width, options.height, error)) return false;
+  state_->renderer.settings().samples = options.samples;
+  return state_->renderer.Initialize(error);
+}
+
+std::vector<std::uint8_t> OffscreenView::Render(const core::WorldDesc& world,
+                                                const core::Simulator* simulator) {
+  State& s = *state_;
+  const std::vector<core::ContactMarker> contacts =
+      simulator ? core::ContactMarkersFromSimulator(*simulator)
+                : std::vector<core::ContactMarker>();
+  core::ExtractScene(world, s.options.overlays, contacts, &s.meshes, &s.scene);
+  if (!s.camera_chosen) {
+    std::string ignored;  // the spec was validated by ParseViewOptions
+    core::CameraForScene(s.options.camera, s.scene,
+                         static_cast<double>(s.options.width) / s.options.height, &s.camera,
+                         &ignored);
+    s.camera_chosen = true;
+  }
+  s.renderer.Render(s.scene, s.camera, s.options.width, s.options.height);
+  s.context.SwapOrFinish();
+  return s.renderer.ReadPixels(s.options.width, s.options.height);
+}
+
+const core::OrbitCamera& OffscreenView::camera() const {
+  return state_->camera;
+}
+
+std::string OffscreenView::GlDescription() const {
+  return state_->renderer.gl_version() + " / " + state_->renderer.gl_renderer();
+}
+
+}  // namespace lamina::app

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// What a renderer draws besides the bodies: the overlays a user switches on, their scales, and
+// the selected body. Parsed from a comma list such as "contacts,normals,forces,padding".
+#pragma once
+
+#include <string>
+
+namespace lamina::core {
+
+struct OverlayOptions {
+  bool contacts = false;  ///< contact points (yellow; red where the geometries interpenetrate)
+  bool normals = false;   ///< contact normals, normal_length long
+  bool forces = false;    ///< contact forces, force_scale m per N
+  bool padding = false;   ///< each body grown by its padding, translucent (the boundary layer)
+  bool com = false;       ///< centres of mass of objects and links
+  bool frames = false;    ///< object and link frames (x red, y green, z blue)
+  bool bbox = false;      ///< oriented bounding boxes of every body
+
+  double normal_length = 0.05;  ///< m (Klamp't SimTest: 0.05)
+  double force_scale = 0.01;    ///< m per N (Klamp't SimTest: 0.01)
+  /// Klamp't world id of the highlighted body (a robot id highlights the whole robot); -1 none.
+  int selected_id = -1;
+
+  bool operator==(const OverlayOptions&) const = default;
+};
+
+/// Names accepted by ParseOverlayList, comma separated in the text form.
+inline constexpr const char* kOverlayNames = "contacts,normals,forces,padding,com,frames,bbox";
+
+/// Turns on the overlays named in `list` ("contacts,padding"; "all"; "" or "none" for none).
+/// False with `error` naming the unknown entry otherwise.
+bool ParseOverlayList(const std::string& list, OverlayOptions* options, std::string* error);
+
+}  // namespace lamina::core

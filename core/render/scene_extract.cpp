@@ -1,0 +1,233 @@
+// SPDX-License-Identifier: MIT
+// Builds the RenderScene of a world: body meshes first, then the overlays sized to the scene.
+#include "core/render/scene_extract.h"
+
+#include <algorithm>
+#include <array>
+
+#include "core/robot/kinematics.h"
+
+namespace lamina::core {
+
+namespace {
+
+const Rgba kContactColor(1.0f, 0.9f, 0.1f, 1.0f);
+const Rgba kPenetratingColor(1.0f, 0.15f, 0.1f, 1.0f);
+const Rgba kForceColor(1.0f, 0.5f, 0.05f, 1.0f);
+const Rgba kComColor(0.9f, 0.1f, 0.9f, 1.0f);
+const Rgba kBodyBoxColor(0.9f, 0.15f, 0.15f, 1.0f);
+const Rgba kTerrainBoxColor(1.0f, 0.6f, 0.1f, 1.0f);
+const Rgba kSelectedBoxColor(1.0f, 0.85f, 0.2f, 1.0f);
+constexpr float kPaddingAlpha = 0.35f;
+
+// one drawn piece of a body: a geometry at a pose
+struct BodyPart {
+  const GeometryDesc* geometry;
+  Pose pose;
+  Rgba color;
+  int world_id;
+  bool terrain;
+  bool selected;
+  double padding;
+};
+
+// one body's frame and centre of mass, for the frame and COM overlays
+struct BodyFrame {
+  Pose pose;
+  Vec3 com_world;
+};
+
+Eigen::AlignedBox3d TransformedBox(const Eigen::AlignedBox3f& box, const Eigen::Matrix4f& m) {
+  Eigen::AlignedBox3d out;
+  if (box.isEmpty()) return out;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Eigen::Vector3f p = box.corner(static_cast<Eigen::AlignedBox3f::CornerType>(corner));
+    out.extend((m * p.homogeneous()).head<3>().cast<double>());
+  }
+  return out;
+}
+
+bool IsPlane(const GeometryDesc& geometry) {
+  return geometry.kind == GeometryKind::kPrimitive &&
+         geometry.primitive.type == PrimitiveType::kPlane;
+}
+
+std::vector<BodyPart> CollectParts(const WorldDesc& world, int selected_id,
+                                   std::vector<BodyFrame>* frames) {
+  std::vector<BodyPart> parts;
+  for (size_t i = 0; i < world.terrains.size(); ++i) {
+    const TerrainDesc& terrain = world.terrains[i];
+    const int id = world.TerrainId(static_cast<int>(i));
+    parts.push_back({&terrain.geometry, Pose::Identity(),
+                     DisplayColor(terrain.display).value_or(DefaultTerrainColor()), id, true,
+                     id == selected_id, terrain.sim.padding + terrain.geometry.margin});
+  }
+  for (size_t i = 0; i < world.objects.size(); ++i) {
+    const RigidObjectDesc& object = world.objects[i];
+    const int id = world.ObjectId(static_cast<int>(i));
+    parts.push_back({&object.geometry, object.pose,
+                     DisplayColor(object.display).value_or(DefaultObjectColor()), id, false,
+                     id == selected_id, object.sim.padding + object.geometry.margin});
+    frames->push_back({object.pose, object.pose * object.com});
+  }
+  for (size_t r = 0; r < world.robots.size(); ++r) {
+    const RobotDesc& robot = world.robots[r];
+    const bool robot_selected = world.RobotId(static_cast<int>(r)) == selected_id;
+    const std::vector<Pose> link_frames = LinkTransforms(robot, DisplayConfiguration(robot));
+    const std::vector<Vec3> coms = LinkComPositions(robot, link_frames);
+    for (int l = 0; l < robot.dof(); ++l) {
+      const LinkDesc& link = robot.links[l];
+      const int id = world.RobotLinkId(static_cast<int>(r), l);
+      for (const GeometryDesc& geometry : link.geometry) {
+        parts.push_back({&geometry, link_frames[l], RobotLinkColor(robot, l), id, false,
+                         robot_selected || id == selected_id, link.sim.padding + geometry.margin});
+      }
+      if (link.has_geometry()) frames->push_back({link_frames[l], coms[l]});
+    }
+  }
+  return parts;
+}
+
+void AddBoxLines(const Eigen::AlignedBox3f& box, const Eigen::Matrix4f& m, const Rgba& color,
+                 RenderScene* scene) {
+  std::array<Eigen::Vector3f, 8> c;
+  for (int i = 0; i < 8; ++i) {
+    const Eigen::Vector3f local((i & 1) ? box.max().x() : box.min().x(),
+                                (i & 2) ? box.max().y() : box.min().y(),
+                                (i & 4) ? box.max().z() : box.min().z());
+    c[i] = (m * local.homogeneous()).head<3>();
+  }
+  for (int i = 0; i < 8; ++i) {
+    for (int bit : {1, 2, 4}) {
+      if (!(i & bit)) scene->lines.push_back({c[i], c[i | bit], color});
+    }
+  }
+}
+
+void AddArrow(const Vec3& from, const Vec3& to, float radius, const Rgba& color,
+              RenderScene* scene) {
+  if ((to - from).norm() < 1e-6) return;
+  scene->arrows.push_back({from.cast<float>(), to.cast<float>(), radius, color});
+}
+
+// a size for markers: a fraction of the scene, clamped to sensible millimetres
+float MarkerSize(const RenderScene& scene) {
+  const Eigen::AlignedBox3d& box = scene.body_bounds.isEmpty() ? scene.bounds : scene.body_bounds;
+  const double diagonal = box.isEmpty() ? 1.0 : box.diagonal().norm();
+  return static_cast<float>(std::clamp(0.006 * diagonal, 0.002, 0.03));
+}
+
+void AddBodies(const std::vector<BodyPart>& parts, RenderMeshCache* cache, RenderScene* scene) {
+  for (const BodyPart& part : parts) {
+    std::shared_ptr<const RenderMesh> mesh = cache->Shape(*part.geometry);
+    if (!mesh) continue;
+    DrawItem item;
+    item.mesh = mesh;
+    item.transform = (part.pose * part.geometry->Matrix()).matrix().cast<float>();
+    item.color = part.color;
+    item.world_id = part.world_id;
+    item.flags = kDrawNone;
+    if (part.terrain) item.flags |= kDrawTerrain;
+    if (part.selected) item.flags |= kDrawSelected;
+    if (item.color.w() < 1.0f) item.flags |= kDrawTranslucent;
+    scene->items.push_back(item);
+    if (IsPlane(*part.geometry)) continue;
+    const Eigen::AlignedBox3d box = TransformedBox(mesh->bounds, item.transform);
+    scene->bounds.extend(box);
+    if (!part.terrain) scene->body_bounds.extend(box);
+  }
+}
+
+void AddPaddingLayer(const std::vector<BodyPart>& parts, RenderMeshCache* cache,
+                     RenderScene* scene) {
+  for (const BodyPart& part : parts) {
+    if (part.padding <= 0.0 || IsPlane(*part.geometry)) continue;
+    std::shared_ptr<const RenderMesh> mesh = cache->PaddedShape(*part.geometry, part.padding);
+    if (!mesh) continue;
+    DrawItem item;
+    item.mesh = mesh;
+    item.transform = part.pose.matrix().cast<float>();
+    const Rgba base = part.color;
+    item.color =
+        Rgba(0.5f + 0.5f * base.x(), 0.5f + 0.5f * base.y(), 0.5f + 0.5f * base.z(), kPaddingAlpha);
+    item.world_id = part.world_id;
+    item.flags = kDrawTranslucent;
+    scene->items.push_back(item);
+  }
+}
+
+void AddBoxes(const OverlayOptions& options, RenderScene* scene) {
+  const size_t body_items = scene->items.size();
+  for (size_t i = 0; i < body_items; ++i) {
+    const DrawItem& item = scene->items[i];
+    if (item.has(kDrawTranslucent) && !item.has(kDrawSelected)) continue;
+    // a selected body gets a highlight box (a selected robot only its tint: one box per link
+    // would hide it)
+    if (item.has(kDrawSelected) && item.world_id == options.selected_id) {
+      AddBoxLines(item.mesh->bounds, item.transform, kSelectedBoxColor, scene);
+    } else if (options.bbox) {
+      AddBoxLines(item.mesh->bounds, item.transform,
+                  item.has(kDrawTerrain) ? kTerrainBoxColor : kBodyBoxColor, scene);
+    }
+  }
+}
+
+void AddFrames(const OverlayOptions& options, const std::vector<BodyFrame>& frames, float marker,
+               RenderScene* scene) {
+  const double axis_length = std::max(10.0 * marker, 0.03);
+  for (const BodyFrame& frame : frames) {
+    if (options.com)
+      scene->points.push_back({frame.com_world.cast<float>(), 1.6f * marker, kComColor});
+    if (!options.frames) continue;
+    const Vec3 origin = frame.pose.translation();
+    for (int axis = 0; axis < 3; ++axis) {
+      Rgba color(0.1f, 0.1f, 0.1f, 1.0f);
+      color[axis] = 0.95f;
+      AddArrow(origin, origin + axis_length * frame.pose.linear().col(axis), 0.25f * marker, color,
+               scene);
+    }
+  }
+}
+
+void AddContacts(const OverlayOptions& options, const std::vector<ContactMarker>& contacts,
+                 float marker, RenderScene* scene) {
+  for (const ContactMarker& contact : contacts) {
+    if (options.contacts) {
+      scene->points.push_back({contact.position.cast<float>(), marker,
+                               contact.penetrating ? kPenetratingColor : kContactColor});
+    }
+    if (options.normals) {
+      AddArrow(contact.position, contact.position + options.normal_length * contact.normal,
+               0.25f * marker, kContactColor, scene);
+    }
+    if (options.forces) {
+      AddArrow(contact.position, contact.position + options.force_scale * contact.force,
+               0.35f * marker, kForceColor, scene);
+    }
+  }
+}
+
+}  // namespace
+
+VecX DisplayConfiguration(const RobotDesc& robot) {
+  if (robot.config.size() == robot.dof()) return robot.config;
+  VecX q(robot.dof());
+  for (int l = 0; l < robot.dof(); ++l) q[l] = robot.links[l].q_initial;
+  return q;
+}
+
+void ExtractScene(const WorldDesc& world, const OverlayOptions& options,
+                  const std::vector<ContactMarker>& contacts, RenderMeshCache* cache,
+                  RenderScene* scene) {
+  *scene = RenderScene();
+  std::vector<BodyFrame> frames;
+  const std::vector<BodyPart> parts = CollectParts(world, options.selected_id, &frames);
+  AddBodies(parts, cache, scene);
+  const float marker = MarkerSize(*scene);
+  AddBoxes(options, scene);
+  if (options.padding) AddPaddingLayer(parts, cache, scene);
+  AddFrames(options, frames, marker, scene);
+  AddContacts(options, contacts, marker, scene);
+}
+
+}  // namespace lamina::core

@@ -1,0 +1,5 @@
+// SPDX-License-Identifier: MIT
+// Shadow map pass: depth only.
+#version 330 core
+
+void main() {}

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+// The renderer: draws a core::RenderScene with an OrbitCamera into whatever OpenGL 3.3 core
+// context is current (a GLFW window or an OSMesa buffer) — sky gradient, lit meshes with a
+// shadowed sun, checkered terrain, translucent layers, then the debug overlays (also faintly
+// where they are hidden). It never creates a context.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/render/camera.h"
+#include "core/render/render_scene.h"
+
+namespace lamina::ui {
+
+struct RenderSettings {
+  bool shadows = true;
+  int shadow_map_size = 2048;  ///< texels per side
+  int samples = 4;             ///< multisampling per pixel, clamped to what the context allows
+  double checker_size = 0.0;   ///< terrain checker square (m); 0 = chosen from the scene size
+};
+
+class Renderer {
+ public:
+  Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+  /// Frees the GL objects: the context it was initialized in must be current.
+  ~Renderer();
+
+  /// Checks that the current context is OpenGL >= 3.3 and builds shaders and buffers. False with
+  /// a message (GL version found, or the shader log) otherwise.
+  bool Initialize(std::string* error);
+
+  /// Draws `scene` seen by `camera` into `framebuffer` (0 = the context's default one), which is
+  /// `width` x `height` pixels.
+  void Render(const core::RenderScene& scene, const core::OrbitCamera& camera, int width,
+              int height, unsigned framebuffer = 0);
+
+  /// The pixels of `framebuffer` as RGBA8, bottom row first (as OpenGL reads them).
+  std::vector<std::uint8_t> ReadPixels(int width, int height, unsigned framebuffer = 0) const;
+
+  RenderSettings& settings() { return settings_; }
+  /// GL_VERSION and GL_RENDERER of the context (after Initialize).
+  const std::string& gl_version() const { return gl_version_; }
+  const std::string& gl_renderer() const { return gl_renderer_; }
+  /// Samples per pixel of the last frame (1 without multisampling).
+  int samples_used() const { return samples_used_; }
+
+ private:
+  struct Resources;
+  struct FrameParameters;
+
+  FrameParameters PrepareFrame(const core::RenderScene& scene, const core::OrbitCamera& camera,
+                               int width, int height) const;
+  void DrawShadowPass(const core::RenderScene& scene, const FrameParameters& frame);
+  void DrawBackground(const FrameParameters& frame);
+  void BindMeshProgram(const FrameParameters& frame);
+  void DrawItem(const Eigen::Matrix4f& transform, const core::Rgba& color, std::uint32_t flags,
+                const core::RenderMesh& mesh);
+  void DrawOpaqueItems(const core::RenderScene& scene);
+  void DrawTranslucentItems(const core::RenderScene& scene, const FrameParameters& frame);
+  void DrawOverlays(const core::RenderScene& scene, const FrameParameters& frame,
+                    float alpha_scale);
+  void DrawLines(const core::RenderScene& scene, const FrameParameters& frame, float alpha_scale);
+
+  RenderSettings settings_;
+  std::unique_ptr<Resources> resources_;
+  std::string gl_version_, gl_renderer_;
+  int max_samples_ = 1;
+  int samples_used_ = 1;
+};
+
+}  // namespace lamina::ui
