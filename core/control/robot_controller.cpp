@@ -138,6 +138,12 @@ RobotController::RobotController(const RobotDesc& robot)
     const double q = UsableDriver(d) ? DriverValue(d, sensed_q_) : 0.0;
     actuators_.push_back(InitialActuatorState(driver, revolute, q));
   }
+  driven_.assign(robot.links.size(), false);
+  for (const DriverDesc& driver : drivers_) {
+    for (const int link : driver.links) {
+      if (link >= 0 && link < dof()) driven_[link] = true;
+    }
+  }
   const auto property = robot.properties.find("controller");
   if (property != robot.properties.end()) {
     const double period = ControlPeriodFromProperty(property->second);
@@ -489,11 +495,20 @@ bool RobotController::SetVelocity(const VecX& dq, double duration) {
                       [&] { return queue_.SetConstantVelocity(dq, queue_.time() + duration); });
 }
 
+VecX RobotController::HoldUndriven(const VecX& q, bool velocity) const {
+  VecX held = q;
+  const VecX end = queue_.EndConfig();
+  for (int i = 0; i < held.size() && i < dof(); ++i) {
+    if (!driven_[i]) held[i] = velocity ? 0.0 : end[i];
+  }
+  return held;
+}
+
 bool RobotController::SetMilestone(const VecX& q) {
   if (!CheckLinkVector(q, "SetMilestone", "q")) return false;
   return QueueCommand("SetMilestone", [&] {
     queue_.Cut();
-    return queue_.AppendRamp(q);
+    return queue_.AppendRamp(HoldUndriven(q, false));
   });
 }
 
@@ -503,25 +518,28 @@ bool RobotController::SetMilestone(const VecX& q, const VecX& dq) {
   }
   return QueueCommand("SetMilestone", [&] {
     queue_.Cut();
-    return queue_.AppendRamp(q, dq);
+    return queue_.AppendRamp(HoldUndriven(q, false), HoldUndriven(dq, true));
   });
 }
 
 bool RobotController::AddMilestone(const VecX& q) {
   if (!CheckLinkVector(q, "AddMilestone", "q")) return false;
-  return QueueCommand("AddMilestone", [&] { return queue_.AppendRamp(q); });
+  return QueueCommand("AddMilestone", [&] { return queue_.AppendRamp(HoldUndriven(q, false)); });
 }
 
 bool RobotController::AddMilestone(const VecX& q, const VecX& dq) {
   if (!CheckLinkVector(q, "AddMilestone", "q") || !CheckLinkVector(dq, "AddMilestone", "dq")) {
     return false;
   }
-  return QueueCommand("AddMilestone", [&] { return queue_.AppendRamp(q, dq); });
+  return QueueCommand("AddMilestone", [&] {
+    return queue_.AppendRamp(HoldUndriven(q, false), HoldUndriven(dq, true));
+  });
 }
 
 bool RobotController::AddMilestoneLinear(const VecX& q) {
   if (!CheckLinkVector(q, "AddMilestoneLinear", "q")) return false;
-  return QueueCommand("AddMilestoneLinear", [&] { return queue_.AppendLinearRamp(q); });
+  return QueueCommand("AddMilestoneLinear",
+                      [&] { return queue_.AppendLinearRamp(HoldUndriven(q, false)); });
 }
 
 bool RobotController::SetLinear(const VecX& q, double duration) {

@@ -27,6 +27,20 @@ struct RobotControllerState {
   bool manual = false;                   ///< manual override: the queue does not drive the PIDs
 };
 
+/// A joint motor that applies a PID law implicitly: over the step the motor's force is
+/// f = (velocity - dq_end) / cfm, bounded by ±fmax, which is kP·(e - h·dq_end) +
+/// kD·(dq_des - dq_end) + kI·I + τ_ff (the position error taken at the end of the step) when
+/// cfm = 1 / (kP·h + kD) and velocity = (kP·e + kD·dq_des + kI·I + τ_ff) / (kP·h + kD).
+struct ServoMotorCommand {
+  int link = -1;          ///< the driven link (its hinge or slider)
+  double velocity = 0.0;  ///< target rate (rad/s or m/s)
+  double cfm = 0.0;       ///< 1 / (kP·h + kD)
+  double fmax = 0.0;      ///< largest |force| the PD part may add (N·m or N); may be inf
+  /// The driver's viscous friction is part of this motor's damping (added to kD in cfm): it
+  /// is then not applied again as joint friction.
+  bool includes_viscous = false;
+};
+
 /// Default control period (s) when the robot has no `controller` property with a rate.
 inline constexpr double kDefaultControlPeriod = 0.01;
 /// Acceleration bound (rad/s² or m/s²) for ramps when a link has neither accMax nor torqueMax.
@@ -88,6 +102,13 @@ class RobotController {
   /// so the simulator may call it again when it retakes a step. Affine drivers in PID mode add
   /// Klamp't's corrective transmission term.
   void ComputeLinkForces(const VecX& q, const VecX& dq, VecX* link_forces) const;
+  /// ComputeLinkForces with normal PID drivers taken out and returned as joint-motor commands,
+  /// for the simulator to solve implicitly over a step of h s (stable for any gains and link
+  /// inertia; the explicit law is not once kD·h exceeds about twice the joint's inertia). A motor
+  /// is bounded by ±fmax: the smaller of the driver's two torque limits (limits that do not
+  /// straddle zero keep the explicit law).
+  void ComputeImplicitServo(const VecX& q, const VecX& dq, double h, VecX* link_forces,
+                            std::vector<ServoMotorCommand>* motors) const;
   /// The clamped driver efforts at (q, dq) (driver-sized; Klamp't getActualTorque).
   VecX DriverEfforts(const VecX& q, const VecX& dq) const;
   /// After an accepted physics step of h s ending at q: PID integrals, locked-velocity targets.
@@ -133,6 +154,7 @@ class RobotController {
   bool SetMilestone(const VecX& q, const VecX& dq);
   bool AddMilestone(const VecX& q);
   bool AddMilestone(const VecX& q, const VecX& dq);
+  /// Ramp commands plan only driven links: undriven ones (a floating base) are held.
   bool AddMilestoneLinear(const VecX& q);
   bool SetLinear(const VecX& q, double duration);
   bool AddLinear(const VecX& q, double duration);
@@ -180,6 +202,9 @@ class RobotController {
   bool QueueCommand(const char* command, Command&& run);
   void AddAffineCorrection(int d, const VecX& q, const VecX& dq, VecX* link_forces) const;
   void SetTargetsFromQueue();
+  // `q` with the links no driver moves (a floating base) held at the queue's end value, or with
+  // `velocity`, at rest: ramps cannot plan motion the robot cannot make
+  VecX HoldUndriven(const VecX& q, bool velocity) const;
   bool Fail(std::string message);
   bool Succeed();
 
@@ -195,6 +220,7 @@ class RobotController {
   bool manual_ = false;
   bool gravity_compensation_ = false;
   bool floating_base_ = false;
+  std::vector<bool> driven_;  ///< per link: some driver moves it
   Vec3 gravity_ = Vec3(0, 0, -9.8);
   std::string last_error_;
 };

@@ -5,30 +5,6 @@ namespace lamina::core {
 
 namespace {
 
-// undriven links (a floating base's virtual links) keep their current value: the controller
-// cannot move them, and their ramp limits are often zero
-MilestoneSequence WithUndrivenLinksHeld(MilestoneSequence motion,
-                                        const RobotController& controller) {
-  std::vector<bool> driven(controller.dof(), false);
-  for (const DriverDesc& driver : controller.drivers()) {
-    for (const int link : driver.links) {
-      if (link >= 0 && link < controller.dof()) driven[link] = true;
-    }
-  }
-  const VecX& current = controller.sensed_config();
-  for (VecX& q : motion.configs) {
-    for (int i = 0; i < q.size() && i < current.size(); ++i) {
-      if (!driven[i]) q[i] = current[i];
-    }
-  }
-  for (VecX& dq : motion.velocities) {
-    for (int i = 0; i < dq.size(); ++i) {
-      if (!driven[i]) dq[i] = 0.0;
-    }
-  }
-  return motion;
-}
-
 bool Check(bool ok, const RobotController& controller, size_t index, std::string* error) {
   if (!ok) *error = "milestone " + std::to_string(index) + ": " + controller.last_error();
   return ok;
@@ -36,21 +12,19 @@ bool Check(bool ok, const RobotController& controller, size_t index, std::string
 
 }  // namespace
 
-bool SendMotion(const MilestoneSequence& file_motion, RobotController* controller,
-                std::string* error) {
-  if (file_motion.configs.empty()) {
+bool SendMotion(const MilestoneSequence& motion, RobotController* controller, std::string* error) {
+  if (motion.configs.empty()) {
     *error = "the motion has no milestones";
     return false;
   }
-  for (size_t k = 0; k < file_motion.configs.size(); ++k) {
-    if (file_motion.configs[k].size() != controller->dof()) {
+  for (size_t k = 0; k < motion.configs.size(); ++k) {
+    if (motion.configs[k].size() != controller->dof()) {
       *error = "milestone " + std::to_string(k) + " has " +
-               std::to_string(file_motion.configs[k].size()) + " entries, the robot has " +
+               std::to_string(motion.configs[k].size()) + " entries, the robot has " +
                std::to_string(controller->dof()) + " links";
       return false;
     }
   }
-  const MilestoneSequence motion = WithUndrivenLinksHeld(file_motion, *controller);
   const bool timed = motion.times.size() == motion.configs.size();
   const bool with_velocity = motion.velocities.size() == motion.configs.size();
   if (timed) {

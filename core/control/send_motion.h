@@ -13,8 +13,7 @@ namespace lamina::core {
 
 /// Queues `motion` on `controller`: timed sequences as SetMilestone(first) then AddLinear to
 /// each later milestone over its time step; untimed ones as SetMilestone(first[, dq]) then
-/// AddMilestone(q[, dq]). Links no driver moves (a floating base) keep their sensed values.
-/// False with a message in `error` when the sizes do not match the robot
+/// AddMilestone(q[, dq]). False with a message in `error` when the sizes do not match the robot
 /// or a command fails.
 bool SendMotion(const MilestoneSequence& motion, RobotController* controller, std::string* error);
 

@@ -125,6 +125,7 @@ OdeRobot::OdeRobot(dWorldID world, const RobotDesc& robot, Diagnostics& diagnost
 OdeRobot::~OdeRobot() {
   for (Link& link : links_) {
     if (link.joint) dJointDestroy(link.joint);
+    if (link.servo) dJointDestroy(link.servo);
   }
   for (Link& link : links_) {
     if (link.owns_body) dBodyDestroy(link.body);
@@ -227,10 +228,21 @@ void OdeRobot::BuildJoints(dWorldID world, const VecX& q) {
       dJointAttach(link.joint, link.body, parent);
       dJointSetHingeAnchor(link.joint, origin.x(), origin.y(), origin.z());
       dJointSetHingeAxis(link.joint, axis.x(), axis.y(), axis.z());
+      link.servo = dJointCreateAMotor(world, nullptr);
+      dJointAttach(link.servo, link.body, parent);
+      dJointSetAMotorMode(link.servo, dAMotorUser);
+      dJointSetAMotorNumAxes(link.servo, 1);
+      dJointSetAMotorAxis(link.servo, 0, 1, axis.x(), axis.y(), axis.z());
+      dJointSetAMotorParam(link.servo, dParamFMax, 0.0);
     } else {
       link.joint = dJointCreateSlider(world, nullptr);
       dJointAttach(link.joint, link.body, parent);
       dJointSetSliderAxis(link.joint, axis.x(), axis.y(), axis.z());
+      link.servo = dJointCreateLMotor(world, nullptr);
+      dJointAttach(link.servo, link.body, parent);
+      dJointSetLMotorNumAxes(link.servo, 1);
+      dJointSetLMotorAxis(link.servo, 0, 1, axis.x(), axis.y(), axis.z());
+      dJointSetLMotorParam(link.servo, dParamFMax, 0.0);
     }
     SetStops(i);
   }
@@ -436,20 +448,68 @@ void OdeRobot::ApplyLinkForces(const VecX& forces) {
   }
 }
 
-void OdeRobot::SetJointFriction(const std::vector<DriverDesc>& drivers, const VecX& dq) {
+void OdeRobot::SetServos(const std::vector<ServoMotorCommand>& motors) {
+  for (const Link& link : links_) {
+    if (link.servo == nullptr) continue;
+    if (dJointGetType(link.servo) == dJointTypeAMotor) {
+      dJointSetAMotorParam(link.servo, dParamFMax, 0.0);
+    } else {
+      dJointSetLMotorParam(link.servo, dParamFMax, 0.0);
+    }
+  }
+  for (const ServoMotorCommand& motor : motors) {
+    if (motor.link < 0 || motor.link >= dof()) continue;
+    const dJointID servo = links_[motor.link].servo;
+    if (servo == nullptr || !(motor.fmax > 0.0)) continue;
+    const double fmax = std::isfinite(motor.fmax) ? motor.fmax : dInfinity;
+    if (dJointGetType(servo) == dJointTypeAMotor) {
+      dJointSetAMotorParam(servo, dParamVel, motor.velocity);
+      dJointSetAMotorParam(servo, dParamCFM, motor.cfm);
+      dJointSetAMotorParam(servo, dParamFMax, fmax);
+    } else {
+      dJointSetLMotorParam(servo, dParamVel, motor.velocity);
+      dJointSetLMotorParam(servo, dParamCFM, motor.cfm);
+      dJointSetLMotorParam(servo, dParamFMax, fmax);
+    }
+  }
+}
+
+// The joint's own motor: dry friction as a hard velocity-0 row bounded by μ_D (+ μ_V |dq| when
+// the servo does not already damp with μ_V), or pure viscous friction as an implicit damper
+// (velocity 0, cfm 1 / μ_V).
+void OdeRobot::SetJointFriction(const std::vector<DriverDesc>& drivers, const VecX& dq,
+                                const std::vector<ServoMotorCommand>& motors) {
   for (const DriverDesc& driver : drivers) {
     if (driver.type != DriverType::kNormal || driver.links.empty()) continue;
     const int i = driver.links[0];
     if (i < 0 || i >= dof() || links_[i].joint == nullptr) continue;
-    const double fmax =
-        std::max(0.0, driver.dry_friction + driver.viscous_friction * std::abs(dq[i]));
-    if (robot_.links[i].axis_type == LinkJointAxis::kRevolute) {
-      dJointSetHingeParam(links_[i].joint, dParamVel, 0.0);
-      dJointSetHingeParam(links_[i].joint, dParamFMax, fmax);
-    } else {
-      dJointSetSliderParam(links_[i].joint, dParamVel, 0.0);
-      dJointSetSliderParam(links_[i].joint, dParamFMax, fmax);
+    bool viscous_in_servo = false;
+    for (const ServoMotorCommand& motor : motors) {
+      if (motor.link == i && motor.includes_viscous) viscous_in_servo = true;
     }
+    const double dry = std::max(0.0, driver.dry_friction);
+    const double viscous = viscous_in_servo ? 0.0 : std::max(0.0, driver.viscous_friction);
+    double fmax = 0.0, cfm = 0.0;
+    if (dry > 0.0) {
+      fmax = dry + viscous * std::abs(dq[i]);
+    } else if (viscous > 0.0) {
+      fmax = dInfinity;
+      cfm = 1.0 / viscous;
+    }
+    SetJointMotor(i, fmax, cfm);
+  }
+}
+
+void OdeRobot::SetJointMotor(int i, double fmax, double cfm) {
+  const dJointID joint = links_[i].joint;
+  if (robot_.links[i].axis_type == LinkJointAxis::kRevolute) {
+    dJointSetHingeParam(joint, dParamVel, 0.0);
+    dJointSetHingeParam(joint, dParamCFM, cfm);
+    dJointSetHingeParam(joint, dParamFMax, fmax);
+  } else {
+    dJointSetSliderParam(joint, dParamVel, 0.0);
+    dJointSetSliderParam(joint, dParamCFM, cfm);
+    dJointSetSliderParam(joint, dParamFMax, fmax);
   }
 }
 

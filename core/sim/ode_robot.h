@@ -9,6 +9,7 @@
 
 #include <ode/ode.h>
 
+#include "core/control/robot_controller.h"
 #include "core/diagnostics.h"
 #include "core/model/world_desc.h"
 #include "core/sim/robot_joint_state.h"
@@ -30,6 +31,7 @@ class OdeRobot {
     Vec3 com = Vec3::Zero();             ///< the carrying body's centre of mass in the link frame
     Pose fixed_pose = Pose::Identity();  ///< kStatic: link frame in the world
     dJointID joint = nullptr;            ///< hinge or slider to the parent's body (or the world)
+    dJointID servo = nullptr;            ///< motor along the joint for the implicit PD
     double reference = 0.0;              ///< joint value where the ODE joint reads zero
     double mass = 0.0;                   ///< owners: the body's mass (kg)
     Mat3 inertia = Mat3::Zero();         ///< owners: about the COM, in the link axes
@@ -62,8 +64,11 @@ class OdeRobot {
   /// Adds the generalized force of every link (N·m on hinges, N on sliders, along the virtual
   /// axes of a floating base) for the coming ODE step.
   void ApplyLinkForces(const VecX& forces);
+  /// Implicit PD motors: every servo off, then the given ones on for the coming step.
+  void SetServos(const std::vector<ServoMotorCommand>& motors);
   /// Joint friction motors: each driven link resists motion with up to dry + viscous·|dq|.
-  void SetJointFriction(const std::vector<DriverDesc>& drivers, const VecX& dq);
+  void SetJointFriction(const std::vector<DriverDesc>& drivers, const VecX& dq,
+                        const std::vector<ServoMotorCommand>& motors);
   /// After an accepted step: counts the turns of revolute joints.
   void AcceptStep();
 
@@ -74,6 +79,7 @@ class OdeRobot {
   void BuildBodies(dWorldID world, const VecX& q, Diagnostics& diagnostics);
   void BuildJoints(dWorldID world, const VecX& q);
   void SetStops(int i);
+  void SetJointMotor(int i, double fmax, double cfm);
   double HingeAngle(int i) const;
   Pose FloatingBaseFrame(const VecX& q) const;
 

@@ -744,7 +744,7 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     next_feedback_slot_ = 0;
     for (const ContactPair& pair : pairs_) AddContactJoints(pair, step);
     ApplyAccumulatedForces();
-    PrepareRobotsForStep();
+    PrepareRobotsForStep(step);
     if (solver_.type == SolverType::kQuickStep) {
       dWorldSetQuickStepNumIterations(ode_world_.get(), solver_.quick_step_iterations);
       dWorldQuickStep(ode_world_.get(), step);

@@ -217,7 +217,7 @@ class Simulator {
   void BuildBodies();
   void BuildRobot(int robot, int first_link_id);
   void RunControllers(double step);
-  void PrepareRobotsForStep();
+  void PrepareRobotsForStep(double step);
   void AcceptRobotStep(double step);
   void CaptureBodyState(SimState* state, bool with_controllers) const;
   void CaptureRobotState(SimState* state, bool with_controllers) const;
@@ -298,6 +298,7 @@ class Simulator {
   std::vector<std::vector<std::pair<int, int>>> self_collision_pairs_;  ///< per robot, sorted
   struct RobotScratch {
     VecX q, dq, forces;
+    std::vector<ServoMotorCommand> motors;
   };
   std::vector<RobotScratch> robot_scratch_;  ///< per robot, reused every sub-step
   std::vector<int> collidable_;              ///< ids of bodies with geometry, for the broad phase

@@ -108,16 +108,26 @@ void Simulator::RunControllers(double step) {
 }
 
 // before every ODE step (also a retaken one): stops, joint friction and actuator efforts from
-// the state the step starts from
-void Simulator::PrepareRobotsForStep() {
+// the state the step starts from; with the exact solver PID actuators are joint motors that ODE
+// solves implicitly with the step (stable whatever the gains and link inertias)
+void Simulator::PrepareRobotsForStep(double step) {
   for (int r = 0; r < robot_count(); ++r) {
     OdeRobot& robot = *robots_[r];
     RobotScratch& scratch = robot_scratch_[r];
     robot.GetConfig(&scratch.q);
     robot.GetVelocity(&scratch.dq);
     robot.PrepareStep();
-    robot.SetJointFriction(controllers_[r].drivers(), scratch.dq);
-    controllers_[r].ComputeLinkForces(scratch.q, scratch.dq, &scratch.forces);
+    if (solver_.type == SolverType::kStep) {
+      controllers_[r].ComputeImplicitServo(scratch.q, scratch.dq, step, &scratch.forces,
+                                           &scratch.motors);
+    } else {
+      // QuickStep's iterations converge stiff servo rows on light chains too slowly (ATHLETE
+      // creeps 60 mm in 2 s with implicit servos, 16 mm with the explicit law): explicit there
+      controllers_[r].ComputeLinkForces(scratch.q, scratch.dq, &scratch.forces);
+      scratch.motors.clear();
+    }
+    robot.SetJointFriction(controllers_[r].drivers(), scratch.dq, scratch.motors);
+    robot.SetServos(scratch.motors);
     robot.ApplyLinkForces(scratch.forces);
   }
 }

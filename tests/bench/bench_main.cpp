@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "tests/bench/bench_support.h"
+#include "tests/bench/robot_bench.h"
 #include "tests/bench/world_bench.h"
 
 namespace lamina::bench {
@@ -46,6 +47,7 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   lamina::bench::RegisterWorldBenchmarks();
+  lamina::bench::RegisterRobotBenchmarks();
   if (own_format) {
     benchmark::RunSpecifiedBenchmarks();
   } else {

@@ -88,5 +88,55 @@ TEST(RunCommandTest, BadSolverIsAUsageError) {
   EXPECT_EQ(result.exit_code, 2);
 }
 
+// --milestones sends the milestones to robot 0 (a damped one-link arm): after the motion it holds
+// the last milestone; the report gives the configuration, the commanded one and the error
+TEST(RunCommandTest, MilestonesDriveRobotZeroAndTheReportTracksIt) {
+  const std::string rob = test::WriteScratchFile(
+      "cli_robot/arm1.rob",
+      "links \"arm\"\nparents -1\nTParent 1 0 0  0 1 0  0 0 1  0 0 0\naxis 0 1 0\nmass 1\n"
+      "com 0.25 0 0\n"
+      "inertia 0.01 0 0  0 0.03 0  0 0 0.03\nvelMax 2\naccMax 4\njoint normal 0\n"
+      "driver normal 0\nservoP 50\nservoI 0\nservoD 5\n");
+  const std::string world =
+      test::WriteScratchFile("cli_robot/arm_world.xml",
+                             "<world>\n  <robot name=\"arm\" file=\"" + rob +
+                                 "\"/>\n  <simulation><globals gravity=\"0 0 0\"/></simulation>\n"
+                                 "</world>\n");
+  // to 0.5 rad, then to -0.3 rad, at rest at both
+  const std::string milestones =
+      test::WriteScratchFile("cli_robot/arm.milestones", "1 0.5  1 0\n1 -0.3  1 0\n");
+  const CommandResult result =
+      RunHeadless("run --json --duration 4 " + world + " --milestones " + milestones);
+  ASSERT_EQ(result.exit_code, 0) << result.out << result.err;
+  const nlohmann::json json = nlohmann::json::parse(result.out);
+  ASSERT_EQ(json["robots"].size(), 1u);
+  const nlohmann::json& robot = json["robots"][0];
+  EXPECT_EQ(robot["name"], "arm");
+  ASSERT_TRUE(robot.contains("commanded_config"));
+  EXPECT_EQ(robot["velocity"].size(), 1u);
+  EXPECT_EQ(robot["actuator_torques"].size(), 1u);
+  // ramps of 2 sqrt(0.5 / 4) + 2 sqrt(0.8 / 4) = 1.6 s end long before 4 s
+  EXPECT_NEAR(robot["commanded_config"][0].get<double>(), -0.3, 1e-9);
+  EXPECT_NEAR(robot["config"][0].get<double>(), -0.3, 1e-3);
+  EXPECT_LT(robot["tracking_error"].get<double>(), 1e-3);
+
+  // the log gets the robot's columns first: q, dq and actuator torques, then a blank column
+  const std::string log = test::ScratchDir() + "/arm_log.csv";
+  const CommandResult logged = RunHeadless("run --duration 0.05 " + world + " --log " + log);
+  ASSERT_EQ(logged.exit_code, 0) << logged.err;
+  std::ifstream file(log);
+  std::string header;
+  std::getline(file, header);
+  EXPECT_EQ(header.rfind("time,arm_q[arm],arm_dq[arm],arm_torque[", 0), 0u) << header;
+}
+
+TEST(RunCommandTest, MotionForAWorldWithoutRobotIsAnError) {
+  const CommandResult result = RunHeadless(
+      "run --duration 0.1 " + test::WorldsPath("klampt/simulation_test_worlds/bounce_test.xml") +
+      " --path " + test::DataPath("motions/arm.path"));
+  EXPECT_NE(result.exit_code, 0);
+  EXPECT_NE(result.err.find("no robot"), std::string::npos) << result.err;
+}
+
 }  // namespace
 }  // namespace lamina

@@ -161,5 +161,51 @@ TEST(RobotJointTest, ViscousFrictionDampsWithItsTimeConstant) {
   EXPECT_NEAR(simulator.GetRobotVelocity(0)[0], expected, 0.01 * expected);
 }
 
+// fakeSimulate: no physics, the robot follows its commanded ramp exactly (rest to rest over the
+// ramp's minimum time), with the commanded velocity
+TEST(RobotJointTest, FakeSimulateMovesTheRobotToItsCommands) {
+  core::Simulator simulator(
+      PendulumWorld("servoP 60\nservoI 0\nservoD 8\nvelMax 2\naccMax 4\n", 0));
+  core::RobotController& controller = simulator.controller(0);
+  simulator.FakeSimulate(0.01);  // the controller starts its queue
+  ASSERT_TRUE(controller.SetMilestone(VecX::Constant(1, 1.0))) << controller.last_error();
+  // 1 rad with |a| <= 4: a triangle profile (peak speed 2 = velMax) of 2 sqrt(1 / 4) = 1 s
+  EXPECT_NEAR(controller.RemainingTime(), 1.0, 1e-9);
+  for (int k = 0; k < 50; ++k) simulator.FakeSimulate(0.01);
+  VecX commanded, commanded_velocity;
+  ASSERT_TRUE(controller.GetCommandedConfig(&commanded));
+  ASSERT_TRUE(controller.GetCommandedVelocity(&commanded_velocity));
+  EXPECT_NEAR(simulator.GetRobotConfig(0)[0], commanded[0], 1e-12);  // read back through ODE
+  EXPECT_NEAR(simulator.GetRobotVelocity(0)[0], commanded_velocity[0], 1e-9);
+  EXPECT_GT(commanded_velocity[0], 1.0);  // mid-ramp, near the peak speed
+  for (int k = 0; k < 60; ++k) simulator.FakeSimulate(0.01);
+  EXPECT_NEAR(simulator.GetRobotConfig(0)[0], 1.0, 1e-9);
+  EXPECT_NEAR(simulator.time(), 1.11, 1e-9);
+}
+
+// a light link with stiff gains (kD h / I = 150 at 1 ms, where the explicit PD law diverges):
+// the exact solver applies the servo implicitly and the arm settles on its target
+TEST(RobotJointTest, StiffServoOnALightLinkSettles) {
+  const std::string text =
+      "links \"light\"\nparents -1\nTParent 1 0 0  0 1 0  0 0 1  0 0 1\naxis 0 0 1\n"
+      "mass 0.05\ncom 0.02 0 0\ninertia 1e-6 0 0  0 1e-6 0  0 0 1e-6\n"
+      "joint normal 0\ndriver normal 0\nservoP 50\nservoI 0\nservoD 3\n";
+  core::Diagnostics diagnostics;
+  core::MeshCache meshes;
+  core::LoadContext context{diagnostics, meshes};
+  core::WorldDesc world;
+  world.robots.emplace_back();
+  ASSERT_TRUE(core::ParseRob(text, "/virtual/light.rob", context, &world.robots[0]));
+  const double inertia = 1e-6 + 0.05 * 0.02 * 0.02;
+  ASSERT_GT(3 * 0.001 / inertia, 2.0);  // beyond the explicit law's stability
+  core::Simulator simulator(world);
+  ASSERT_TRUE(simulator.controller(0).SetPIDCommand(VecX::Constant(1, 0.3), VecX::Zero(1)));
+  simulator.Simulate(1.0);
+  ASSERT_NE(simulator.statistics().worst_status, core::StepStatus::kError);
+  // overdamped: kD² >> 4 kP I; it creeps in with time constant kD / kP = 0.06 s
+  EXPECT_NEAR(simulator.GetRobotConfig(0)[0], 0.3, 1e-6);
+  EXPECT_NEAR(simulator.GetRobotVelocity(0)[0], 0.0, 1e-6);
+}
+
 }  // namespace
 }  // namespace lamina
