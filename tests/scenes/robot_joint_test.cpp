@@ -9,6 +9,7 @@
 #include "core/io/load_context.h"
 #include "core/io/robot_file.h"
 #include "core/sim/simulator.h"
+#include "tests/common/test_support.h"
 
 namespace lamina {
 namespace {
@@ -205,6 +206,44 @@ TEST(RobotJointTest, StiffServoOnALightLinkSettles) {
   // overdamped: kD² >> 4 kP I; it creeps in with time constant kD / kP = 0.06 s
   EXPECT_NEAR(simulator.GetRobotConfig(0)[0], 0.3, 1e-6);
   EXPECT_NEAR(simulator.GetRobotVelocity(0)[0], 0.0, 1e-6);
+}
+
+// Self-collision: a fixed base box (link 0), a hinge link without geometry (1) and a box on it
+// (2) folded back through the base. Links 0 and 2 may touch only with robotSelfCollisions on
+// and when no `noselfcollision` line forbids it; parent and child never do.
+int SelfContactPairs(bool self_collisions, const std::string& extra) {
+  const std::string text =
+      "links \"base\" \"elbow\" \"forearm\"\nparents -1 0 1\n"
+      "TParent 1 0 0 0 1 0 0 0 1 0 0 0  1 0 0 0 1 0 0 0 1 0 0 0.7  1 0 0 0 1 0 0 0 1 0 0 0\n"
+      "axis 0 0 1  0 1 0  0 1 0\njointtype r r r\ngeometry \"box.off\" \"\" \"box.off\"\n"
+      "mass 1 1 1\nq 0 3.0 0\njoint weld 0\njoint normal 1\njoint normal 2\n"
+      "driver normal 1\ndriver normal 2\nservoP 0 0\nservoI 0 0\nservoD 0 0\n" +
+      extra;
+  core::Diagnostics diagnostics;
+  core::MeshCache meshes;
+  core::LoadContext context{diagnostics, meshes};
+  core::WorldDesc world;
+  world.settings.gravity = core::Vec3::Zero();
+  world.settings.robot_self_collisions = self_collisions;
+  world.robots.emplace_back();
+  EXPECT_TRUE(core::ParseRob(text, test::DataPath("robots/folded.rob"), context, &world.robots[0]))
+      << diagnostics.FormatAll();
+  core::Simulator simulator(world);
+  simulator.controller(0).SetTorque(VecX::Zero(2));
+  simulator.Simulate(0.001);
+  int pairs = 0;
+  for (const core::ContactPair& pair : simulator.contact_pairs()) {
+    const core::WorldId a = world.Resolve(pair.a), b = world.Resolve(pair.b);
+    EXPECT_NE(std::abs(a.link - b.link), 1) << "parent and child touched";
+    if (std::min(a.link, b.link) == 0 && std::max(a.link, b.link) == 2) ++pairs;
+  }
+  return pairs;
+}
+
+TEST(RobotJointTest, SelfCollisionOnlyForAllowedPairs) {
+  EXPECT_EQ(SelfContactPairs(true, ""), 1);
+  EXPECT_EQ(SelfContactPairs(false, ""), 0);
+  EXPECT_EQ(SelfContactPairs(true, "noselfcollision 0 2\n"), 0);
 }
 
 }  // namespace
