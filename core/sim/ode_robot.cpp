@@ -50,13 +50,13 @@ std::vector<JointType> LinkJointTypes(const RobotDesc& robot) {
   return types;
 }
 
-// true when links first..first+5 are Klamp't's floating base: translations along x, y, z,
-// then rotations about z, y, x, each frame on its parent's
+// true when links first..last are Klamp't's floating base: translations along x, y, z, then
+// (for a 6-link base) rotations about z, y, x, each frame on its parent's
 bool IsStandardFloatingBase(const RobotDesc& robot, int first, int last) {
-  if (last - first != 5) return false;
+  if (last - first != 5 && last - first != 2) return false;
   const Vec3 axes[6] = {Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ(),
                         Vec3::UnitZ(), Vec3::UnitY(), Vec3::UnitX()};
-  for (int k = 0; k < 6; ++k) {
+  for (int k = 0; k <= last - first; ++k) {
     const LinkDesc& link = robot.links[first + k];
     const LinkJointAxis expected = k < 3 ? LinkJointAxis::kPrismatic : LinkJointAxis::kRevolute;
     if (link.axis_type != expected || (link.axis.normalized() - axes[k]).norm() > 1e-9) {
@@ -86,7 +86,8 @@ OdeRobot::OdeRobot(dWorldID world, const RobotDesc& robot, Diagnostics& diagnost
         diagnostics.Error({robot.source_path, 0},
                           "robot '" + robot.name +
                               "': only one floating base of 6 virtual links (x, y, z, then "
-                              "rotations about z, y, x) is supported; the joint is welded");
+                              "rotations about z, y, x) or 3 (x, y, z) is supported; the joint "
+                              "is welded");
         for (int i = joint.base + 1; i <= joint.link; ++i) joint_types_[i] = JointType::kWeld;
         continue;
       }
@@ -183,6 +184,8 @@ void OdeRobot::BuildBodies(dWorldID world, const VecX& q, Diagnostics& diagnosti
     link.body = dBodyCreate(world);
     link.owns_body = true;
     dBodySetFiniteRotationMode(link.body, 1);
+    // a translating floating base has no rotational DOFs: its body never turns
+    if (o == floating_link_ && !floating_rotates()) dBodySetMaxAngularSpeed(link.body, 0.0);
     dMass ode_mass;
     dMassSetParameters(&ode_mass, mass, 0, 0, 0, inertia(0, 0), inertia(1, 1), inertia(2, 2),
                        inertia(0, 1), inertia(0, 2), inertia(1, 2));
@@ -338,6 +341,7 @@ void OdeRobot::GetConfig(VecX* q) const {
   const Pose local = parent.inverse() * frame;
   const Vec3 rpy = RollPitchYawFromRotation(local.linear());
   q->segment<3>(floating_first_) = local.translation();
+  if (!floating_rotates()) return;
   (*q)[floating_first_ + 3] = rpy.z();
   (*q)[floating_first_ + 4] = rpy.y();
   (*q)[floating_first_ + 5] = rpy.x();
@@ -359,6 +363,7 @@ void OdeRobot::GetVelocity(VecX* dq) const {
   const Vec3 v_origin = ToVec3(dBodyGetLinearVel(base.body)) - w.cross(R * base.com);
   const Mat3 P = robot_.links[floating_first_].parent_transform.linear();
   dq->segment<3>(floating_first_) = P.transpose() * v_origin;
+  if (!floating_rotates()) return;
   // ω = yaw' z + pitch' Rz(yaw) y + roll' Rz(yaw) Ry(pitch) x, in the base's parent axes
   VecX q;
   GetConfig(&q);

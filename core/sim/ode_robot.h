@@ -48,6 +48,8 @@ class OdeRobot {
   const Link& link(int i) const { return links_[i]; }
   /// Index of the floating base's body link, or -1.
   int floating_link() const { return floating_link_; }
+  /// A 6-link floating base rotates; a 3-link one (x, y, z) only translates.
+  bool floating_rotates() const { return floating_link_ - floating_first_ == 5; }
   /// True for links whose value is a joint coordinate of the simulation (hinge, slider or
   /// floating base); welded links keep their model value.
   bool is_moving_joint(int i) const;

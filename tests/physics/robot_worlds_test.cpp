@@ -200,5 +200,19 @@ TEST(RobotWorldsTest, AthleteTracksTheFlexPathStreamedAsPidCommands) {
   EXPECT_LT(held_worst, kFlexHeldWorstError);
 }
 
+// sphere.rob: a sphere on a translating floating base (3 virtual links) held by translation
+// drivers (force along x, y, z on the base body) against gravity
+TEST(RobotWorldsTest, TranslationDriversHoldAFloatingSphere) {
+  const core::WorldDesc world = RobotOnly("klampt/robots/sphere.rob", false);
+  core::Simulator simulator(world);
+  ASSERT_EQ(simulator.GetRobotConfig(0).size(), 3);
+  simulator.Simulate(3.0);
+  ASSERT_NE(simulator.statistics().worst_status, core::StepStatus::kError);
+  // the integral term carries the 0.49 N weight: no offset left, and no rotation
+  EXPECT_LT(simulator.GetRobotConfig(0).cwiseAbs().maxCoeff(), 1e-3);
+  EXPECT_TRUE(simulator.body(world.RobotLinkId(0, 2)).GetTransform().linear().isIdentity(1e-12));
+  EXPECT_NEAR(simulator.GetActuatorTorques(0)[2], 0.05 * 9.8, 0.01);
+}
+
 }  // namespace
 }  // namespace lamina

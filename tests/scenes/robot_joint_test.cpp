@@ -208,6 +208,37 @@ TEST(RobotJointTest, StiffServoOnALightLinkSettles) {
   EXPECT_NEAR(simulator.GetRobotVelocity(0)[0], 0.0, 1e-6);
 }
 
+// friction and torque limits are read live: an edit acts on the next step
+TEST(RobotJointTest, FrictionEditsTakeEffectOnTheNextStep) {
+  core::WorldDesc world = PendulumWorld("servoP 0\nservoI 0\nservoD 0\ndryFriction 2\n", 0.0);
+  world.settings.gravity = core::Vec3::Zero();
+  core::Simulator simulator(world);
+  simulator.controller(0).SetTorque(VecX::Constant(1, 1.5));
+  simulator.Simulate(0.5);
+  EXPECT_NEAR(simulator.GetRobotVelocity(0)[0], 0.0, 1e-5);  // held by 2 N·m
+  simulator.controller(0).drivers()[0].dry_friction = 1.0;
+  simulator.Simulate(0.5);
+  // slips from the edit on with (1.5 - 1) / I
+  const double expected = 0.5 / PivotInertia() * 0.5;
+  EXPECT_NEAR(simulator.GetRobotVelocity(0)[0], expected, 0.01 * expected);
+}
+
+// a saved state (bodies, joint turn counters, controller with its queue) replays bit for bit
+TEST(RobotJointTest, SetStateReplaysTheSameTrajectory) {
+  core::Simulator simulator(
+      PendulumWorld("servoP 60\nservoI 20\nservoD 8\nvelMax 3\naccMax 5\n", -2.5));
+  ASSERT_TRUE(simulator.controller(0).SetMilestone(VecX::Constant(1, 2.0)));
+  simulator.Simulate(0.4);
+  const core::SimState saved = simulator.GetState();
+  simulator.Simulate(0.6);
+  const VecX q_first = simulator.GetRobotConfig(0);
+  const VecX dq_first = simulator.GetRobotVelocity(0);
+  simulator.SetState(saved);
+  simulator.Simulate(0.6);
+  EXPECT_EQ(simulator.GetRobotConfig(0)[0], q_first[0]);
+  EXPECT_EQ(simulator.GetRobotVelocity(0)[0], dq_first[0]);
+}
+
 // Self-collision: a fixed base box (link 0), a hinge link without geometry (1) and a box on it
 // (2) folded back through the base. Links 0 and 2 may touch only with robotSelfCollisions on
 // and when no `noselfcollision` line forbids it; parent and child never do.
