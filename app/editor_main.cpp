@@ -1,78 +1,92 @@
 // SPDX-License-Identifier: MIT
-// lamina: the desktop editor. Argument parsing and wiring only. This first version opens the
-// window and shows what was loaded; rendering and the editing panels come next.
+// lamina: the desktop viewer/editor. Argument parsing and wiring only; the window, the loop and
+// the panels live in ui/viewer and ui/panels.
 #include <iostream>
 #include <string>
 
 #include <CLI/CLI.hpp>
-#include <imgui.h>
 
-#include "core/io/world_file.h"
-#include "core/model/world_summary.h"
-#include "ui/platform/glfw_window.h"
-#include "ui/platform/image_file.h"
+#include "core/render/overlay_options.h"
+#include "core/render/scene_camera.h"
+#include "ui/viewer/viewer_app.h"
 
 namespace {
 
-using lamina::core::WorldDesc;
+// "WIDTHxHEIGHT" with 1..16384 pixels per side
+bool ParseSize(const std::string& text, int* width, int* height) {
+  const size_t x = text.find('x');
+  if (x == std::string::npos) return false;
+  try {
+    size_t used_w = 0, used_h = 0;
+    const std::string w = text.substr(0, x), h = text.substr(x + 1);
+    *width = std::stoi(w, &used_w);
+    *height = std::stoi(h, &used_h);
+    if (used_w != w.size() || used_h != h.size()) return false;
+  } catch (const std::exception&) {
+    return false;
+  }
+  return *width >= 1 && *height >= 1 && *width <= 16384 && *height <= 16384;
+}
 
-void DrawWorldPanel(const WorldDesc& world, const lamina::core::Diagnostics& diagnostics) {
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(460, 220), ImGuiCond_FirstUseEver);
-  ImGui::Begin("World");
-  ImGui::Text("%s", world.name.c_str());
-  ImGui::Separator();
-  ImGui::Text("%zu terrains, %zu objects, %zu robots", world.terrains.size(), world.objects.size(),
-              world.robots.size());
-  for (const auto& robot : world.robots) {
-    ImGui::BulletText("robot '%s': %d links, %.3f kg", robot.name.c_str(), robot.dof(),
-                      robot.TotalMass());
+// checks --size, --camera and --overlay into `options`; false with a message naming the option
+bool CheckViewOptions(const std::string& size, const std::string& overlay,
+                      lamina::ui::ViewerOptions* options, std::string* error) {
+  if (!ParseSize(size, &options->width, &options->height)) {
+    *error = "--size expects WIDTHxHEIGHT with 1..16384 pixels per side (e.g. 1280x720), got '" +
+             size + "'";
+    return false;
   }
-  if (!diagnostics.entries().empty()) {
-    ImGui::Separator();
-    ImGui::TextWrapped("%s", diagnostics.FormatAll().c_str());
+  std::string detail;
+  if (!lamina::core::ValidCameraSpec(options->camera, &detail)) {
+    *error = "--" + detail;  // "camera: ..."
+    return false;
   }
-  ImGui::End();
+  if (!lamina::core::ParseOverlayList(overlay, &options->overlays, &detail)) {
+    *error = "--overlay: " + detail;
+    return false;
+  }
+  return true;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"lamina: the Lamina world editor"};
-  std::string world_path = LAMINA_DEFAULT_WORLD;
-  int frames = 0;
-  std::string screenshot;
-  app.add_option("world", world_path, "world file to open")->capture_default_str();
-  app.add_option("--frames", frames, "quit after this many frames (0 = run until closed)");
-  app.add_option("--screenshot", screenshot, "write the last frame to this PNG before quitting");
+  CLI::App app{"lamina: the Lamina world viewer and editor"};
+  lamina::ui::ViewerOptions options;
+  options.world_path = LAMINA_DEFAULT_WORLD;
+  options.worlds_dir = LAMINA_WORLDS_DIR;
+  std::string size = "1280x720", overlay;
+  bool no_ui = false;
+  app.add_option("world", options.world_path, "world file to open")->capture_default_str();
+  app.add_option("--frames", options.frames, "quit after this many frames (0 = run until closed)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--screenshot", options.screenshot,
+                 "PNG written after the last frame (with --frames) and by F12/P");
+  app.add_option("--time", options.start_time, "simulate this long before the first frame, s")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--camera", options.camera,
+                 "world (default), bodies, or 'target=x,y,z;yaw=deg;pitch=deg;dist=m;fov=deg'");
+  app.add_option("--overlay", overlay,
+                 "comma list of contacts,normals,forces,padding,com,frames,bbox (or all)");
+  app.add_option("--size", size, "window size WIDTHxHEIGHT (default 1280x720)");
+  app.add_flag("--no-ui", no_ui, "hide the panels (H toggles them)");
+  app.add_option("--select", options.selected_id, "world id of the body to select at start")
+      ->check(CLI::NonNegativeNumber);
+  app.add_flag("--paused", options.paused, "start paused (Space plays)");
+  app.add_option("--msaa", options.samples, "antialiasing samples per pixel: 1, 2 or 4 (default)")
+      ->check(CLI::IsMember({1, 2, 4}));
+  app.add_flag("--fxaa", options.fxaa,
+               "FXAA instead of multisampling (about as cheap as --msaa 1 on software GL)");
+  app.add_option("--bench-frames", options.bench_frames,
+                 "time this many frames (vsync off) and print the median frame times")
+      ->check(CLI::NonNegativeNumber);
   CLI11_PARSE(app, argc, argv);
 
-  lamina::core::Diagnostics diagnostics;
-  lamina::core::MeshCache meshes;
-  lamina::core::LoadContext context{diagnostics, meshes};
-  WorldDesc world;
-  lamina::core::LoadWorldFile(world_path, context, &world);
-  std::cerr << diagnostics.FormatAll();
-
-  lamina::ui::GlfwWindow window;
   std::string error;
-  if (!window.Open("Lamina - " + world.name, 1280, 720, &error)) {
-    std::cerr << "lamina: cannot open a window: " << error << "\n";
-    return 1;
+  if (!CheckViewOptions(size, overlay, &options, &error)) {
+    std::cerr << "lamina: " << error << "\n";
+    return 2;
   }
-  for (int frame = 0; !window.ShouldClose() && (frames == 0 || frame < frames); ++frame) {
-    window.BeginFrame();
-    DrawWorldPanel(world, diagnostics);
-    window.EndFrame(0.18f, 0.20f, 0.24f);
-    if (!screenshot.empty() && frame + 1 == frames) {
-      int width = 0, height = 0;
-      const auto pixels = window.ReadPixels(&width, &height);
-      if (!lamina::ui::WritePngBottomUp(screenshot, width, height, pixels)) {
-        std::cerr << "lamina: cannot write " << screenshot << "\n";
-        return 1;
-      }
-    }
-    window.Swap();
-  }
-  return diagnostics.HasErrors() ? 1 : 0;
+  options.show_panels = !no_ui;
+  return lamina::ui::RunViewer(options);
 }

@@ -41,6 +41,8 @@ bool GlfwWindow::Open(const std::string& title, int width, int height, std::stri
   window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (!window_) return false;
   glfwMakeContextCurrent(window_);
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetDropCallback(window_, &GlfwWindow::OnDrop);
   glfwSwapInterval(1);
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -72,6 +74,38 @@ void GlfwWindow::EndFrame(float red, float green, float blue) {
   glClearColor(red, green, blue, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+void GlfwWindow::DrawImGui() {
+  ImGui::Render();
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window_, &width, &height);
+  glViewport(0, 0, width, height);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+void GlfwWindow::SetVsync(bool on) {
+  glfwSwapInterval(on ? 1 : 0);
+}
+
+void GlfwWindow::SetTitle(const std::string& title) {
+  glfwSetWindowTitle(window_, title.c_str());
+}
+
+void GlfwWindow::FramebufferSize(int* width, int* height) const {
+  glfwGetFramebufferSize(window_, width, height);
+}
+
+std::vector<std::string> GlfwWindow::TakeDroppedPaths() {
+  std::vector<std::string> paths;
+  paths.swap(dropped_paths_);
+  return paths;
+}
+
+void GlfwWindow::OnDrop(GLFWwindow* window, int count, const char** paths) {
+  auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window));
+  if (!self) return;
+  for (int i = 0; i < count; ++i) self->dropped_paths_.emplace_back(paths[i]);
 }
 
 void GlfwWindow::Swap() {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The editor's window: GLFW with an OpenGL 3.3 core context and a Dear ImGui frame around
-// whatever the caller draws.
+// whatever the caller draws; files dropped onto it are queued for the caller.
 #pragma once
 
 #include <cstdint>
@@ -25,7 +25,16 @@ class GlfwWindow {
   void BeginFrame();
   /// Clears the framebuffer to `rgb` and draws the ImGui frame; does not swap.
   void EndFrame(float red, float green, float blue);
+  /// Draws the ImGui frame over what is in the framebuffer (no clear); does not swap.
+  void DrawImGui();
   void Swap();
+  /// Waits for vertical sync on Swap (on by default; off for benchmarks).
+  void SetVsync(bool on);
+  void SetTitle(const std::string& title);
+  /// Framebuffer size in pixels.
+  void FramebufferSize(int* width, int* height) const;
+  /// Files dropped onto the window since the last call, in drop order.
+  std::vector<std::string> TakeDroppedPaths();
   /// The back buffer as RGBA8, bottom row first.
   std::vector<std::uint8_t> ReadPixels(int* width, int* height) const;
   /// "4.5 (Core Profile) Mesa ..." of the current context.
@@ -34,6 +43,9 @@ class GlfwWindow {
  private:
   GLFWwindow* window_ = nullptr;
   bool imgui_ready_ = false;
+  std::vector<std::string> dropped_paths_;
+
+  static void OnDrop(GLFWwindow* window, int count, const char** paths);
 };
 
 }  // namespace lamina::ui

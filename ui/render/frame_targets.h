@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Off-screen framebuffers the renderer draws into: the (multisampled) colour + depth target that
-// is resolved into the caller's framebuffer, and the sun's shadow map.
+// is resolved into the caller's framebuffer, the colour texture of the FXAA pass, and the sun's
+// shadow map.
 #pragma once
 
 namespace lamina::ui {
@@ -24,6 +25,26 @@ class SceneTarget {
 
   unsigned framebuffer_ = 0, color_ = 0, depth_ = 0;
   int width_ = 0, height_ = 0, samples_ = 0;
+};
+
+/// A one-sample RGBA8 colour texture with its framebuffer: the image a post-process pass (FXAA)
+/// reads, with linear filtering and clamped edges.
+class ColorTexture {
+ public:
+  ColorTexture() = default;
+  ColorTexture(const ColorTexture&) = delete;
+  ColorTexture& operator=(const ColorTexture&) = delete;
+  ~ColorTexture();
+
+  /// (Re)allocates for the size when it changed.
+  void Resize(int width, int height);
+  unsigned framebuffer() const { return framebuffer_; }
+  /// Binds the colour texture to texture unit `unit`.
+  void BindTexture(int unit) const;
+
+ private:
+  unsigned framebuffer_ = 0, texture_ = 0;
+  int width_ = 0, height_ = 0;
 };
 
 /// A square depth texture with hardware depth comparison (sampler2DShadow, linear = 2x2 PCF).

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Frame structure: shadow pass -> background -> opaque meshes and overlays -> translucent
-// layers -> see-through overlays -> resolve into the caller's framebuffer.
+// layers -> see-through overlays -> resolve into the caller's framebuffer (or, with FXAA, into a
+// texture that the FXAA pass draws into the caller's framebuffer).
 #include "ui/render/renderer.h"
 
 #include <algorithm>
@@ -25,6 +26,7 @@ const Eigen::Vector3f kSkyBottomColor(0.86f, 0.89f, 0.92f);
 const Eigen::Vector3f kHazeColor(0.80f, 0.84f, 0.89f);
 constexpr float kSeeThroughAlpha = 0.3f;
 constexpr int kShadowTextureUnit = 0;
+constexpr int kFxaaTextureUnit = 1;
 
 // 1, 2 or 5 times a power of ten, at most `value`
 double NiceStep(double value) {
@@ -70,11 +72,12 @@ Eigen::Matrix3f NormalMatrix(const Eigen::Matrix4f& transform) {
 }  // namespace
 
 struct Renderer::Resources {
-  ShaderProgram mesh, shadow, line, background;
+  ShaderProgram mesh, shadow, line, background, fxaa;
   GpuMeshCache meshes;
   DebugShapes shapes;
   SceneTarget target;
   ShadowMap shadow_map;
+  ColorTexture fxaa_input;
   unsigned empty_vertex_array = 0;
   unsigned line_vertex_array = 0, line_buffer = 0;
 };
@@ -121,7 +124,8 @@ bool Renderer::Initialize(std::string* error) {
   if (!resources->mesh.Build("mesh.vert", "mesh.frag", error) ||
       !resources->shadow.Build("shadow.vert", "shadow.frag", error) ||
       !resources->line.Build("line.vert", "line.frag", error) ||
-      !resources->background.Build("background.vert", "background.frag", error)) {
+      !resources->background.Build("background.vert", "background.frag", error) ||
+      !resources->fxaa.Build("fxaa.vert", "fxaa.frag", error)) {
     return false;
   }
   resources->shapes = BuildDebugShapes();
@@ -321,12 +325,30 @@ void Renderer::DrawLines(const core::RenderScene& scene, const FrameParameters& 
   BindMeshProgram(frame);
 }
 
+void Renderer::DrawFxaa(unsigned framebuffer, int width, int height) {
+  Resources& res = *resources_;
+  res.fxaa_input.Resize(width, height);
+  res.target.ResolveInto(res.fxaa_input.framebuffer());
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, width, height);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  res.fxaa.Use();
+  res.fxaa_input.BindTexture(kFxaaTextureUnit);
+  res.fxaa.Set("u_color", kFxaaTextureUnit);
+  res.fxaa.Set("u_texel", Eigen::Vector2f(1.0f / static_cast<float>(width),
+                                          1.0f / static_cast<float>(height)));
+  glBindVertexArray(res.empty_vertex_array);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glEnable(GL_DEPTH_TEST);
+}
+
 void Renderer::Render(const core::RenderScene& scene, const core::OrbitCamera& camera, int width,
                       int height, unsigned framebuffer) {
   if (!resources_ || width <= 0 || height <= 0) return;
   const FrameParameters frame = PrepareFrame(scene, camera, width, height);
   if (frame.shadows) DrawShadowPass(scene, frame);
-  samples_used_ = std::max(1, std::min(settings_.samples, max_samples_));
+  samples_used_ = settings_.fxaa ? 1 : std::max(1, std::min(settings_.samples, max_samples_));
   resources_->target.Bind(width, height, samples_used_);
   glClear(GL_DEPTH_BUFFER_BIT);
   DrawBackground(frame);
@@ -343,7 +365,11 @@ void Renderer::Render(const core::RenderScene& scene, const core::OrbitCamera& c
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
-  resources_->target.ResolveInto(framebuffer);
+  if (settings_.fxaa) {
+    DrawFxaa(framebuffer, width, height);
+  } else {
+    resources_->target.ResolveInto(framebuffer);
+  }
   glBindVertexArray(0);
   resources_->meshes.EndFrame();
 }

@@ -19,7 +19,10 @@ struct RenderSettings {
   bool shadows = true;
   int shadow_map_size = 2048;  ///< texels per side
   int samples = 4;             ///< multisampling per pixel, clamped to what the context allows
-  double checker_size = 0.0;   ///< terrain checker square (m); 0 = chosen from the scene size
+  /// One sample per pixel smoothed by an FXAA pass instead of multisampling (`samples` is then
+  /// ignored): about as cheap as no antialiasing on a software renderer.
+  bool fxaa = false;
+  double checker_size = 0.0;  ///< terrain checker square (m); 0 = chosen from the scene size
 };
 
 class Renderer {
@@ -46,7 +49,7 @@ class Renderer {
   /// GL_VERSION and GL_RENDERER of the context (after Initialize).
   const std::string& gl_version() const { return gl_version_; }
   const std::string& gl_renderer() const { return gl_renderer_; }
-  /// Samples per pixel of the last frame (1 without multisampling).
+  /// Samples per pixel of the last frame (1 without multisampling, and with FXAA).
   int samples_used() const { return samples_used_; }
 
  private:
@@ -65,6 +68,7 @@ class Renderer {
   void DrawOverlays(const core::RenderScene& scene, const FrameParameters& frame,
                     float alpha_scale);
   void DrawLines(const core::RenderScene& scene, const FrameParameters& frame, float alpha_scale);
+  void DrawFxaa(unsigned framebuffer, int width, int height);
 
   RenderSettings settings_;
   std::unique_ptr<Resources> resources_;

@@ -1,0 +1,179 @@
+// SPDX-License-Identifier: MIT
+// The viewer under Xvfb: `lamina` renders frames of a world into a real GLX window, takes a
+// screenshot, and the picture must be non-blank and match `lamina-headless shot` of the same
+// scene (OSMesa) within tolerance; plus smoke tests of the panels, FXAA, --bench-frames, a
+// missing world and bad options. Skipped with a message when xvfb-run is missing.
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include "tests/render/golden_image.h"
+
+namespace {
+
+using lamina::test::Image;
+
+const std::string kBin = LAMINA_BIN_DIR;
+const std::string kWorlds = LAMINA_WORLDS_DIR;
+// a pixel differs when a channel differs by more than this; at most this fraction may differ
+constexpr int kChannelTolerance = 24;
+constexpr double kMaxDifferingFraction = 0.02;
+
+bool HaveXvfb() {
+  return std::system("command -v xvfb-run > /dev/null 2>&1") == 0;
+}
+
+// runs `command` with stdout and stderr into `log`; the exit code
+int RunCommand(const std::string& command, const std::string& log) {
+  const int status = std::system((command + " > " + log + " 2>&1").c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// runs `command` in a fresh Xvfb (1280x720x24) with its output in `log`; the command's own exit
+// code, read from a file so that xvfb-run's set-up and clean-up cannot change it (xvfb-run
+// sometimes fails to remove its temporary directory after a very short run). Retries once when
+// Xvfb did not start.
+int RunUnderXvfb(const std::string& command, const std::string& log) {
+  const std::string script = log + ".sh", exit_file = log + ".exit";
+  std::ofstream(script) << command << " > " << log << " 2>&1\necho $? > " << exit_file << "\n";
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    std::remove(exit_file.c_str());
+    RunCommand("xvfb-run -a -s \"-screen 0 1280x720x24\" sh " + script, log + ".xvfb");
+    std::ifstream exit_code(exit_file);
+    int code = -1;
+    if (exit_code >> code) return code;
+  }
+  return -1;
+}
+
+std::string ReadText(const std::string& path) {
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+// not blank: over 100 distinct colours and over a tenth of the pixels unlike the top-left corner
+// (a blank or merely cleared window has one or two colours)
+void ExpectNotBlank(const Image& image) {
+  std::set<std::uint32_t> colours;
+  int unlike_corner = 0;
+  const std::uint8_t* corner = image.rgba.data();
+  for (size_t i = 0; i + 3 < image.rgba.size(); i += 4) {
+    const std::uint8_t* p = image.rgba.data() + i;
+    colours.insert(p[0] << 16 | p[1] << 8 | p[2]);
+    if (std::abs(p[0] - corner[0]) + std::abs(p[1] - corner[1]) + std::abs(p[2] - corner[2]) > 30) {
+      ++unlike_corner;
+    }
+  }
+  EXPECT_GT(colours.size(), 100u);
+  EXPECT_GT(unlike_corner, image.width * image.height / 10);
+}
+
+Image ReadImage(const std::string& path) {
+  Image image;
+  EXPECT_TRUE(lamina::test::ReadPng(path, &image)) << path;
+  return image;
+}
+
+void ExpectWindowMatchesHeadless(const std::string& name, const std::string& world,
+                                 const std::string& view_options) {
+  if (!HaveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const std::string window_png = name + "_window.png", headless_png = name + "_headless.png";
+  const std::string window_command = kBin + "/lamina " + world +
+                                     " --frames 10 --no-ui --paused --size 640x480 " +
+                                     view_options + " --screenshot " + window_png;
+  ASSERT_EQ(RunUnderXvfb(window_command, name + "_window.log"), 0)
+      << window_command << "\n"
+      << ReadText(name + "_window.log");
+  const std::string headless_command = kBin + "/lamina-headless shot " + world +
+                                       " --size 640x480 " + view_options + " -o " + headless_png;
+  ASSERT_EQ(RunCommand(headless_command, name + "_headless.log"), 0)
+      << headless_command << "\n"
+      << ReadText(name + "_headless.log");
+  const Image window = ReadImage(window_png), headless = ReadImage(headless_png);
+  ASSERT_EQ(window.width, 640);
+  ASSERT_EQ(window.height, 480);
+  ExpectNotBlank(window);
+  const auto difference = lamina::test::CompareImages(headless, window, kChannelTolerance);
+  std::cout << name << ": " << difference.differing_pixels << " of " << 640 * 480
+            << " pixels differ by more than " << kChannelTolerance << " levels ("
+            << 100.0 * difference.differing_fraction << " %), largest channel difference "
+            << difference.max_channel_difference << "\n";
+  if (difference.differing_fraction > kMaxDifferingFraction) {
+    lamina::test::WritePng(name + "_diff.png", difference.diff);
+  }
+  EXPECT_LE(difference.differing_fraction, kMaxDifferingFraction) << "see " << name << "_diff.png";
+}
+
+TEST(ViewerUnderXvfb, WindowMatchesHeadlessRenderOfBouncingSpheres) {
+  ExpectWindowMatchesHeadless(
+      "bounce", kWorlds + "/klampt/simulation_test_worlds/bounce_test.xml",
+      "--time 0.5 --camera 'target=0,0,0.5;yaw=40;pitch=20;dist=6' --msaa 4");
+}
+
+TEST(ViewerUnderXvfb, WindowMatchesHeadlessRenderOfStackWithContactOverlays) {
+  ExpectWindowMatchesHeadless("stack", kWorlds + "/klampt/simulation_test_worlds/stacktest.xml",
+                              "--time 0.5 --camera bodies --overlay contacts,normals,forces,bbox "
+                              "--msaa 4");
+}
+
+TEST(ViewerUnderXvfb, FxaaSmoothsEdgesAndLeavesTheRestAlone) {
+  if (!HaveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const std::string command = kBin + "/lamina " + kWorlds +
+                              "/klampt/simulation_test_worlds/stacktest.xml --frames 3 --no-ui "
+                              "--paused --size 480x300 --camera 'target=0.05,0,0.75;dist=0.35' ";
+  ASSERT_EQ(RunUnderXvfb(command + "--msaa 1 --screenshot no_aa.png", "no_aa.log"), 0)
+      << ReadText("no_aa.log");
+  ASSERT_EQ(RunUnderXvfb(command + "--fxaa --screenshot fxaa.png", "fxaa.log"), 0)
+      << ReadText("fxaa.log");
+  const Image plain = ReadImage("no_aa.png"), smoothed = ReadImage("fxaa.png");
+  ExpectNotBlank(smoothed);
+  const auto difference = lamina::test::CompareImages(plain, smoothed, 8);
+  std::cout << "FXAA changed " << 100.0 * difference.differing_fraction
+            << " % of the pixels by more than 8 levels\n";
+  EXPECT_GT(difference.differing_fraction, 0.001);  // some edges were smoothed
+  EXPECT_LT(difference.differing_fraction, 0.10);   // flat regions were not
+}
+
+TEST(ViewerUnderXvfb, PanelsSmokeOnTheDefaultWorld) {
+  if (!HaveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const std::string command =
+      kBin + "/lamina --frames 5 --size 960x540 --screenshot " + "panels.png";
+  ASSERT_EQ(RunUnderXvfb(command, "panels.log"), 0) << command << "\n" << ReadText("panels.log");
+  const Image image = ReadImage("panels.png");
+  EXPECT_EQ(image.width, 960);
+  ExpectNotBlank(image);
+}
+
+TEST(ViewerUnderXvfb, BenchmarkPrintsMedianFrameTimes) {
+  if (!HaveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const std::string command = kBin + "/lamina --bench-frames 3 --no-ui --size 640x360";
+  ASSERT_EQ(RunUnderXvfb(command, "bench.log"), 0) << ReadText("bench.log");
+  EXPECT_NE(ReadText("bench.log").find("median render"), std::string::npos)
+      << ReadText("bench.log");
+}
+
+TEST(ViewerUnderXvfb, AMissingWorldIsReportedNotACrash) {
+  if (!HaveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  EXPECT_EQ(RunUnderXvfb(kBin + "/lamina /no/such/world.xml --frames 2", "missing.log"), 1);
+  EXPECT_NE(ReadText("missing.log").find("/no/such/world.xml"), std::string::npos)
+      << ReadText("missing.log");
+}
+
+TEST(ViewerOptions, BadOptionsAreRejectedBeforeAnyWindowOpens) {
+  EXPECT_EQ(RunCommand(kBin + "/lamina --overlay sparkles", "bad_overlay.log"), 2);
+  EXPECT_NE(ReadText("bad_overlay.log").find("--overlay"), std::string::npos);
+  EXPECT_EQ(RunCommand(kBin + "/lamina --size 12by7", "bad_size.log"), 2);
+  EXPECT_NE(ReadText("bad_size.log").find("--size"), std::string::npos);
+  EXPECT_EQ(RunCommand(kBin + "/lamina --camera 'yaw=abc'", "bad_camera.log"), 2);
+  EXPECT_NE(ReadText("bad_camera.log").find("camera"), std::string::npos);
+}
+
+}  // namespace

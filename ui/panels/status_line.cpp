@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+// The status line: a borderless strip along the bottom of the window.
+#include <imgui.h>
+
+#include "ui/panels/panels.h"
+
+namespace lamina::ui {
+
+void DrawStatusLine(const WorldSession& session, const ViewerState& state) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const float height = ImGui::GetFrameHeight() + 4.0f;
+  ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - height));
+  ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, height));
+  ImGui::SetNextWindowBgAlpha(0.6f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                 ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+  if (ImGui::Begin("##status", nullptr, flags)) {
+    const core::Simulator* simulator = session.simulator();
+    const double time = simulator ? simulator->time() : 0.0;
+    const char* status = core::StepStatusName(session.last_status());
+    ImGui::Text("%s  t = %.3f s  %.2fx real time (speed %.2fx)  %s  %.1f ms/frame",
+                state.playing ? "playing" : "paused ", time, state.real_time_factor, state.speed,
+                status, state.frame_milliseconds);
+    const std::string hovered =
+        state.hovered_id >= 0 ? BodyLabel(session.shown_world(), state.hovered_id) : "";
+    if (!hovered.empty() || !state.message.empty()) {
+      ImGui::SameLine();
+      ImGui::TextDisabled("| %s", hovered.empty() ? state.message.c_str() : hovered.c_str());
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace lamina::ui

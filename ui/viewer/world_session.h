@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+// The world the viewer shows: the loaded description, its simulation and the state drawn. A
+// world that fails to load leaves the previous one in place and keeps the messages for the World
+// panel; nothing here throws.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "core/diagnostics.h"
+#include "core/model/world_desc.h"
+#include "core/sim/simulator.h"
+
+namespace lamina::ui {
+
+class WorldSession {
+ public:
+  WorldSession();
+  ~WorldSession();
+
+  /// Loads `path` and builds its simulation (contact feedback on, for the overlays). False when
+  /// it fails; the previous world (if any) stays and `load_messages()` says why.
+  bool Load(const std::string& path);
+  bool loaded() const { return simulator_ != nullptr; }
+
+  /// Advances the simulation by `steps` physics steps; the simulated seconds it took.
+  double Advance(int steps);
+  /// Advances by `seconds` at once (the --time option, like `shot --time`).
+  void AdvanceTime(double seconds);
+  /// Back to time 0 and the world's initial state.
+  void Reset();
+  void SetSolver(core::SolverType type);
+
+  /// The world as it is now (poses and configurations written back after every change).
+  const core::WorldDesc& shown_world() const { return shown_; }
+  const core::Simulator* simulator() const { return simulator_.get(); }
+  const std::string& path() const { return path_; }
+  /// Diagnostics of the world loaded last (warnings of a good load, errors of a failed one).
+  const core::Diagnostics& load_messages() const { return diagnostics_; }
+  /// Status of the last simulated step.
+  core::StepStatus last_status() const { return last_status_; }
+
+ private:
+  void SyncShownWorld();
+
+  core::WorldDesc shown_;
+  std::unique_ptr<core::Simulator> simulator_;
+  core::Diagnostics diagnostics_;
+  std::string path_;
+  core::StepStatus last_status_ = core::StepStatus::kNormal;
+};
+
+}  // namespace lamina::ui
