@@ -34,11 +34,13 @@ bool LoadWorld(const std::string& path, core::WorldDesc* world) {
 }
 
 // one frame of a running viewer: extract the (unchanged) world, draw, wait for the pixels
-// state.range(0): samples per pixel, state.range(1): shadow map size (0 = no shadows)
+// state.range(0): samples per pixel (0: one sample smoothed by FXAA), state.range(1): shadow
+// map size (0 = no shadows)
 void BM_AthleteFrame(benchmark::State& state, const char* camera_spec, bool read_back) {
   ui::OsmesaContext context;
   ui::Renderer renderer;
-  renderer.settings().samples = static_cast<int>(state.range(0));
+  renderer.settings().samples = std::max(1, static_cast<int>(state.range(0)));
+  renderer.settings().fxaa = state.range(0) == 0;
   renderer.settings().shadows = state.range(1) > 0;
   renderer.settings().shadow_map_size = std::max(1, static_cast<int>(state.range(1)));
   std::string error;
@@ -64,13 +66,15 @@ void BM_AthleteFrame(benchmark::State& state, const char* camera_spec, bool read
       context.SwapOrFinish();
     }
   }
-  state.SetLabel(renderer.gl_renderer() + ", " + std::to_string(renderer.samples_used()) +
-                 "x MSAA");
+  state.SetLabel(renderer.gl_renderer() + ", " +
+                 (renderer.settings().fxaa ? std::string("FXAA")
+                                           : std::to_string(renderer.samples_used()) + "x MSAA"));
 }
 BENCHMARK_CAPTURE(BM_AthleteFrame, world_view, "world", false)
     ->Name("Render/athlete_fractal_1/1280x720/frame")
     ->ArgNames({"msaa", "shadow"})
     ->Args({4, 2048})
+    ->Args({0, 2048})
     ->Args({1, 2048})
     ->Args({4, 1024})
     ->Args({1, 1024})

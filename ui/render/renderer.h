@@ -46,6 +46,7 @@ class Renderer {
   std::vector<std::uint8_t> ReadPixels(int width, int height, unsigned framebuffer = 0) const;
 
   RenderSettings& settings() { return settings_; }
+  const RenderSettings& settings() const { return settings_; }
   /// GL_VERSION and GL_RENDERER of the context (after Initialize).
   const std::string& gl_version() const { return gl_version_; }
   const std::string& gl_renderer() const { return gl_renderer_; }

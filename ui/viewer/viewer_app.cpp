@@ -32,6 +32,14 @@ namespace lamina::ui {
 
 namespace {
 
+// Mesa's software rasterizers, where multisampling costs more than the rest of a frame
+bool IsSoftwareRenderer(const std::string& gl_renderer) {
+  for (const char* name : {"llvmpipe", "softpipe", "swrast"}) {
+    if (gl_renderer.find(name) != std::string::npos) return true;
+  }
+  return false;
+}
+
 using Clock = std::chrono::steady_clock;
 
 constexpr int kBenchWarmupFrames = 5;
@@ -130,11 +138,15 @@ bool Viewer::Start() {
     return false;
   }
   window_.SetVsync(options_.bench_frames == 0);
-  renderer_.settings().samples = options_.samples;
+  renderer_.settings().samples = options_.samples > 0 ? options_.samples : 4;
   renderer_.settings().fxaa = options_.fxaa;
   if (!renderer_.Initialize(&error)) {
     std::cerr << "lamina: cannot start the renderer: " << error << "\n";
     return false;
+  }
+  if (options_.samples == 0 && !options_.fxaa && IsSoftwareRenderer(renderer_.gl_renderer())) {
+    renderer_.settings().samples = 1;
+    renderer_.settings().fxaa = true;
   }
   state_.overlays = options_.overlays;
   state_.show_panels = options_.show_panels;
@@ -300,7 +312,7 @@ void Viewer::PrintBenchmark() const {
       "frames %zu at %dx%d, %d samples%s: median render %.2f ms, physics %.2f ms, "
       "frame (physics + render + panels + swap) %.2f ms, real-time factor %.2f\n",
       times_.frame.size(), options_.width, options_.height, renderer_.samples_used(),
-      options_.fxaa ? " + FXAA" : "", Median(times_.render), Median(times_.physics),
+      renderer_.settings().fxaa ? " + FXAA" : "", Median(times_.render), Median(times_.physics),
       Median(times_.frame), meter_.factor());
 }
 
