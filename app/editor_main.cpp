@@ -6,32 +6,17 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/render/image_size.h"
 #include "core/render/overlay_options.h"
 #include "core/render/scene_camera.h"
 #include "ui/viewer/viewer_app.h"
 
 namespace {
 
-// "WIDTHxHEIGHT" with 1..16384 pixels per side
-bool ParseSize(const std::string& text, int* width, int* height) {
-  const size_t x = text.find('x');
-  if (x == std::string::npos) return false;
-  try {
-    size_t used_w = 0, used_h = 0;
-    const std::string w = text.substr(0, x), h = text.substr(x + 1);
-    *width = std::stoi(w, &used_w);
-    *height = std::stoi(h, &used_h);
-    if (used_w != w.size() || used_h != h.size()) return false;
-  } catch (const std::exception&) {
-    return false;
-  }
-  return *width >= 1 && *height >= 1 && *width <= 16384 && *height <= 16384;
-}
-
 // checks --size, --camera and --overlay into `options`; false with a message naming the option
 bool CheckViewOptions(const std::string& size, const std::string& overlay,
                       lamina::ui::ViewerOptions* options, std::string* error) {
-  if (!ParseSize(size, &options->width, &options->height)) {
+  if (!lamina::core::ParseImageSize(size, &options->width, &options->height)) {
     *error = "--size expects WIDTHxHEIGHT with 1..16384 pixels per side (e.g. 1280x720), got '" +
              size + "'";
     return false;

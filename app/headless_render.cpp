@@ -6,6 +6,7 @@
 
 #include "core/io/world_file.h"
 #include "core/render/contact_markers.h"
+#include "core/render/image_size.h"
 #include "core/render/scene_camera.h"
 #include "core/render/scene_extract.h"
 #include "core/sim/simulator.h"
@@ -14,28 +15,11 @@
 
 namespace lamina::app {
 
-namespace {
-
-bool ParseSize(const std::string& text, int* width, int* height) {
-  const size_t x = text.find('x');
-  if (x == std::string::npos) return false;
-  try {
-    size_t used_w = 0, used_h = 0;
-    const std::string w = text.substr(0, x), h = text.substr(x + 1);
-    *width = std::stoi(w, &used_w);
-    *height = std::stoi(h, &used_h);
-    if (used_w != w.size() || used_h != h.size()) return false;
-  } catch (const std::exception&) {
-    return false;
-  }
-  return *width >= 1 && *height >= 1 && *width <= 16384 && *height <= 16384;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 bool ParseViewOptions(const std::string& size, const std::string& camera,
                       const std::string& overlay, ViewOptions* options, std::string* error) {
-  if (!ParseSize(size, &options->width, &options->height)) {
+  if (!lamina::core::ParseImageSize(size, &options->width, &options->height)) {
     *error = "--size expects WIDTHxHEIGHT with 1..16384 pixels per side (e.g. 1280x720), got '" +
              size + "'";
     return false;

@@ -130,10 +130,11 @@ Eigen::Vector3d OrbitCamera::Eye() const {
   return target + distance * offset;
 }
 
-Eigen::Matrix4d OrbitCamera::ViewMatrix() const {
-  const Eigen::Vector3d eye = Eye();
+Eigen::Matrix4d LookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target) {
   const Eigen::Vector3d forward = (target - eye).normalized();
-  const Eigen::Vector3d right = forward.cross(Eigen::Vector3d::UnitZ()).normalized();
+  const Eigen::Vector3d helper =
+      std::abs(forward.z()) < 0.99 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d right = forward.cross(helper).normalized();
   const Eigen::Vector3d up = right.cross(forward);
   Eigen::Matrix4d view = Eigen::Matrix4d::Identity();
   view.block<1, 3>(0, 0) = right.transpose();
@@ -143,6 +144,10 @@ Eigen::Matrix4d OrbitCamera::ViewMatrix() const {
   view(1, 3) = -up.dot(eye);
   view(2, 3) = forward.dot(eye);
   return view;
+}
+
+Eigen::Matrix4d OrbitCamera::ViewMatrix() const {
+  return LookAt(Eye(), target);
 }
 
 void ClipDistances(const OrbitCamera& camera, double scene_radius, double* near_plane,

@@ -11,6 +11,10 @@
 
 namespace lamina::core {
 
+/// A right-handed view matrix looking from `eye` at `target`, with world z up (x when looking
+/// straight up or down).
+Eigen::Matrix4d LookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target);
+
 struct OrbitCamera {
   Eigen::Vector3d target = Eigen::Vector3d::Zero();  ///< the point orbited, world m
   double yaw = 45.0;      ///< degrees about +z; 0 looks from +x towards the target

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/robot/kinematics.h"
+#include "core/sim/ode_conversions.h"
 
 namespace lamina::core {
 
@@ -18,16 +19,6 @@ constexpr double kFullTurn = 2 * kPi;
 constexpr double kStopWrapMargin = 0.1;
 // ODE rejects massless bodies: a massless moving link gets this mass (kg), as in Klamp't
 constexpr double kMinimumLinkMass = 1e-3;
-
-Vec3 ToVec3(const dReal* v) {
-  return {v[0], v[1], v[2]};
-}
-
-Mat3 ToMat3(const dReal* r) {
-  Mat3 m;
-  m << r[0], r[1], r[2], r[4], r[5], r[6], r[8], r[9], r[10];
-  return m;
-}
 
 void PlaceBody(dBodyID body, const Mat3& rotation, const Vec3& position) {
   const Eigen::Quaterniond q(rotation);

@@ -9,6 +9,7 @@
 #include "core/contact/surface_blend.h"
 #include "core/geometry/shrink.h"
 #include "core/sim/energy_guard.h"
+#include "core/sim/ode_conversions.h"
 #include "core/sim/ode_handle.h"
 #include "core/sim/ode_robot.h"
 #include "core/sim/simulator_records.h"
@@ -41,16 +42,6 @@ constexpr double kMergeFraction = 0.05;
 constexpr double kMinimumMergeRadius = 1e-4;
 // sliding slower than this keeps ODE's default friction directions (m/s)
 constexpr double kSlidingSpeedThreshold = 1e-6;
-
-Vec3 ToVec3(const dReal* v) {
-  return {v[0], v[1], v[2]};
-}
-
-Mat3 ToMat3(const dReal* r) {
-  Mat3 m;
-  m << r[0], r[1], r[2], r[4], r[5], r[6], r[8], r[9], r[10];
-  return m;
-}
 
 void SetBodyRotation(dBodyID body, const Mat3& rotation) {
   const Eigen::Quaterniond q(rotation);
@@ -441,10 +432,7 @@ void Simulator::CaptureBodyState(SimState* state, bool with_controllers) const {
   state->time = time_;
   state->objects.resize(object_ids_.size());
   for (size_t i = 0; i < object_ids_.size(); ++i) {
-    const dBodyID body = bodies_[object_ids_[i]].body;
-    const dReal* q = dBodyGetQuaternion(body);
-    state->objects[i] = {ToVec3(dBodyGetPosition(body)), Eigen::Quaterniond(q[0], q[1], q[2], q[3]),
-                         ToVec3(dBodyGetLinearVel(body)), ToVec3(dBodyGetAngularVel(body))};
+    state->objects[i] = ReadBodyState(bodies_[object_ids_[i]].body);
   }
   CaptureRobotState(state, with_controllers);
 }
@@ -459,15 +447,7 @@ void Simulator::RestoreState(const SimState& state) {
   contacts_current_ = false;
   time_ = state.time;
   for (size_t i = 0; i < object_ids_.size() && i < state.objects.size(); ++i) {
-    const BodyState& s = state.objects[i];
-    dBodyID body = bodies_[object_ids_[i]].body;
-    dBodySetPosition(body, s.com_position.x(), s.com_position.y(), s.com_position.z());
-    const dQuaternion q = {s.orientation.w(), s.orientation.x(), s.orientation.y(),
-                           s.orientation.z()};
-    dBodySetQuaternion(body, q);
-    dBodySetLinearVel(body, s.linear_velocity.x(), s.linear_velocity.y(), s.linear_velocity.z());
-    dBodySetAngularVel(body, s.angular_velocity.x(), s.angular_velocity.y(),
-                       s.angular_velocity.z());
+    WriteBodyState(bodies_[object_ids_[i]].body, state.objects[i]);
   }
   RestoreRobotState(state, false);
 }

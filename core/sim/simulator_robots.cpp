@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/geometry/shrink.h"
+#include "core/sim/ode_conversions.h"
 #include "core/sim/ode_robot.h"
 #include "core/sim/simulator.h"
 #include "core/sim/simulator_records.h"
@@ -14,10 +15,6 @@
 namespace lamina::core {
 
 namespace {
-
-Vec3 ToVec3(const dReal* v) {
-  return {v[0], v[1], v[2]};
-}
 
 void RequireRobot(int robot, int count) {
   if (robot < 0 || robot >= count) {
@@ -149,11 +146,7 @@ void Simulator::CaptureRobotState(SimState* state, bool with_controllers) const 
     robot_state.bodies.clear();
     for (int l = 0; l < robot.dof(); ++l) {
       if (!robot.link(l).owns_body) continue;
-      const dBodyID body = robot.link(l).body;
-      const dReal* q = dBodyGetQuaternion(body);
-      robot_state.bodies.push_back(
-          {ToVec3(dBodyGetPosition(body)), Eigen::Quaterniond(q[0], q[1], q[2], q[3]),
-           ToVec3(dBodyGetLinearVel(body)), ToVec3(dBodyGetAngularVel(body))});
+      robot_state.bodies.push_back(ReadBodyState(robot.link(l).body));
     }
     robot.CaptureJointState(&robot_state.joints);
     if (with_controllers) robot_state.controller = controllers_[r].GetState();
@@ -167,15 +160,7 @@ void Simulator::RestoreRobotState(const SimState& state, bool with_controllers) 
     size_t next = 0;
     for (int l = 0; l < robot.dof() && next < robot_state.bodies.size(); ++l) {
       if (!robot.link(l).owns_body) continue;
-      const BodyState& s = robot_state.bodies[next++];
-      const dBodyID body = robot.link(l).body;
-      dBodySetPosition(body, s.com_position.x(), s.com_position.y(), s.com_position.z());
-      const dQuaternion q = {s.orientation.w(), s.orientation.x(), s.orientation.y(),
-                             s.orientation.z()};
-      dBodySetQuaternion(body, q);
-      dBodySetLinearVel(body, s.linear_velocity.x(), s.linear_velocity.y(), s.linear_velocity.z());
-      dBodySetAngularVel(body, s.angular_velocity.x(), s.angular_velocity.y(),
-                         s.angular_velocity.z());
+      WriteBodyState(robot.link(l).body, robot_state.bodies[next++]);
     }
     robot.RestoreJointState(robot_state.joints);
     if (with_controllers) controllers_[r].SetState(robot_state.controller);

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/math_types.h"
+#include "core/render/camera.h"
 #include "ui/render/debug_shapes.h"
 #include "ui/render/frame_targets.h"
 #include "ui/render/gl_api.h"
@@ -35,22 +36,6 @@ double NiceStep(double value) {
     if (m * power <= value) return m * power;
   }
   return power;
-}
-
-Eigen::Matrix4f LookAt(const Eigen::Vector3f& eye, const Eigen::Vector3f& center) {
-  const Eigen::Vector3f forward = (center - eye).normalized();
-  const Eigen::Vector3f helper =
-      std::abs(forward.z()) < 0.99f ? Eigen::Vector3f::UnitZ() : Eigen::Vector3f::UnitX();
-  const Eigen::Vector3f right = forward.cross(helper).normalized();
-  const Eigen::Vector3f up = right.cross(forward);
-  Eigen::Matrix4f view = Eigen::Matrix4f::Identity();
-  view.block<1, 3>(0, 0) = right.transpose();
-  view.block<1, 3>(1, 0) = up.transpose();
-  view.block<1, 3>(2, 0) = -forward.transpose();
-  view(0, 3) = -right.dot(eye);
-  view(1, 3) = -up.dot(eye);
-  view(2, 3) = forward.dot(eye);
-  return view;
 }
 
 Eigen::Matrix4f Orthographic(float half_size, float near_plane, float far_plane) {
@@ -176,7 +161,9 @@ Renderer::FrameParameters Renderer::PrepareFrame(const core::RenderScene& scene,
   const float across = static_cast<float>(focused ? view_radius : half_diagonal);
   const float along = static_cast<float>((center - focus.cast<double>()).norm() + half_diagonal);
   frame.light_view_projection =
-      Orthographic(across, 0.0f, 2.0f * along) * LookAt(focus + along * kSunDirection, focus);
+      Orthographic(across, 0.0f, 2.0f * along) *
+      core::LookAt((focus + along * kSunDirection).cast<double>(), focus.cast<double>())
+          .cast<float>();
   frame.shadow_normal_offset = 1.5f * (2.0f * across / settings_.shadow_map_size);
   return frame;
 }

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+#include "core/sim/ode_conversions.h"
+
+namespace lamina::core {
+
+Vec3 ToVec3(const dReal* v) {
+  return {v[0], v[1], v[2]};
+}
+
+Mat3 ToMat3(const dReal* r) {
+  Mat3 m;
+  m << r[0], r[1], r[2], r[4], r[5], r[6], r[8], r[9], r[10];
+  return m;
+}
+
+BodyState ReadBodyState(dBodyID body) {
+  const dReal* q = dBodyGetQuaternion(body);
+  return {ToVec3(dBodyGetPosition(body)), Eigen::Quaterniond(q[0], q[1], q[2], q[3]),
+          ToVec3(dBodyGetLinearVel(body)), ToVec3(dBodyGetAngularVel(body))};
+}
+
+void WriteBodyState(dBodyID body, const BodyState& state) {
+  dBodySetPosition(body, state.com_position.x(), state.com_position.y(), state.com_position.z());
+  const dQuaternion q = {state.orientation.w(), state.orientation.x(), state.orientation.y(),
+                         state.orientation.z()};
+  dBodySetQuaternion(body, q);
+  dBodySetLinearVel(body, state.linear_velocity.x(), state.linear_velocity.y(),
+                    state.linear_velocity.z());
+  dBodySetAngularVel(body, state.angular_velocity.x(), state.angular_velocity.y(),
+                     state.angular_velocity.z());
+}
+
+}  // namespace lamina::core

@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+// Conversions between ODE's body data and core types, shared by the simulator's source files.
+#pragma once
+
+#include <ode/ode.h>
+
+#include "core/math_types.h"
+#include "core/sim/sim_state.h"
+
+namespace lamina::core {
+
+/// An ODE vector (dBodyGetPosition and the like) as a Vec3.
+Vec3 ToVec3(const dReal* v);
+/// An ODE 3x4 rotation (dBodyGetRotation) as a Mat3.
+Mat3 ToMat3(const dReal* r);
+/// The body's state as ODE holds it (at its centre of mass).
+BodyState ReadBodyState(dBodyID body);
+/// Sets position, orientation and velocities exactly (bit for bit what ReadBodyState gave).
+void WriteBodyState(dBodyID body, const BodyState& state);
+
+}  // namespace lamina::core
