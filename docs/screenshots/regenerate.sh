@@ -2,6 +2,7 @@
 # SPDX-License-Identifier: MIT
 # Regenerates the viewer screenshots in this directory with the real `lamina` under Xvfb.
 # usage: docs/screenshots/regenerate.sh BUILD_DIR   (then look at every PNG before committing)
+# 4x MSAA as on a GPU (the window picks FXAA by itself on software GL)
 set -eu
 build=${1:?usage: $0 BUILD_DIR}
 here=$(cd "$(dirname "$0")" && pwd)
@@ -11,7 +12,7 @@ shot() {  # shot NAME WORLD OPTIONS...
   name=$1 world=$2
   shift 2
   xvfb-run -a -s "-screen 0 1280x720x24" "$build/bin/lamina" "$world" --frames 6 --paused \
-    --screenshot "$here/$name.png" "$@" 2>/dev/null
+    --msaa 4 --screenshot "$here/$name.png" "$@" 2>/dev/null
 }
 shot viewer "$worlds/athlete_fractal_1.xml" --size 1280x720 --time 1 \
   --camera "target=0,0,0.6;yaw=35;pitch=22;dist=7"

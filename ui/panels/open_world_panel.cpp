@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // File > Open: a path field (Enter or Open loads it) and the world files found under worlds/
 // (a click fills the field, a double click opens). No native dialog is needed.
+#include <algorithm>
 #include <array>
 #include <cstring>
 
@@ -42,9 +43,15 @@ void DrawWorldList(ViewerState* state) {
 
 }  // namespace
 
+float OpenWorldPanelTop(float display_height) {
+  // above the status line, leaving room for the panel's list when it is opened
+  return std::max(240.0f, display_height - 300.0f);
+}
+
 void DrawOpenWorldPanel(ViewerState* state) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x - 390, 240), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos(ImVec2(display.x - 390, OpenWorldPanelTop(display.y)),
+                          ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(380, 260), ImGuiCond_FirstUseEver);
   if (state->expand_open_panel) {
     ImGui::SetNextWindowCollapsed(false, ImGuiCond_Always);

@@ -11,6 +11,10 @@
 
 namespace lamina::ui {
 
+/// Top edge (pixels) of the Open world panel at the right, under the World panel: the World
+/// panel grows down to it and no further, so the two never overlap.
+float OpenWorldPanelTop(float display_height);
+
 /// Play/pause, step, reset, speed, solver; time, real-time factor, status, rollbacks.
 void DrawSimulationPanel(const WorldSession& session, ViewerState* state);
 /// One checkbox per overlay and the overlay scales.

@@ -51,7 +51,8 @@ void DrawSelection(const core::WorldDesc& world, ViewerState* state) {
 void DrawWorldPanel(const WorldSession& session, ViewerState* state) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x - 390, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSizeConstraints(ImVec2(380, 0), ImVec2(380, display.y * 0.6f));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(380, 0),
+                                      ImVec2(380, OpenWorldPanelTop(display.y) - 20.0f));
   if (ImGui::Begin("World", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 360);
     const core::WorldDesc& world = session.shown_world();
