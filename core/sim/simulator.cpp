@@ -1035,13 +1035,11 @@ void Simulator::EnableContactFeedback(int a, int b) {
 }
 
 void Simulator::EnableContactFeedbackAll() {
-  for (int i = 0; i < object_count(); ++i) {
-    for (int t = 0; t < static_cast<int>(world_.terrains.size()); ++t) {
-      EnableContactFeedback(object_ids_[i], world_.TerrainId(t));
+  for (int a = 0; a < body_count(); ++a) {
+    if (!bodies_[a].geometry) continue;
+    for (int b = a + 1; b < body_count(); ++b) {
+      if (bodies_[b].geometry && MayCollide(bodies_[a], bodies_[b])) EnableContactFeedback(a, b);
     }
-    if (!world_.settings.rigid_object_collisions) continue;
-    for (int j = i + 1; j < object_count(); ++j)
-      EnableContactFeedback(object_ids_[i], object_ids_[j]);
   }
 }
 

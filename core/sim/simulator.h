@@ -189,7 +189,10 @@ class Simulator {
 
   // contact feedback, recorded only for pairs that asked for it (see contact_feedback.h for the
   // sign convention). b = -1 means "any body" in the queries.
-  /// Records every pair that can touch: object–terrain, object–object (when rigid objects collide).
+  /// Records every pair that can touch now: object–terrain, object–object (when rigid objects
+  /// collide), robot links with terrains, objects and other robots, and allowed self-collision
+  /// pairs (when robot self-collisions are on). Pairs that become collidable later (a body
+  /// enabled or made dynamic) need another call.
   void EnableContactFeedbackAll();
   void EnableContactFeedback(int a, int b);
   /// Contacts acted between a and b in the last sub-step.

@@ -96,6 +96,7 @@ TEST(RobotWorldsTest, ArmsHoldTheirPoseUnderGravity) {
 TEST(RobotWorldsTest, FloatingCubeFallsAndRests) {
   const core::WorldDesc world = RobotOnly("klampt/robots/free_cube.rob", true);
   core::Simulator simulator(world);
+  simulator.EnableContactFeedbackAll();
   // its own servo (kD 3 on a 5 cm, 50 g cube: kD h / I = 150 at 1 ms) is far beyond an explicit
   // PD's stability (it chatters at its 0.2 N·m limit in Klamp't); the implicit servo holds it
   const double z0 = simulator.GetRobotConfig(0)[2];
@@ -114,6 +115,15 @@ TEST(RobotWorldsTest, FloatingCubeFallsAndRests) {
   // vibration of under 0.2 mrad amplitude between the contacts and the stiff servo remains)
   EXPECT_LT((q - settled).cwiseAbs().maxCoeff(), 1e-3);
   EXPECT_NEAR(q[2], 0.0025, 1e-3);  // the cube's 2.5 mm layer on the plane
+  // contact feedback covers robot links: the plane carries the robot's weight (time average
+  // over the last call, which evens out the remaining vibration)
+  Vec3 support = Vec3::Zero();
+  for (int link = 0; link < world.robots[0].dof(); ++link) {
+    support += simulator.MeanContactForce(world.RobotLinkId(0, link), world.TerrainId(0));
+  }
+  const double weight = world.robots[0].TotalMass() * 9.8;
+  EXPECT_NEAR(support.z(), weight, 0.01 * weight);
+  EXPECT_NEAR(support.head<2>().norm(), 0.0, 0.01 * weight);
 }
 
 double LinkHeight(core::Simulator& simulator, const core::WorldDesc& world, int link) {
