@@ -8,32 +8,40 @@
 
 namespace lamina::core {
 
+bool RobotController::ServoDriver(int d) const {
+  const DriverDesc& driver = drivers_[d];
+  const ActuatorState& state = actuators_[d];
+  // ODE bounds a motor by ±fmax: limits that do not straddle zero stay explicit
+  return UsableDriver(d) && driver.type == DriverType::kNormal &&
+         state.mode == ActuatorMode::kPid && (state.kp > 0.0 || state.kd > 0.0) &&
+         driver.torque_min <= 0.0 && driver.torque_max >= 0.0;
+}
+
 void RobotController::ComputeImplicitServo(const VecX& q, const VecX& dq, double h,
                                            VecX* link_forces,
                                            std::vector<ServoMotorCommand>* motors) const {
-  ComputeLinkForces(q, dq, link_forces);
   motors->clear();
-  if (q.size() != dof() || dq.size() != dof() || !(h > 0.0)) return;
+  if (!(h > 0.0)) {
+    ComputeLinkForces(q, dq, link_forces);
+    return;
+  }
+  // the servo drivers' whole law goes to their motors, so that the bound clamps the sum as the
+  // explicit law does
+  AddDriverForces(q, dq, true, link_forces);
+  if (q.size() != dof() || dq.size() != dof()) return;
   for (int d = 0; d < driver_count(); ++d) {
+    if (!ServoDriver(d)) continue;
     const DriverDesc& driver = drivers_[d];
     const ActuatorState& state = actuators_[d];
-    if (!UsableDriver(d) || driver.type != DriverType::kNormal) continue;
-    if (state.mode != ActuatorMode::kPid || (state.kp <= 0.0 && state.kd <= 0.0)) continue;
-    // ODE bounds a motor by ±fmax: limits that do not straddle zero stay explicit
-    if (!(driver.torque_min <= 0.0 && driver.torque_max >= 0.0)) continue;
-    const int link = driver.links[0];
-    const double value = DriverValue(d, q);
-    // the whole law goes to the motor, so that its bound clamps the sum as the explicit law does
-    (*link_forces)[link] -= ActuatorEffort(state, driver, value, DriverVelocity(d, dq));
     // with unlimited torque, viscous joint friction is one more damper of the same row (solved
     // implicitly too); a limited actuator must not clamp the friction, which stays separate
     const bool unlimited = std::isinf(driver.torque_max) && std::isinf(driver.torque_min);
     const double viscous = unlimited ? std::max(0.0, driver.viscous_friction) : 0.0;
     const double stiffness = state.kp * h + state.kd + viscous;
     ServoMotorCommand motor;
-    motor.link = link;
+    motor.link = driver.links[0];
     motor.includes_viscous = unlimited;
-    motor.velocity = (state.kp * PositionError(state, value) + state.kd * state.dq_des +
+    motor.velocity = (state.kp * PositionError(state, DriverValue(d, q)) + state.kd * state.dq_des +
                       state.ki * state.i_term + state.torque) /
                      stiffness;
     motor.cfm = 1.0 / stiffness;

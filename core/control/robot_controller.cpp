@@ -75,16 +75,6 @@ double RampAcceleration(const RobotDesc& robot, const std::vector<Pose>& frames,
   return std::abs(link.torque_max) / inertia;
 }
 
-VecX InitialConfig(const RobotDesc& robot) {
-  if (robot.config.size() == robot.dof() && AllFinite(robot.config)) return robot.config;
-  return VecX::Zero(robot.dof());
-}
-
-VecX InitialVelocity(const RobotDesc& robot) {
-  if (robot.velocity.size() == robot.dof() && AllFinite(robot.velocity)) return robot.velocity;
-  return VecX::Zero(robot.dof());
-}
-
 VecX ClampIntoLimits(const VecX& q, const JointLimits& limits) {
   return q.cwiseMax(limits.q_min).cwiseMin(limits.q_max);
 }
@@ -94,7 +84,7 @@ VecX ClampIntoLimits(const VecX& q, const JointLimits& limits) {
 JointLimits LinkRampLimits(const RobotDesc& robot) {
   const int n = robot.dof();
   JointLimits limits = JointLimits::Unbounded(n);
-  const std::vector<Pose> frames = LinkTransforms(robot, InitialConfig(robot));
+  const std::vector<Pose> frames = LinkTransforms(robot, robot.InitialConfig());
   for (int i = 0; i < n; ++i) {
     const LinkDesc& link = robot.links[i];
     limits.q_min[i] = std::min(link.q_min, link.q_max);
@@ -125,8 +115,8 @@ RobotController::RobotController(const RobotDesc& robot)
       drivers_(robot.drivers),
       limits_(LinkRampLimits(robot)),
       queue_(limits_),
-      sensed_q_(InitialConfig(robot)),
-      sensed_dq_(InitialVelocity(robot)) {
+      sensed_q_(robot.InitialConfig()),
+      sensed_dq_(robot.InitialVelocity()) {
   for (LinkDesc& link : robot_.links) link.geometry.clear();
   robot_.drivers.clear();  // drivers_ is the live copy
   for (const JointDesc& joint : robot.joints) floating_base_ |= IsFloatingJoint(joint.type);
@@ -247,18 +237,24 @@ VecX RobotController::DriverEfforts(const VecX& q, const VecX& dq) const {
 }
 
 void RobotController::ComputeLinkForces(const VecX& q, const VecX& dq, VecX* link_forces) const {
+  AddDriverForces(q, dq, false, link_forces);
+}
+
+void RobotController::AddDriverForces(const VecX& q, const VecX& dq, bool skip_servos,
+                                      VecX* link_forces) const {
   link_forces->setZero(dof());
   if (q.size() != dof() || dq.size() != dof()) return;
-  const VecX efforts = DriverEfforts(q, dq);
   for (int d = 0; d < driver_count(); ++d) {
-    if (!UsableDriver(d)) continue;
+    if (!UsableDriver(d) || (skip_servos && ServoDriver(d))) continue;
     const DriverDesc& driver = drivers_[d];
+    const double effort =
+        ActuatorEffort(actuators_[d], driver, DriverValue(d, q), DriverVelocity(d, dq));
     if (driver.type != DriverType::kAffine) {
-      (*link_forces)[driver.links[0]] += efforts[d];
+      (*link_forces)[driver.links[0]] += effort;
       continue;
     }
     for (size_t j = 0; j < driver.links.size() && j < driver.affine_scale.size(); ++j) {
-      (*link_forces)[driver.links[j]] += driver.affine_scale[j] * efforts[d];
+      (*link_forces)[driver.links[j]] += driver.affine_scale[j] * effort;
     }
     if (actuators_[d].mode == ActuatorMode::kPid) AddAffineCorrection(d, q, dq, link_forces);
   }

@@ -201,6 +201,10 @@ class RobotController {
   template <typename Command>
   bool QueueCommand(const char* command, Command&& run);
   void AddAffineCorrection(int d, const VecX& q, const VecX& dq, VecX* link_forces) const;
+  // link forces of the drivers' explicit law; with `skip_servos` without the ServoDriver ones
+  void AddDriverForces(const VecX& q, const VecX& dq, bool skip_servos, VecX* link_forces) const;
+  // a normal PID driver whose law ComputeImplicitServo turns into a joint motor
+  bool ServoDriver(int d) const;
   void SetTargetsFromQueue();
   // `q` with the links no driver moves (a floating base) held at the queue's end value, or with
   // `velocity`, at rest: ramps cannot plan motion the robot cannot make

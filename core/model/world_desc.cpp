@@ -17,6 +17,16 @@ double RobotDesc::TotalMass() const {
   return total;
 }
 
+VecX RobotDesc::InitialConfig() const {
+  if (config.size() == dof() && config.allFinite()) return config;
+  return VecX::Zero(dof());
+}
+
+VecX RobotDesc::InitialVelocity() const {
+  if (velocity.size() == dof() && velocity.allFinite()) return velocity;
+  return VecX::Zero(dof());
+}
+
 std::vector<std::pair<int, int>> RobotDesc::SelfCollisionPairs() const {
   const auto ordered = [](std::pair<int, int> p) {
     return p.first < p.second ? p : std::make_pair(p.second, p.first);

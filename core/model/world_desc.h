@@ -149,6 +149,9 @@ struct RobotDesc {
   std::vector<std::pair<std::string, DisplayAttributes>> link_display;
 
   int dof() const { return static_cast<int>(links.size()); }
+  /// `config` / `velocity` when they have one finite entry per link, else zeros.
+  VecX InitialConfig() const;
+  VecX InitialVelocity() const;
   /// Sum of link masses, kg.
   double TotalMass() const;
   /// Link pairs (i < j) that may collide with each other: all pairs of links with geometry

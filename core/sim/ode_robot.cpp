@@ -68,7 +68,7 @@ OdeRobot::OdeRobot(dWorldID world, const RobotDesc& robot, Diagnostics& diagnost
       links_(robot.links.size()),
       joint_types_(LinkJointTypes(robot)),
       wide_(robot.links.size(), false),
-      model_config_(robot.config) {
+      model_config_(robot.InitialConfig()) {
   joint_state_.turns.assign(robot.links.size(), 0);
   joint_state_.last_angle.assign(robot.links.size(), 0.0);
   for (const JointDesc& joint : robot.joints) {
@@ -96,7 +96,7 @@ OdeRobot::OdeRobot(dWorldID world, const RobotDesc& robot, Diagnostics& diagnost
   // hinges read ODE angles in (-π, π]: a joint whose range is narrower than a turn is built at
   // the middle of its range so that its stops never sit at the wrap (Klamp't drops stops that
   // touch ±π); wider ones are built at their configuration and count turns
-  VecX build = robot.config;
+  VecX build = model_config_;
   for (int i = 0; i < dof(); ++i) {
     const LinkDesc& link = robot.links[i];
     if (link.axis_type != LinkJointAxis::kRevolute) continue;
@@ -109,9 +109,8 @@ OdeRobot::OdeRobot(dWorldID world, const RobotDesc& robot, Diagnostics& diagnost
   }
   BuildBodies(world, build, diagnostics);
   BuildJoints(world, build);
-  SetConfig(robot.config);
-  SetVelocity(robot.velocity.size() == robot.config.size() ? robot.velocity
-                                                           : VecX::Zero(robot.dof()));
+  SetConfig(robot.InitialConfig());
+  SetVelocity(robot.InitialVelocity());
 }
 
 OdeRobot::~OdeRobot() {
@@ -122,11 +121,6 @@ OdeRobot::~OdeRobot() {
   for (Link& link : links_) {
     if (link.owns_body) dBodyDestroy(link.body);
   }
-}
-
-bool OdeRobot::is_moving_joint(int i) const {
-  if (joint_types_[i] == JointType::kFloating) return true;
-  return links_[i].joint != nullptr;
 }
 
 // Every link's body: a floating base and each moving link get their own; welded links join
@@ -301,14 +295,14 @@ void OdeRobot::RestoreJointState(const RobotJointState& state) {
   if (state.turns.size() == joint_state_.turns.size()) joint_state_ = state;
 }
 
-Pose OdeRobot::FloatingBaseFrame(const VecX& q) const {
+// the floating base link's frame in the frame its first virtual link hangs from
+Pose OdeRobot::FloatingBaseLocalFrame() const {
+  const Link& base = links_[floating_link_];
+  const Mat3 R = ToMat3(dBodyGetRotation(base.body));
   Pose frame = Pose::Identity();
-  const LinkDesc& first = robot_.links[floating_first_];
-  if (first.parent >= 0) frame = LinkTransforms(robot_, q)[first.parent];
-  for (int i = floating_first_; i <= floating_link_; ++i) {
-    frame = frame * robot_.links[i].parent_transform * LinkJointMotion(robot_.links[i], q[i]);
-  }
-  return frame;
+  frame.linear() = R;
+  frame.translation() = ToVec3(dBodyGetPosition(base.body)) - R * base.com;
+  return robot_.links[floating_first_].parent_transform.inverse() * frame;
 }
 
 void OdeRobot::GetConfig(VecX* q) const {
@@ -323,16 +317,10 @@ void OdeRobot::GetConfig(VecX* q) const {
     }
   }
   if (floating_link_ < 0) return;
-  const Link& base = links_[floating_link_];
-  const Mat3 R = ToMat3(dBodyGetRotation(base.body));
-  Pose frame = Pose::Identity();
-  frame.linear() = R;
-  frame.translation() = ToVec3(dBodyGetPosition(base.body)) - R * base.com;
-  const Pose parent = robot_.links[floating_first_].parent_transform;
-  const Pose local = parent.inverse() * frame;
-  const Vec3 rpy = RollPitchYawFromRotation(local.linear());
+  const Pose local = FloatingBaseLocalFrame();
   q->segment<3>(floating_first_) = local.translation();
   if (!floating_rotates()) return;
+  const Vec3 rpy = RollPitchYawFromRotation(local.linear());
   (*q)[floating_first_ + 3] = rpy.z();
   (*q)[floating_first_ + 4] = rpy.y();
   (*q)[floating_first_ + 5] = rpy.x();
@@ -356,10 +344,9 @@ void OdeRobot::GetVelocity(VecX* dq) const {
   dq->segment<3>(floating_first_) = P.transpose() * v_origin;
   if (!floating_rotates()) return;
   // ω = yaw' z + pitch' Rz(yaw) y + roll' Rz(yaw) Ry(pitch) x, in the base's parent axes
-  VecX q;
-  GetConfig(&q);
-  const Mat3 Rz = Eigen::AngleAxisd(q[floating_first_ + 3], Vec3::UnitZ()).toRotationMatrix();
-  const Mat3 Ry = Eigen::AngleAxisd(q[floating_first_ + 4], Vec3::UnitY()).toRotationMatrix();
+  const Vec3 rpy = RollPitchYawFromRotation(FloatingBaseLocalFrame().linear());
+  const Mat3 Rz = Eigen::AngleAxisd(rpy.z(), Vec3::UnitZ()).toRotationMatrix();
+  const Mat3 Ry = Eigen::AngleAxisd(rpy.y(), Vec3::UnitY()).toRotationMatrix();
   Mat3 E;
   E.col(0) = Vec3::UnitZ();
   E.col(1) = Rz * Vec3::UnitY();
@@ -428,6 +415,8 @@ void OdeRobot::ApplyLinkForces(const VecX& forces) {
     }
   }
   if (floating_link_ < 0) return;
+  // the virtual axes need the robot's kinematics: only when a driver pushes along them
+  if (forces.segment(floating_first_, floating_link_ - floating_first_ + 1).isZero(0.0)) return;
   VecX q;
   GetConfig(&q);
   const std::vector<Pose> frames = LinkTransforms(robot_, q);

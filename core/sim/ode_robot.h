@@ -46,13 +46,8 @@ class OdeRobot {
 
   int dof() const { return static_cast<int>(links_.size()); }
   const Link& link(int i) const { return links_[i]; }
-  /// Index of the floating base's body link, or -1.
-  int floating_link() const { return floating_link_; }
   /// A 6-link floating base rotates; a 3-link one (x, y, z) only translates.
   bool floating_rotates() const { return floating_link_ - floating_first_ == 5; }
-  /// True for links whose value is a joint coordinate of the simulation (hinge, slider or
-  /// floating base); welded links keep their model value.
-  bool is_moving_joint(int i) const;
 
   /// Joint values (rad or m) and rates of every link; revolute joints count whole turns.
   void GetConfig(VecX* q) const;
@@ -83,7 +78,7 @@ class OdeRobot {
   void SetStops(int i);
   void SetJointMotor(int i, double fmax, double cfm);
   double HingeAngle(int i) const;
-  Pose FloatingBaseFrame(const VecX& q) const;
+  Pose FloatingBaseLocalFrame() const;
 
   const RobotDesc& robot_;
   std::vector<Link> links_;

@@ -199,9 +199,8 @@ void Simulator::ApplyInitialState() {
   }
   for (int r = 0; r < robot_count(); ++r) {
     const RobotDesc& robot = world_.robots[r];
-    SetRobotConfig(r, robot.config);
-    SetRobotVelocity(
-        r, robot.velocity.size() == robot.config.size() ? robot.velocity : VecX::Zero(robot.dof()));
+    SetRobotConfig(r, robot.InitialConfig());
+    SetRobotVelocity(r, robot.InitialVelocity());
     controllers_[r] = RobotController(robot);
   }
   ForgetEnergies();
@@ -439,7 +438,7 @@ void Simulator::CaptureBodyState(SimState* state, bool with_controllers) const {
 
 void Simulator::SetState(const SimState& state) {
   RestoreState(state);
-  RestoreRobotState(state, true);
+  RestoreControllers(state);
   ForgetEnergies();
 }
 
@@ -449,7 +448,7 @@ void Simulator::RestoreState(const SimState& state) {
   for (size_t i = 0; i < object_ids_.size() && i < state.objects.size(); ++i) {
     WriteBodyState(bodies_[object_ids_[i]].body, state.objects[i]);
   }
-  RestoreRobotState(state, false);
+  RestoreRobotState(state);
 }
 
 // ---- stepping ---------------------------------------------------------------------------

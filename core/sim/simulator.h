@@ -224,7 +224,8 @@ class Simulator {
   void AcceptRobotStep(double step);
   void CaptureBodyState(SimState* state, bool with_controllers) const;
   void CaptureRobotState(SimState* state, bool with_controllers) const;
-  void RestoreRobotState(const SimState& state, bool with_controllers);
+  void RestoreRobotState(const SimState& state);
+  void RestoreControllers(const SimState& state);
   void UpdateWorldRobots(WorldDesc* world) const;
   std::shared_ptr<const CollisionGeometry> LinkCollisionGeometry(int robot, int link);
   /// SetState without forgetting the energies of the instability check (rollbacks).

@@ -153,7 +153,7 @@ void Simulator::CaptureRobotState(SimState* state, bool with_controllers) const 
   }
 }
 
-void Simulator::RestoreRobotState(const SimState& state, bool with_controllers) {
+void Simulator::RestoreRobotState(const SimState& state) {
   for (int r = 0; r < robot_count() && r < static_cast<int>(state.robots.size()); ++r) {
     const RobotSimState& robot_state = state.robots[r];
     OdeRobot& robot = *robots_[r];
@@ -163,7 +163,12 @@ void Simulator::RestoreRobotState(const SimState& state, bool with_controllers) 
       WriteBodyState(robot.link(l).body, robot_state.bodies[next++]);
     }
     robot.RestoreJointState(robot_state.joints);
-    if (with_controllers) controllers_[r].SetState(robot_state.controller);
+  }
+}
+
+void Simulator::RestoreControllers(const SimState& state) {
+  for (int r = 0; r < robot_count() && r < static_cast<int>(state.robots.size()); ++r) {
+    controllers_[r].SetState(state.robots[r].controller);
   }
 }
 

@@ -149,9 +149,10 @@ TEST(KlamptWorldsTest, SoftBallsSettleAtTheirPredictedPenetration) {
       EXPECT_LT((position - ball.pose.translation()).head<2>().norm(), 5e-3);
     } else {
       // off its vertex the rigid ball rolls like the 960-facet polyhedron it is: no energy
-      // gained (1 mJ allows for the hard contacts' layer correction), never into its core
+      // gained (1 mJ allows for the hard contacts' layer correction); its hard contacts keep
+      // it on the outside of its 4 cm layer (measured within 1 mm), far from its core
       EXPECT_LT(MechanicalEnergy(simulator, ball, i), rigid_energy + 1e-3);
-      EXPECT_LT(penetration, 0.5 * ball.sim.padding);
+      EXPECT_LT(penetration, 0.25 * ball.sim.padding);
     }
   }
 }
