@@ -6,6 +6,7 @@
 
 #include "core/control/robot_controller.h"
 #include "core/math_types.h"
+#include "core/sim/friction_anchor.h"
 #include "core/sim/robot_joint_state.h"
 
 namespace lamina::core {
@@ -39,6 +40,7 @@ struct SimState {
   double time = 0.0;               ///< s
   std::vector<BodyState> objects;  ///< one per rigid object
   std::vector<RobotSimState> robots;
+  std::vector<FrictionAnchor> anchors;  ///< pairs that stick, sorted by (a, b)
   bool operator==(const SimState&) const = default;
 };
 

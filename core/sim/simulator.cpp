@@ -203,6 +203,7 @@ void Simulator::ApplyInitialState() {
     SetRobotVelocity(r, robot.InitialVelocity());
     controllers_[r] = RobotController(robot);
   }
+  anchors_.clear();
   ForgetEnergies();
 }
 
@@ -299,6 +300,7 @@ Pose Simulator::GetObjectPose(int object) const {
 void Simulator::SetObjectPose(int object, const Pose& pose) {
   SetBodyPose(bodies_[object_ids_[object]], pose);
   bodies_[object_ids_[object]].energy = -1.0;
+  ForgetAnchors(&anchors_, object_ids_[object]);
 }
 
 Twist Simulator::GetObjectVelocity(int object) const {
@@ -357,6 +359,7 @@ void Simulator::SetBodyPose(int id, const Pose& pose) {
   if (body == nullptr) return;
   SetBodyPose(*body, pose);
   body->energy = -1.0;
+  ForgetAnchors(&anchors_, id);
 }
 
 Twist Simulator::BodyVelocity(int id) const {
@@ -434,6 +437,7 @@ void Simulator::CaptureBodyState(SimState* state, bool with_controllers) const {
     state->objects[i] = ReadBodyState(bodies_[object_ids_[i]].body);
   }
   CaptureRobotState(state, with_controllers);
+  state->anchors = anchors_;
 }
 
 void Simulator::SetState(const SimState& state) {
@@ -449,6 +453,7 @@ void Simulator::RestoreState(const SimState& state) {
     WriteBodyState(bodies_[object_ids_[i]].body, state.objects[i]);
   }
   RestoreRobotState(state);
+  anchors_ = state.anchors;
 }
 
 // ---- stepping ---------------------------------------------------------------------------
@@ -615,6 +620,7 @@ double Simulator::ContactEnergyAllowance(int id, double step) const {
     if (pair.a != id && pair.b != id) continue;
     const double correction_speed = pair.max_depth / step;
     allowance += 0.5 * body.mass * correction_speed * correction_speed;
+    allowance += 0.5 * body.mass * pair.anchor_speed * pair.anchor_speed;
     const double k =
         BlendSurfaces(sim_params(pair.a).surface, sim_params(pair.b).surface).stiffness;
     if (std::isfinite(k)) allowance += 0.5 * k * pair.max_depth * pair.max_depth;
@@ -721,7 +727,12 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     // sized before any joint points into it
     joint_feedback_.resize(feedback_slots);
     next_feedback_slot_ = 0;
-    for (const ContactPair& pair : pairs_) AddContactJoints(pair, step);
+    UpdateFrictionAnchors(step);
+    const Vec3* anchor_velocities = anchor_velocities_.data();
+    for (const ContactPair& pair : pairs_) {
+      AddContactJoints(pair, anchor_velocities, step);
+      anchor_velocities += pair.contacts.size();
+    }
     ApplyAccumulatedForces();
     PrepareRobotsForStep(step);
     if (solver_.type == SolverType::kQuickStep) {
@@ -870,7 +881,61 @@ double Simulator::HardContactErp(double depth, double step) const {
   return std::min(erp, kMaxCorrectionSpeed * step / depth);
 }
 
-void Simulator::AddContactJoints(const ContactPair& pair, double step) {
+BodyFrame Simulator::BodyFrameOf(int id) const {
+  const dBodyID body = bodies_[id].body;
+  if (body == nullptr) return BodyFrame{};
+  return BodyFrame{ToMat3(dBodyGetRotation(body)), ToVec3(dBodyGetPosition(body))};
+}
+
+// the anchors of the pairs in contact now: a pair keeps its anchor while it sticks and gets a
+// new one where it is when it starts touching, slides or rolls (friction_anchor.h); every
+// contact gets the tangential velocity that takes back part of its drift
+void Simulator::UpdateFrictionAnchors(double step) {
+  next_anchors_.clear();
+  anchor_velocities_.clear();
+  for (ContactPair& pair : pairs_) {
+    pair.anchor_speed = 0.0;
+    if (pair.contacts.empty()) continue;
+    const BodyFrame frame_a = BodyFrameOf(pair.a);
+    const BodyFrame frame_b = BodyFrameOf(pair.b);
+    const size_t first = anchor_velocities_.size();
+    const FrictionAnchor* anchor = FindAnchor(anchors_, pair.a, pair.b);
+    bool sticks =
+        anchor != nullptr && AnchorRotation(*anchor, frame_a, frame_b) <= kAnchorMaxRotation;
+    for (const Contact& contact : pair.contacts) {
+      const Vec3 drift =
+          sticks ? AnchorDrift(*anchor, frame_a, frame_b, contact.position, contact.normal)
+                 : Vec3::Zero();
+      sticks = sticks && drift.norm() <= kAnchorMaxSlip;
+      anchor_velocities_.push_back(AnchorCorrectionVelocity(drift, step));
+    }
+    if (sticks) {
+      next_anchors_.push_back(*anchor);
+      for (size_t i = first; i < anchor_velocities_.size(); ++i) {
+        pair.anchor_speed = std::max(pair.anchor_speed, anchor_velocities_[i].norm());
+      }
+    } else {
+      next_anchors_.push_back(MakeAnchor(pair.a, pair.b, frame_a, frame_b));
+      std::fill(anchor_velocities_.begin() + first, anchor_velocities_.end(), Vec3::Zero());
+    }
+  }
+  // a pair that has no contact in this step but is still close keeps its anchor: contacts at
+  // the edge of the layer come and go while a body stands
+  const size_t in_contact = next_anchors_.size();
+  SortAnchors(&next_anchors_);
+  for (const FrictionAnchor& anchor : anchors_) {
+    const std::pair<int, int> ids(std::min(anchor.a, anchor.b), std::max(anchor.a, anchor.b));
+    if (std::binary_search(candidates_.begin(), candidates_.end(), ids) &&
+        FindAnchor(next_anchors_, anchor.a, anchor.b) == nullptr) {
+      next_anchors_.push_back(anchor);
+    }
+  }
+  if (next_anchors_.size() > in_contact) SortAnchors(&next_anchors_);
+  std::swap(anchors_, next_anchors_);
+}
+
+void Simulator::AddContactJoints(const ContactPair& pair, const Vec3* anchor_velocities,
+                                 double step) {
   if (pair.contacts.empty()) return;
   dBodyID body_a = bodies_[pair.a].body;
   dBodyID body_b = bodies_[pair.b].body;
@@ -892,6 +957,7 @@ void Simulator::AddContactJoints(const ContactPair& pair, double step) {
   if (pair_soft.soft && !std::isfinite(pair_soft.cfm)) return;
   const ContactFeedbackRecord* record = feedback_.empty() ? nullptr : FindFeedback(pair.a, pair.b);
   for (const Contact& contact : pair.contacts) {
+    const Vec3& anchor_velocity = *anchor_velocities++;
     // force share = k·d_max·share = k_i·d_i
     const double share = PressureWeight(contact, floor) / weight_sum;
     const SoftContactParams soft =
@@ -929,14 +995,28 @@ void Simulator::AddContactJoints(const ContactPair& pair, double step) {
       joint.surface.soft_erp = bouncing ? 0.0 : HardContactErp(contact.depth, step);
       joint.surface.soft_cfm = std::min(world_.settings.cfm, kHardContactCfm);
     }
-    // friction along the sliding direction makes ODE's per-axis friction isotropic
-    const Vec3 sliding = relative - normal_speed * contact.normal;
+    // the first friction direction opposes what friction has to take away, the sliding
+    // velocity less the anchor's correction: ODE's per-axis friction becomes isotropic
+    const Vec3 sliding = relative - normal_speed * contact.normal - anchor_velocity;
+    Vec3 t1 = Vec3::Zero(), t2 = Vec3::Zero();
     if (sliding.norm() > kSlidingSpeedThreshold) {
-      const Vec3 direction = sliding.normalized();
+      t1 = sliding.normalized();
+      t2 = contact.normal.cross(t1);  // as ODE makes it
       joint.surface.mode |= dContactFDir1;
-      joint.fdir1[0] = direction.x();
-      joint.fdir1[1] = direction.y();
-      joint.fdir1[2] = direction.z();
+      joint.fdir1[0] = t1.x();
+      joint.fdir1[1] = t1.y();
+      joint.fdir1[2] = t1.z();
+    } else if (!anchor_velocity.isZero(0.0)) {
+      dVector3 n = {contact.normal.x(), contact.normal.y(), contact.normal.z()}, p1, p2;
+      dPlaneSpace(n, p1, p2);  // ODE's own friction axes
+      t1 = ToVec3(p1);
+      t2 = ToVec3(p2);
+    }
+    if (!anchor_velocity.isZero(0.0)) {
+      // ODE's friction rows ask (v_a - v_b)·t_i = motion_i
+      joint.surface.mode |= dContactMotion1 | dContactMotion2;
+      joint.surface.motion1 = anchor_velocity.dot(t1);
+      joint.surface.motion2 = anchor_velocity.dot(t2);
     }
     joint.geom.pos[0] = p.x();
     joint.geom.pos[1] = p.y();
@@ -964,7 +1044,8 @@ void Simulator::AddCoreContactJoint(const dContact& soft_joint, double tolerance
                                     dBodyID body_a, dBodyID body_b, JointFeedbackSlot* slot) {
   dContact joint = soft_joint;
   joint.surface.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
-  if (soft_joint.surface.mode & dContactFDir1) joint.surface.mode |= dContactFDir1;
+  joint.surface.mode |=
+      soft_joint.surface.mode & (dContactFDir1 | dContactMotion1 | dContactMotion2);
   joint.geom.depth = soft_joint.geom.depth - tolerance;
   joint.surface.soft_erp = HardContactErp(joint.geom.depth, step);
   joint.surface.soft_cfm = std::min(world_.settings.cfm, kHardContactCfm);

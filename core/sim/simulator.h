@@ -67,6 +67,8 @@ struct ContactPair {
   double tolerance = 0.0;  ///< padding sum of the pair (m)
   double max_depth = 0.0;  ///< deepest boundary-layer overlap (m)
   bool penetrating = false;
+  /// fastest tangential correction of the pair's friction anchor in a step from here (m/s)
+  double anchor_speed = 0.0;
 };
 
 /// Adaptive time stepping gives up halving below this step (s).
@@ -249,7 +251,9 @@ class Simulator {
   bool MayCollide(const BodyRecord& a, const BodyRecord& b) const;
   void FindCandidatePairs();
   void AddPairContacts(int a, int b);
-  void AddContactJoints(const ContactPair& pair, double step);
+  void UpdateFrictionAnchors(double step);
+  BodyFrame BodyFrameOf(int id) const;
+  void AddContactJoints(const ContactPair& pair, const Vec3* anchor_velocities, double step);
   double HardContactErp(double depth, double step) const;
   static double ContactWeightDepth(const Contact& contact, const ContactPair& pair);
   struct JointFeedbackSlot;
@@ -310,7 +314,10 @@ class Simulator {
   std::vector<ContactPair> pairs_;               ///< contacts at the current state
   std::vector<ContactPair> saved_pairs_;         ///< contacts at the start of a tentative step
   SimState rollback_state_;                      ///< state at the start of a tentative step
-  bool contacts_current_ = false;                ///< pairs_ describes the current state
+  std::vector<FrictionAnchor> anchors_;          ///< pairs that stick, sorted by (a, b)
+  std::vector<FrictionAnchor> next_anchors_;     ///< scratch of UpdateFrictionAnchors
+  std::vector<Vec3> anchor_velocities_;  ///< per contact of pairs_, in order: anchor correction
+  bool contacts_current_ = false;        ///< pairs_ describes the current state
   ContactList scratch_contacts_;
   std::vector<ContactFeedbackRecord> feedback_;              ///< sorted by (first, second)
   std::vector<std::vector<FeedbackContact>> step_feedback_;  ///< per feedback record, one step

@@ -205,6 +205,12 @@ void Simulator::SetRobotConfig(int robot, const VecX& q) {
   RequireFiniteVector(q, robots_[robot]->dof(), "a robot configuration");
   robots_[robot]->SetConfig(q);
   contacts_current_ = false;
+  const auto is_link = [&](int id) {
+    return bodies_[id].kind == WorldId::Kind::kRobotLink && bodies_[id].index == robot;
+  };
+  std::erase_if(anchors_, [&](const FrictionAnchor& anchor) {
+    return is_link(anchor.a) || is_link(anchor.b);
+  });
 }
 
 void Simulator::SetRobotVelocity(int robot, const VecX& dq) {

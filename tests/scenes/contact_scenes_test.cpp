@@ -2,10 +2,12 @@
 // Contact scenes with analytic answers: a box resting on a plane, Coulomb sliding distance along
 // an axis and diagonally (isotropic friction), restitution bounce height, and determinism with
 // contacts.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
+#include "core/sim/friction_anchor.h"
 #include "core/sim/simulator.h"
 #include "tests/common/scene_builders.h"
 
@@ -49,8 +51,15 @@ double SlideDistance(const Vec3& direction, double speed, double mu) {
   box.initial_velocity.linear = direction.normalized() * speed;
   world.objects.push_back(box);
   core::Simulator simulator(world);
-  simulator.Simulate(1.5);
-  return simulator.GetObjectPose(0).translation().head<2>().norm();
+  double farthest = 0.0;
+  for (int i = 0; i < 150; ++i) {
+    simulator.Simulate(0.01);
+    farthest = std::max(farthest, simulator.GetObjectPose(0).translation().head<2>().norm());
+  }
+  const double distance = simulator.GetObjectPose(0).translation().head<2>().norm();
+  // once it stops, its friction anchor takes back at most the drift allowed while sticking
+  EXPECT_GE(distance, farthest - core::kAnchorMaxSlip);
+  return distance;
 }
 
 TEST(SlidingTest, StopsAtCoulombDistanceAlongAnAxisAndDiagonally) {
@@ -106,6 +115,35 @@ TEST(DeterminismTest, SameContactSceneTwiceIsBitIdentical) {
   replay.SetState(middle);
   replay.Simulate(0.6);
   EXPECT_EQ(replay.GetState(), end);
+}
+
+// a box held by static friction on a 20 degree slope (gravity tilted, mu 0.5), under QuickStep
+// with few iterations, so that its friction anchor has drift to take back: the anchors are part of
+// the state, and a replay without them goes elsewhere
+TEST(DeterminismTest, SetStateRestoresFrictionAnchors) {
+  core::WorldDesc world;
+  world.terrains.push_back(PlaneTerrain(0.5, 0.0));
+  core::RigidObjectDesc box = BoxObject(0.1, 1.0, Vec3(0, 0, 0.0525));
+  box.sim.surface = {0.0, 0.5, core::kInf, core::kInf};
+  world.objects.push_back(box);
+  const double theta = 20.0 * core::kPi / 180.0;
+  core::Simulator replay(world, {core::SolverType::kQuickStep, 3});
+  replay.SetGravity(kGravity * Vec3(std::sin(theta), 0.0, -std::cos(theta)));
+  replay.Simulate(0.5);
+  const core::SimState middle = replay.GetState();
+  ASSERT_EQ(middle.anchors.size(), 1u);
+  replay.Simulate(0.5);
+  const core::SimState end = replay.GetState();
+  replay.SetState(middle);
+  replay.Simulate(0.5);
+  EXPECT_EQ(replay.GetState(), end);
+  core::SimState forgotten = middle;
+  forgotten.anchors.clear();
+  replay.SetState(forgotten);
+  replay.Simulate(0.5);
+  EXPECT_NE(replay.GetState().objects, end.objects);
+  // static friction holds the box: it moved less than a micrometre along the slope
+  EXPECT_LT(std::abs(end.objects[0].com_position.x() - middle.objects[0].com_position.x()), 1e-6);
 }
 
 }  // namespace
