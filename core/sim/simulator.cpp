@@ -2,7 +2,9 @@
 #include "core/sim/simulator.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 #include "core/contact/contact_clustering.h"
@@ -40,6 +42,15 @@ constexpr double kPressedThroughFraction = 0.01;
 // on them could pick up energy from that.
 constexpr double kMergeFraction = 0.05;
 constexpr double kMinimumMergeRadius = 1e-4;
+// a seed for ODE's random generator from the simulated time (a 64-bit mix of its bits)
+unsigned long QuickStepSeed(double time) {
+  uint64_t x = std::bit_cast<uint64_t>(time);
+  x ^= x >> 33;
+  x *= 0xff51afd7ed558ccdULL;
+  x ^= x >> 33;
+  return static_cast<unsigned long>(x);
+}
+
 // sliding slower than this keeps ODE's default friction directions (m/s)
 constexpr double kSlidingSpeedThreshold = 1e-6;
 
@@ -737,6 +748,9 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     PrepareRobotsForStep(step);
     if (solver_.type == SolverType::kQuickStep) {
       dWorldSetQuickStepNumIterations(ode_world_.get(), solver_.quick_step_iterations);
+      // QuickStep shuffles its rows with ODE's process-wide random generator: seeded from the
+      // state's time, the same state always takes the same step, whatever ran before
+      dRandSetSeed(QuickStepSeed(time_));
       dWorldQuickStep(ode_world_.get(), step);
     } else {
       dWorldStep(ode_world_.get(), step);
