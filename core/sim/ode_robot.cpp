@@ -17,6 +17,10 @@ constexpr double kFullTurn = 2 * kPi;
 // a stop of a wide-range joint is given to ODE only while it lies this far inside the hinge's
 // (-π, π] reading, where ODE's angle test does not wrap
 constexpr double kStopWrapMargin = 0.1;
+// a joint this close to a limit may be at its stop in ODE's reading (rad or m)
+constexpr double kAtStopTolerance = 1e-9;
+// fastest correction of a joint beyond its range (rad/s or m/s)
+constexpr double kMaxStopCorrectionSpeed = 0.5;
 // ODE rejects massless bodies: a massless moving link gets this mass (kg), as in Klamp't
 constexpr double kMinimumLinkMass = 1e-3;
 
@@ -255,24 +259,56 @@ void OdeRobot::SetStops(int i) {
   }
 }
 
+void OdeRobot::UpdateStops(int i) {
+  const LinkDesc& desc = robot_.links[i];
+  Link& link = links_[i];
+  if (link.joint == nullptr || joint_types_[i] == JointType::kSpin) return;
+  const double limit = kPi - kStopWrapMargin;
+  if (!wide_[i] && desc.axis_type == LinkJointAxis::kRevolute &&
+      !(desc.q_min - link.reference > -limit && desc.q_max - link.reference < limit)) {
+    // ODE's reading of the hinge would wrap inside the range: from now on the stops follow
+    // the angle every step (PrepareStep) and whole turns are counted (none so far)
+    wide_[i] = true;
+    joint_state_.turns[i] = 0;
+    joint_state_.last_angle[i] = HingeAngle(i);
+    dJointSetHingeParam(link.joint, dParamLoStop, -dInfinity);
+    dJointSetHingeParam(link.joint, dParamHiStop, dInfinity);
+    return;
+  }
+  SetStops(i);
+}
+
 double OdeRobot::HingeAngle(int i) const {
   return dJointGetHingeAngle(links_[i].joint);
 }
 
-void OdeRobot::PrepareStep() {
+void OdeRobot::PrepareStep(const VecX& q, double step, double erp) {
   for (int i = 0; i < dof(); ++i) {
-    if (!wide_[i] || links_[i].joint == nullptr || joint_types_[i] == JointType::kSpin) continue;
+    if (links_[i].joint == nullptr || joint_types_[i] == JointType::kSpin) continue;
     const LinkDesc& desc = robot_.links[i];
     if (!std::isfinite(desc.q_min) && !std::isfinite(desc.q_max)) continue;
-    const double angle = HingeAngle(i);
-    const double q = links_[i].reference + angle + kFullTurn * joint_state_.turns[i];
-    // the stops in ODE's reading of the hinge, when they lie inside it
-    const double lo = angle + (desc.q_min - q);
-    const double hi = angle + (desc.q_max - q);
-    const double limit = kPi - kStopWrapMargin;
-    dJointSetHingeParam(links_[i].joint, dParamLoStop, -dInfinity);
-    dJointSetHingeParam(links_[i].joint, dParamHiStop, std::abs(hi) < limit ? hi : dInfinity);
-    dJointSetHingeParam(links_[i].joint, dParamLoStop, std::abs(lo) < limit ? lo : -dInfinity);
+    const bool revolute = desc.axis_type == LinkJointAxis::kRevolute;
+    if (wide_[i]) {
+      const double angle = HingeAngle(i);
+      // the stops in ODE's reading of the hinge, when they lie inside it
+      const double lo = angle + (desc.q_min - q[i]);
+      const double hi = angle + (desc.q_max - q[i]);
+      const double limit = kPi - kStopWrapMargin;
+      dJointSetHingeParam(links_[i].joint, dParamLoStop, -dInfinity);
+      dJointSetHingeParam(links_[i].joint, dParamHiStop, std::abs(hi) < limit ? hi : dInfinity);
+      dJointSetHingeParam(links_[i].joint, dParamLoStop, std::abs(lo) < limit ? lo : -dInfinity);
+    }
+    // a joint beyond its range (its limits were just narrowed, or it starts outside them) is
+    // brought back no faster than kMaxStopCorrectionSpeed: ODE's stop ERP alone would swing it
+    // back at ERP·violation/h (a 0.24 rad violation: 220 rad/s in one 1 ms step)
+    const double violation = std::max({desc.q_min - q[i], q[i] - desc.q_max, 0.0});
+    const double stop_erp =
+        violation > 0.0 ? std::min(erp, kMaxStopCorrectionSpeed * step / violation) : erp;
+    if (revolute) {
+      dJointSetHingeParam(links_[i].joint, dParamStopERP, stop_erp);
+    } else {
+      dJointSetSliderParam(links_[i].joint, dParamStopERP, stop_erp);
+    }
   }
 }
 
@@ -462,8 +498,8 @@ void OdeRobot::SetServos(const std::vector<ServoMotorCommand>& motors) {
 // The joint's own motor: dry friction as a hard velocity-0 row bounded by μ_D (+ μ_V |dq| when
 // the servo does not already damp with μ_V), or pure viscous friction as an implicit damper
 // (velocity 0, cfm 1 / μ_V).
-void OdeRobot::SetJointFriction(const std::vector<DriverDesc>& drivers, const VecX& dq,
-                                const std::vector<ServoMotorCommand>& motors) {
+void OdeRobot::SetJointFriction(const std::vector<DriverDesc>& drivers, const VecX& q,
+                                const VecX& dq, const std::vector<ServoMotorCommand>& motors) {
   for (const DriverDesc& driver : drivers) {
     if (driver.type != DriverType::kNormal || driver.links.empty()) continue;
     const int i = driver.links[0];
@@ -480,6 +516,13 @@ void OdeRobot::SetJointFriction(const std::vector<DriverDesc>& drivers, const Ve
     } else if (viscous > 0.0) {
       fmax = dInfinity;
       cfm = 1.0 / viscous;
+    }
+    // at a stop ODE turns a powered joint motor into a torque of fmax into the stop (the motor
+    // and the stop share one row): the infinite bound of viscous friction would blow up. The
+    // motor is off while the joint sits at a stop; friction does not act for that step.
+    const LinkDesc& desc = robot_.links[i];
+    if (q[i] <= desc.q_min + kAtStopTolerance || q[i] >= desc.q_max - kAtStopTolerance) {
+      fmax = 0.0;
     }
     SetJointMotor(i, fmax, cfm);
   }

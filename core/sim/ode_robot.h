@@ -56,15 +56,20 @@ class OdeRobot {
   void SetConfig(const VecX& q);
   void SetVelocity(const VecX& dq);
 
-  /// Before each ODE step: joint stops of wide-range joints around the current angle.
-  void PrepareStep();
+  /// After robot().links[i]'s q_min/q_max changed: the joint's stops follow. A revolute joint
+  /// whose new range no longer fits in its built half-turn counts turns from now on.
+  void UpdateStops(int i);
+  /// Before each ODE step of `step` s from configuration q (GetConfig): the stops of wide-range
+  /// joints around the current angle; the stop ERP (the world's `erp`) of a joint beyond its
+  /// range limited so that it comes back gently.
+  void PrepareStep(const VecX& q, double step, double erp);
   /// Adds the generalized force of every link (N·m on hinges, N on sliders, along the virtual
   /// axes of a floating base) for the coming ODE step.
   void ApplyLinkForces(const VecX& forces);
   /// Implicit PD motors: every servo off, then the given ones on for the coming step.
   void SetServos(const std::vector<ServoMotorCommand>& motors);
   /// Joint friction motors: each driven link resists motion with up to dry + viscous·|dq|.
-  void SetJointFriction(const std::vector<DriverDesc>& drivers, const VecX& dq,
+  void SetJointFriction(const std::vector<DriverDesc>& drivers, const VecX& q, const VecX& dq,
                         const std::vector<ServoMotorCommand>& motors);
   /// After an accepted step: counts the turns of revolute joints.
   void AcceptStep();

@@ -177,6 +177,11 @@ class Simulator {
   /// Teleports a robot (bodies placed by forward kinematics); the controller is not told.
   void SetRobotConfig(int robot, const VecX& q);
   void SetRobotVelocity(int robot, const VecX& dq);
+  /// Changes the joint range of a robot link on the running simulation: its joint stops from the
+  /// next step, and the position limits of the controller's ramps. Throws std::out_of_range for
+  /// a bad robot or link index and std::invalid_argument for a NaN bound or q_min > q_max
+  /// (infinite bounds remove the stop).
+  void SetJointLimits(int robot, int link, double q_min, double q_max);
   /// The controller of a robot: commands, gains, limits and friction, all live.
   RobotController& controller(int robot) { return controllers_[robot]; }
   const RobotController& controller(int robot) const { return controllers_[robot]; }

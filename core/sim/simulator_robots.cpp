@@ -3,6 +3,7 @@
 // control rate and their actuators and joint friction at every physics step, their part of the
 // simulation state, and fakeSimulate.
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -113,7 +114,7 @@ void Simulator::PrepareRobotsForStep(double step) {
     RobotScratch& scratch = robot_scratch_[r];
     robot.GetConfig(&scratch.q);
     robot.GetVelocity(&scratch.dq);
-    robot.PrepareStep();
+    robot.PrepareStep(scratch.q, step, world_.settings.erp);
     if (solver_.type == SolverType::kStep) {
       controllers_[r].ComputeImplicitServo(scratch.q, scratch.dq, step, &scratch.forces,
                                            &scratch.motors);
@@ -123,7 +124,7 @@ void Simulator::PrepareRobotsForStep(double step) {
       controllers_[r].ComputeLinkForces(scratch.q, scratch.dq, &scratch.forces);
       scratch.motors.clear();
     }
-    robot.SetJointFriction(controllers_[r].drivers(), scratch.dq, scratch.motors);
+    robot.SetJointFriction(controllers_[r].drivers(), scratch.q, scratch.dq, scratch.motors);
     robot.SetServos(scratch.motors);
     robot.ApplyLinkForces(scratch.forces);
   }
@@ -211,6 +212,25 @@ void Simulator::SetRobotConfig(int robot, const VecX& q) {
   std::erase_if(anchors_, [&](const FrictionAnchor& anchor) {
     return is_link(anchor.a) || is_link(anchor.b);
   });
+}
+
+void Simulator::SetJointLimits(int robot, int link, double q_min, double q_max) {
+  RequireRobot(robot, robot_count());
+  LinkDesc* desc =
+      link >= 0 && link < robots_[robot]->dof() ? &world_.robots[robot].links[link] : nullptr;
+  if (desc == nullptr) {
+    throw std::out_of_range("link index " + std::to_string(link) + " out of range");
+  }
+  if (std::isnan(q_min) || std::isnan(q_max) || q_min > q_max) {
+    throw std::invalid_argument("joint limits must be numbers with q_min <= q_max");
+  }
+  desc->q_min = q_min;
+  desc->q_max = q_max;
+  robots_[robot]->UpdateStops(link);
+  JointLimits limits = controllers_[robot].limits();
+  limits.q_min[link] = q_min;
+  limits.q_max[link] = q_max;
+  controllers_[robot].SetLimits(limits);
 }
 
 void Simulator::SetRobotVelocity(int robot, const VecX& dq) {

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // One-link robots on ODE against analytic answers: a pendulum's period, PID control from any
 // angle, torque limits, joint stops, dry and viscous joint friction.
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -130,6 +132,68 @@ TEST(RobotJointTest, StopsWorkForLimitsBeyondPi) {
   }
   EXPECT_LT(lowest, -3.3);         // it did go past -π
   EXPECT_GT(lowest, -3.5 - 0.05);  // and stopped at its limit
+}
+
+// the joint range edited on a running simulation: a constant torque of -5 N·m holds the
+// pendulum on its lower stop; widened, the stop gives way to where gravity balances the torque
+// (m g L sin q = -5); narrowed, the stop pushes the link back; widened past -π, the joint
+// counts turns and stops at its new limit
+TEST(RobotJointTest, JointLimitEditsTakeEffectOnTheNextStep) {
+  core::Simulator simulator(
+      PendulumWorld("servoP 0\nservoI 0\nservoD 0\nqMin -0.2\nqMax 0.4\n", 0.0));
+  const auto run = [&](double torque, double seconds) {
+    for (int step = 0; step < static_cast<int>(seconds * 1000); ++step) {
+      ASSERT_TRUE(simulator.controller(0).SetTorque(VecX::Constant(1, torque)));
+      simulator.Simulate(0.001);
+    }
+  };
+  run(-5.0, 1.0);
+  EXPECT_NEAR(simulator.GetRobotConfig(0)[0], -0.2, 0.01);
+  simulator.SetJointLimits(0, 0, -0.6, 0.4);
+  EXPECT_EQ(simulator.controller(0).limits().q_min[0], -0.6);
+  // damp the swing with viscous joint friction so that it settles
+  simulator.controller(0).drivers()[0].viscous_friction = 5.0;
+  run(-5.0, 4.0);
+  EXPECT_NEAR(simulator.GetRobotConfig(0)[0], -std::asin(5.0 / (kMass * kGravity * kLength)), 0.01);
+  // beyond its new stop, the joint comes back at the capped correction speed (0.5 rad/s), not
+  // at ODE's stop ERP x 0.24 rad / 1 ms = 220 rad/s
+  simulator.SetJointLimits(0, 0, -0.3, 0.4);
+  double fastest = 0.0;
+  for (int step = 0; step < 1000; ++step) {
+    run(-5.0, 0.001);
+    fastest = std::max(fastest, std::abs(simulator.GetRobotVelocity(0)[0]));
+  }
+  EXPECT_LT(fastest, 0.5 + 0.05);
+  EXPECT_NEAR(simulator.GetRobotConfig(0)[0], -0.3, 0.01);
+  simulator.SetJointLimits(0, 0, -3.5, 1.0);
+  double lowest = 0.0;
+  for (int step = 0; step < 3000; ++step) {
+    run(-40.0, 0.001);
+    lowest = std::min(lowest, simulator.GetRobotConfig(0)[0]);
+  }
+  EXPECT_LT(lowest, -3.3);         // it went past -π
+  EXPECT_GT(lowest, -3.5 - 0.05);  // and stopped at its new limit
+  EXPECT_THROW(simulator.SetJointLimits(0, 0, 1.0, -1.0), std::invalid_argument);
+  EXPECT_THROW(simulator.SetJointLimits(0, 1, -1.0, 1.0), std::out_of_range);
+}
+
+// a joint resting on its stop with joint friction stays there: ODE shares one row between a
+// joint's motor and its stop and, at the stop, applies the motor's bound as a torque into the
+// stop, so the unbounded motor of viscous friction used to blow the simulation up
+TEST(RobotJointTest, JointFrictionDoesNotPushAJointOffItsStop) {
+  for (const std::string friction : {"dryFriction 2\n", "viscousFriction 5\n"}) {
+    SCOPED_TRACE(friction);
+    core::WorldDesc world =
+        PendulumWorld("servoP 0\nservoI 0\nservoD 0\nqMin -0.2\nqMax 0.4\n" + friction, -0.2);
+    world.settings.gravity = core::Vec3::Zero();
+    core::Simulator simulator(world);
+    ASSERT_TRUE(simulator.controller(0).SetTorque(VecX::Zero(1)));
+    simulator.Simulate(1.0);
+    ASSERT_NE(simulator.statistics().worst_status, core::StepStatus::kError)
+        << simulator.statistics().error;
+    EXPECT_NEAR(simulator.GetRobotConfig(0)[0], -0.2, 1e-4);
+    EXPECT_NEAR(simulator.GetRobotVelocity(0)[0], 0.0, 1e-4);
+  }
 }
 
 // without gravity only the applied torque and dry friction act on the joint
