@@ -58,6 +58,8 @@ int main(int argc, char** argv) {
   app.add_option("--select", options.selected_id, "world id of the body to select at start")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--paused", options.paused, "start paused (Space plays)");
+  app.add_flag("--sleep", options.sleep,
+               "let idle objects sleep (a toggle in the Simulation panel)");
   app.add_option("--msaa", options.samples,
                  "antialiasing samples per pixel: 1, 2 or 4 (default: 4 on a GPU, FXAA on "
                  "software GL)")

@@ -47,6 +47,7 @@ struct RunOptions {
   std::string log;
   std::string motion;  ///< --path or --milestones file, sent to robot 0
   bool json = false;
+  bool sleep = false;  ///< Simulator::SetSleeping
 };
 
 // Klamp't SimTest logs every 0.01 s of simulated time
@@ -99,6 +100,7 @@ int RunSimulation(const RunOptions& options) {
   if (!LoadWorldReporting(options.world, &world)) return 1;
   lamina::core::Simulator simulator(world, solver);
   if (options.step > 0.0) simulator.SetSimStep(options.step);
+  simulator.SetSleeping(options.sleep);
   if (!options.motion.empty() && !SendMotionFile(options.motion, &simulator)) return 1;
   std::ofstream log;
   if (!options.log.empty()) {
@@ -155,6 +157,8 @@ int main(int argc, char** argv) {
   run->add_option("--solver", run_options.solver, "step (exact), quick or quick:N");
   run->add_option("--log", run_options.log, "write a Klamp't-style CSV log (every 0.01 s)");
   run->add_flag("--json", run_options.json, "print JSON instead of text");
+  run->add_flag("--sleep", run_options.sleep,
+                "let idle objects sleep (leave the steps until something touches them)");
   CLI::Option* path = run->add_option("--path", run_options.motion,
                                       "timed .path (or MultiPath .xml) sent to robot 0");
   run->add_option("--milestones", run_options.motion, ".milestones file sent to robot 0")

@@ -50,7 +50,8 @@ std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
       {"max_contacts", stats.max_contacts_in_step},
       {"mean_contacts",
        stats.steps > 0 ? static_cast<double>(stats.contact_joints) / stats.steps : 0.0},
-      {"time_split", TimeSplit(stats.time_split)}};
+      {"time_split", TimeSplit(stats.time_split)},
+      {"sleeping_objects", simulator.SleepingObjectCount()}};
   if (!stats.error.empty()) out["error"] = stats.error;
   ordered_json objects = ordered_json::array();
   for (int i = 0; i < simulator.object_count(); ++i) {
@@ -61,7 +62,8 @@ std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
                        {"position", Vector(pose.translation())},
                        {"quaternion", ordered_json::array({q.w(), q.x(), q.y(), q.z()})},
                        {"velocity", Vector(velocity.linear)},
-                       {"angular_velocity", Vector(velocity.angular)}});
+                       {"angular_velocity", Vector(velocity.angular)},
+                       {"asleep", simulator.ObjectAsleep(i)}});
   }
   out["objects"] = objects;
   ordered_json robots = ordered_json::array();

@@ -57,6 +57,7 @@ void SimBody::SetSurface(const SurfaceDesc& surface) {
         "allowed)");
   }
   if (BodySimParams* params = simulator_->mutable_sim_params(id_)) params->surface = surface;
+  simulator_->WakeBody(id_);
 }
 
 double SimBody::GetPadding() const {

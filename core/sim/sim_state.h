@@ -36,11 +36,19 @@ struct RobotSimState {
   }
 };
 
+/// Sleeping (Simulator::SetSleeping) of one rigid object.
+struct ObjectSleep {
+  double idle_time = 0.0;  ///< s spent below the sleep speeds
+  bool asleep = false;     ///< taken out of the steps until something wakes it
+  bool operator==(const ObjectSleep&) const = default;
+};
+
 struct SimState {
   double time = 0.0;               ///< s
   std::vector<BodyState> objects;  ///< one per rigid object
   std::vector<RobotSimState> robots;
   std::vector<FrictionAnchor> anchors;  ///< pairs that stick, sorted by (a, b)
+  std::vector<ObjectSleep> sleep;       ///< one per rigid object
   bool operator==(const SimState&) const = default;
 };
 

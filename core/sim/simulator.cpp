@@ -215,6 +215,10 @@ void Simulator::ApplyInitialState() {
     controllers_[r] = RobotController(robot);
   }
   anchors_.clear();
+  for (int i = 0; i < static_cast<int>(sleep_.size()); ++i) {
+    if (sleep_[i].asleep) SetObjectAsleep(i, false);
+  }
+  sleep_.assign(object_ids_.size(), ObjectSleep{});
   ForgetEnergies();
 }
 
@@ -236,6 +240,7 @@ void Simulator::SetSimStep(double step) {
 void Simulator::SetGravity(const Vec3& gravity) {
   world_.settings.gravity = gravity;
   dWorldSetGravity(ode_world_.get(), gravity.x(), gravity.y(), gravity.z());
+  for (int id : object_ids_) WakeBody(id);
 }
 
 void Simulator::ForgetEnergies() {
@@ -312,6 +317,7 @@ void Simulator::SetObjectPose(int object, const Pose& pose) {
   SetBodyPose(bodies_[object_ids_[object]], pose);
   bodies_[object_ids_[object]].energy = -1.0;
   ForgetAnchors(&anchors_, object_ids_[object]);
+  WakeBody(object_ids_[object]);
 }
 
 Twist Simulator::GetObjectVelocity(int object) const {
@@ -321,6 +327,7 @@ Twist Simulator::GetObjectVelocity(int object) const {
 void Simulator::SetObjectVelocity(int object, const Twist& velocity) {
   SetBodyVelocity(bodies_[object_ids_[object]], velocity);
   bodies_[object_ids_[object]].energy = -1.0;
+  WakeBody(object_ids_[object]);
 }
 
 bool Simulator::BodyEnabled(int id) const {
@@ -337,6 +344,7 @@ void Simulator::SetBodyEnabled(int id, bool enabled) {
   if (body->body == nullptr) return;
   if (enabled) {
     dBodyEnable(body->body);
+    WakeBody(id);
   } else {
     dBodyDisable(body->body);
   }
@@ -353,6 +361,7 @@ void Simulator::SetBodyDynamic(int id, bool dynamic) {
   body->dynamic = dynamic;
   body->energy = -1.0;
   contacts_current_ = false;  // which pairs may collide changed
+  WakeBody(id);
   if (dynamic) {
     dBodySetDynamic(body->body);
   } else {
@@ -371,6 +380,7 @@ void Simulator::SetBodyPose(int id, const Pose& pose) {
   SetBodyPose(*body, pose);
   body->energy = -1.0;
   ForgetAnchors(&anchors_, id);
+  WakeBody(id);
 }
 
 Twist Simulator::BodyVelocity(int id) const {
@@ -383,6 +393,7 @@ void Simulator::SetBodyVelocity(int id, const Twist& velocity) {
   if (body == nullptr) return;
   SetBodyVelocity(*body, velocity);
   body->energy = -1.0;
+  WakeBody(id);
 }
 
 void Simulator::SetBodyPadding(int id, double padding) {
@@ -393,6 +404,7 @@ void Simulator::SetBodyPadding(int id, double padding) {
   if (params == nullptr) return;
   params->padding = padding;
   RebuildCollisionGeometry(id);
+  WakeBody(id);
 }
 
 void Simulator::AddBodyForce(int id, const Vec3& force, const Vec3& point) {
@@ -402,6 +414,7 @@ void Simulator::AddBodyForce(int id, const Vec3& force, const Vec3& point) {
   const Vec3 com = ToVec3(dBodyGetPosition(body->body));
   body->force += force;
   body->torque += (point - com).cross(force);
+  WakeBody(id);
 }
 
 void Simulator::AddBodyWrench(int id, const Vec3& force, const Vec3& torque) {
@@ -410,6 +423,7 @@ void Simulator::AddBodyWrench(int id, const Vec3& force, const Vec3& torque) {
   if (body == nullptr || body->body == nullptr) return;
   body->force += force;
   body->torque += torque;
+  WakeBody(id);
 }
 
 void Simulator::UpdateWorld(WorldDesc* world) const {
@@ -449,6 +463,7 @@ void Simulator::CaptureBodyState(SimState* state, bool with_controllers) const {
   }
   CaptureRobotState(state, with_controllers);
   state->anchors = anchors_;
+  state->sleep = sleep_;
 }
 
 void Simulator::SetState(const SimState& state) {
@@ -465,6 +480,12 @@ void Simulator::RestoreState(const SimState& state) {
   }
   RestoreRobotState(state);
   anchors_ = state.anchors;
+  if (state.sleep.size() == sleep_.size()) {
+    for (size_t i = 0; i < sleep_.size(); ++i) {
+      sleep_[i].idle_time = state.sleep[i].idle_time;
+      SetObjectAsleep(static_cast<int>(i), state.sleep[i].asleep);
+    }
+  }
 }
 
 // ---- stepping ---------------------------------------------------------------------------
@@ -558,6 +579,7 @@ void Simulator::AcceptStep(double step) {
   AcceptRobotStep(step);
   time_ += step;
   ++statistics_.steps;
+  UpdateSleep(step);
 }
 
 // a step left some body with a non-finite state: go back to the state before it and stop the
@@ -738,6 +760,7 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     // sized before any joint points into it
     joint_feedback_.resize(feedback_slots);
     next_feedback_slot_ = 0;
+    if (sleeping_) WakeTouchedSleepers();
     UpdateFrictionAnchors(step);
     const Vec3* anchor_velocities = anchor_velocities_.data();
     for (const ContactPair& pair : pairs_) {

@@ -71,6 +71,11 @@ struct ContactPair {
   double anchor_speed = 0.0;
 };
 
+/// Sleeping (Simulator::SetSleeping): speeds below which an object counts as idle (m/s, rad/s)
+/// and how long it must stay idle (s), as ODE's and Box2D's defaults.
+inline constexpr double kSleepSpeed = 0.01;
+inline constexpr double kSleepTime = 0.5;
+
 /// Adaptive time stepping gives up halving below this step (s).
 inline constexpr double kMinimumAdaptiveStep = 1e-6;
 
@@ -137,6 +142,15 @@ class Simulator {
   void SetSimStep(double step);
   double sim_step() const { return world_.settings.timestep; }
   void SetGravity(const Vec3& gravity);
+  /// Sleeping (off by default, as in ODE, Klamp't and MuJoCo): a rigid object that has moved
+  /// slower than kSleepSpeed (linear, m/s, and angular, rad/s) for kSleepTime seconds, together
+  /// with every free body it touches, is taken out of the steps until an awake or kinematic
+  /// body touches it, a setter or an applied force reaches it, or gravity changes. Robots never
+  /// sleep. Contact forces on sleeping bodies read zero. Turning it off wakes everything.
+  void SetSleeping(bool on);
+  bool sleeping() const { return sleeping_; }
+  bool ObjectAsleep(int object) const;
+  int SleepingObjectCount() const;
   void SetSolver(const SolverSettings& solver) { solver_ = solver; }
   const SolverSettings& solver() const { return solver_; }
   /// Back to the initial poses and velocities of the world description, time 0.
@@ -257,6 +271,10 @@ class Simulator {
   void FindCandidatePairs();
   void AddPairContacts(int a, int b);
   void UpdateFrictionAnchors(double step);
+  bool WakeTouchedSleepers();
+  void UpdateSleep(double step);
+  void WakeBody(int id);
+  void SetObjectAsleep(int object, bool asleep);
   BodyFrame BodyFrameOf(int id) const;
   void AddContactJoints(const ContactPair& pair, const Vec3* anchor_velocities, double step);
   double HardContactErp(double depth, double step) const;
@@ -320,6 +338,9 @@ class Simulator {
   std::vector<ContactPair> saved_pairs_;         ///< contacts at the start of a tentative step
   SimState rollback_state_;                      ///< state at the start of a tentative step
   std::vector<FrictionAnchor> anchors_;          ///< pairs that stick, sorted by (a, b)
+  bool sleeping_ = false;                        ///< SetSleeping
+  std::vector<ObjectSleep> sleep_;               ///< per rigid object
+  std::vector<int> sleep_islands_;               ///< scratch of UpdateSleep: union-find parents
   std::vector<FrictionAnchor> next_anchors_;     ///< scratch of UpdateFrictionAnchors
   std::vector<Vec3> anchor_velocities_;  ///< per contact of pairs_, in order: anchor correction
   bool contacts_current_ = false;        ///< pairs_ describes the current state

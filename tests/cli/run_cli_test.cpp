@@ -36,6 +36,27 @@ TEST(RunCommandTest, JsonReportsFreeFallBeforeImpact) {
   EXPECT_EQ(sphere["quaternion"][0], 1.0);
 }
 
+// --sleep: the tower of stacktest.xml settles and sleeps as one island after kSleepTime idle
+TEST(RunCommandTest, SleepLetsTheSettledTowerSleep) {
+  const std::string world = test::WorldsPath("klampt/simulation_test_worlds/stacktest.xml");
+  const CommandResult awake = RunHeadless("run --json --duration 2 " + world);
+  const CommandResult asleep = RunHeadless("run --json --sleep --duration 2 " + world);
+  ASSERT_EQ(awake.exit_code, 0) << awake.out;
+  ASSERT_EQ(asleep.exit_code, 0) << asleep.out;
+  const nlohmann::json without = nlohmann::json::parse(awake.out);
+  const nlohmann::json with = nlohmann::json::parse(asleep.out);
+  EXPECT_EQ(without["sleeping_objects"], 0);
+  EXPECT_EQ(with["sleeping_objects"], 10);
+  for (size_t i = 0; i < 10; ++i) {
+    EXPECT_TRUE(with["objects"][i]["asleep"].get<bool>());
+    // asleep where the tower stood anyway: within 0.1 mm of the run without sleeping
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(with["objects"][i]["position"][k].get<double>(),
+                  without["objects"][i]["position"][k].get<double>(), 1e-4);
+    }
+  }
+}
+
 TEST(RunCommandTest, JsonReportsContactsAndTheTimeSplit) {
   const CommandResult result =
       RunHeadless("run --json --duration 0.2 " +

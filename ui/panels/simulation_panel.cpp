@@ -29,6 +29,11 @@ void DrawTransport(ViewerState* state) {
   ImGui::SameLine();
   changed |= ImGui::RadioButton("quick step", &solver, 1);
   if (changed) state->solver = solver == 0 ? core::SolverType::kStep : core::SolverType::kQuickStep;
+  ImGui::Checkbox("sleep idle objects", &state->sleep);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("objects idle for %.1f s leave the steps until something touches them",
+                      core::kSleepTime);
+  }
 }
 
 void DrawStatistics(const WorldSession& session, const ViewerState& state) {
@@ -47,6 +52,10 @@ void DrawStatistics(const WorldSession& session, const ViewerState& state) {
   ImGui::Text("rollbacks     %ld", statistics.rollbacks);
   ImGui::Text("contacts      %zu pairs (max %d joints)", simulator->contact_pairs().size(),
               statistics.max_contacts_in_step);
+  if (simulator->sleeping()) {
+    ImGui::Text("asleep        %d of %d objects", simulator->SleepingObjectCount(),
+                simulator->object_count());
+  }
   ImGui::Text("frame         %.1f ms", state.frame_milliseconds);
   if (!statistics.error.empty()) ImGui::TextWrapped("error: %s", statistics.error.c_str());
 }

@@ -151,6 +151,7 @@ bool Viewer::Start() {
   state_.overlays = options_.overlays;
   state_.show_panels = options_.show_panels;
   state_.playing = !options_.paused;
+  state_.sleep = options_.sleep;
   state_.world_files = WorldFilesUnder(options_.worlds_dir);
   state_.worlds_dir = options_.worlds_dir;
   OpenWorld(options_.world_path);
@@ -173,6 +174,7 @@ void Viewer::OpenWorld(const std::string& path) {
   }
   window_.SetTitle("Lamina - " + session_.shown_world().name);
   session_.SetSolver(state_.solver);
+  session_.SetSleeping(state_.sleep);
   state_.open_path_input = path;
   state_.selected_id = state_.hovered_id = -1;
   state_.message = "opened " + session_.path();
@@ -193,6 +195,7 @@ void Viewer::ApplyRequests() {
   if (requests.reframe) camera_chosen_ = false;
   const core::Simulator* simulator = session_.simulator();
   if (simulator && simulator->solver().type != state_.solver) session_.SetSolver(state_.solver);
+  if (simulator && simulator->sleeping() != state_.sleep) session_.SetSleeping(state_.sleep);
   if (requests.step) session_.Advance(1);
   if (requests.step_frame && simulator) {
     session_.Advance(std::max(1, static_cast<int>(kFrameStepSeconds / simulator->sim_step())));

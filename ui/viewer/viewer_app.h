@@ -23,6 +23,7 @@ struct ViewerOptions {
   int selected_id = -1;  ///< world id of the body selected at start (-1 = none)
   bool show_panels = true;
   bool paused = false;
+  bool sleep = false;  ///< idle objects sleep (core::Simulator::SetSleeping)
   /// Multisampling of the 3D view (1, 2 or 4); 0 = automatic: FXAA on software GL (llvmpipe,
   /// where 4x multisampling costs 40 ms a frame at 1280x720), 4x multisampling on a GPU.
   int samples = 0;

@@ -28,6 +28,7 @@ struct ViewerState {
   bool playing = true;
   double speed = 1.0;
   core::SolverType solver = core::SolverType::kStep;
+  bool sleep = false;  ///< idle objects sleep (core::Simulator::SetSleeping)
   core::OverlayOptions overlays;
   bool show_panels = true;
   int hovered_id = -1;   ///< world id of the body under the mouse, -1 for none

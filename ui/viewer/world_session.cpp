@@ -69,6 +69,10 @@ void WorldSession::SetSolver(core::SolverType type) {
   simulator_->SetSolver(solver);
 }
 
+void WorldSession::SetSleeping(bool on) {
+  if (simulator_) simulator_->SetSleeping(on);
+}
+
 void WorldSession::SyncShownWorld() {
   simulator_->UpdateWorld(&shown_);
 }

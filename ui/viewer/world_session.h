@@ -30,6 +30,7 @@ class WorldSession {
   /// Back to time 0 and the world's initial state.
   void Reset();
   void SetSolver(core::SolverType type);
+  void SetSleeping(bool on);
 
   /// The world as it is now (poses and configurations written back after every change).
   const core::WorldDesc& shown_world() const { return shown_; }

@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: MIT
+// Sleeping rigid objects (Simulator::SetSleeping): idle time, islands of touching objects that
+// fall asleep together, waking.
+#include <algorithm>
+#include <numeric>
+
+#include "core/sim/ode_conversions.h"
+#include "core/sim/simulator.h"
+#include "core/sim/simulator_records.h"
+
+namespace lamina::core {
+
+namespace {
+
+int IslandRoot(std::vector<int>& parent, int i) {
+  while (parent[i] != i) {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return i;
+}
+
+constexpr WorldId::Kind kObject = WorldId::Kind::kRigidObject;
+
+double Speed(dBodyID body) {
+  return std::max(ToVec3(dBodyGetLinearVel(body)).norm(), ToVec3(dBodyGetAngularVel(body)).norm());
+}
+
+}  // namespace
+
+void Simulator::SetSleeping(bool on) {
+  sleeping_ = on;
+  if (on) return;
+  for (int i = 0; i < object_count(); ++i) {
+    sleep_[i].idle_time = 0.0;
+    if (sleep_[i].asleep) SetObjectAsleep(i, false);
+  }
+}
+
+bool Simulator::ObjectAsleep(int object) const {
+  return object >= 0 && object < static_cast<int>(sleep_.size()) && sleep_[object].asleep;
+}
+
+int Simulator::SleepingObjectCount() const {
+  return static_cast<int>(std::count_if(sleep_.begin(), sleep_.end(),
+                                        [](const ObjectSleep& sleep) { return sleep.asleep; }));
+}
+
+void Simulator::SetObjectAsleep(int object, bool asleep) {
+  sleep_[object].asleep = asleep;
+  BodyRecord& body = bodies_[object_ids_[object]];
+  if (body.body == nullptr || !body.enabled) return;
+  if (asleep) {
+    dBodySetLinearVel(body.body, 0, 0, 0);
+    dBodySetAngularVel(body.body, 0, 0, 0);
+    dBodyDisable(body.body);
+    body.energy = 0.0;
+  } else {
+    dBodyEnable(body.body);
+  }
+}
+
+// a setter, an applied force or a surface edit reached body `id`
+void Simulator::WakeBody(int id) {
+  const BodyRecord* body = record(id);
+  if (body == nullptr || body->kind != kObject || sleep_.empty()) return;
+  sleep_[body->index].idle_time = 0.0;
+  if (sleep_[body->index].asleep) SetObjectAsleep(body->index, false);
+}
+
+// before a step: a sleeping object touched by an awake one, by a robot or by a moving kinematic
+// body wakes, and so does everything asleep that touches it (its idle time stays, so that the
+// island can fall asleep again together); true when some object woke
+bool Simulator::WakeTouchedSleepers() {
+  const auto awake = [&](int id) {
+    const BodyRecord& body = bodies_[id];
+    if (body.body == nullptr || !body.enabled) return false;
+    if (body.kind == kObject) {
+      return body.dynamic ? !sleep_[body.index].asleep : Speed(body.body) > kSleepSpeed;
+    }
+    return body.dynamic || Speed(body.body) > kSleepSpeed;  // robot links; kinematic links
+  };
+  bool woke = false, changed = true;
+  while (changed) {
+    changed = false;
+    for (const ContactPair& pair : pairs_) {
+      if (pair.contacts.empty()) continue;
+      for (const auto& [sleeper, other] : {std::pair(pair.a, pair.b), std::pair(pair.b, pair.a)}) {
+        const BodyRecord& body = bodies_[sleeper];
+        if (body.kind != kObject || !sleep_[body.index].asleep || !awake(other)) continue;
+        SetObjectAsleep(body.index, false);
+        woke = changed = true;
+      }
+    }
+  }
+  return woke;
+}
+
+// after an accepted step: idle times, then every island of touching objects whose members have
+// all been idle for kSleepTime, and that touches no robot and no moving kinematic body, sleeps
+void Simulator::UpdateSleep(double step) {
+  if (!sleeping_) return;
+  const int count = object_count();
+  for (int i = 0; i < count; ++i) {
+    const BodyRecord& body = bodies_[object_ids_[i]];
+    if (!body.moves_freely() || sleep_[i].asleep) continue;
+    sleep_[i].idle_time = Speed(body.body) < kSleepSpeed ? sleep_[i].idle_time + step : 0.0;
+  }
+  std::vector<int>& parent = sleep_islands_;
+  parent.resize(count);
+  std::iota(parent.begin(), parent.end(), 0);
+  std::vector<bool> ready(count);
+  for (int i = 0; i < count; ++i) {
+    ready[i] = bodies_[object_ids_[i]].moves_freely() && sleep_[i].idle_time >= kSleepTime;
+  }
+  for (const ContactPair& pair : pairs_) {
+    if (pair.contacts.empty()) continue;
+    const BodyRecord& a = bodies_[pair.a];
+    const BodyRecord& b = bodies_[pair.b];
+    const bool a_free = a.kind == kObject && a.moves_freely();
+    const bool b_free = b.kind == kObject && b.moves_freely();
+    if (a_free && b_free) {
+      parent[IslandRoot(parent, a.index)] = IslandRoot(parent, b.index);
+      continue;
+    }
+    // a robot link, or a kinematic body on the move, keeps what it touches awake
+    for (const auto& [free, touched, other] :
+         {std::tuple(a_free, &a, &b), std::tuple(b_free, &b, &a)}) {
+      if (!free || other->body == nullptr || !other->enabled) continue;
+      if (other->dynamic || Speed(other->body) > kSleepSpeed) ready[touched->index] = false;
+    }
+  }
+  std::vector<bool> island_ready(count, true);
+  for (int i = 0; i < count; ++i) {
+    if (!ready[i]) island_ready[IslandRoot(parent, i)] = false;
+  }
+  for (int i = 0; i < count; ++i) {
+    if (ready[i] && island_ready[IslandRoot(parent, i)] && !sleep_[i].asleep) {
+      SetObjectAsleep(i, true);
+    }
+  }
+}
+
+}  // namespace lamina::core
