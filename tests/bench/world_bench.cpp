@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Each Klamp't simulation test world with dWorldStep and with dWorldQuickStep (20 iterations):
+// Each Klamp't simulation test world with dWorldStep, with dWorldQuickStep (20 iterations) and
+// with dWorldStep and sleeping on (numerics.md: report with sleep on and off):
 // every iteration simulates a fixed span from the start on a fresh simulator, and the counters
 // give steps/s, the real-time factor, rollbacks and where the time goes.
 #include "tests/bench/world_bench.h"
@@ -25,19 +26,22 @@ constexpr double kWorldSpan = 2.0;
 struct SolverCase {
   const char* name;
   core::SolverSettings settings;
+  bool sleep;
 };
 
 const SolverCase kSolvers[] = {
-    {"step", {core::SolverType::kStep, 20}},
-    {"quick20", {core::SolverType::kQuickStep, 20}},
+    {"step", {core::SolverType::kStep, 20}, false},
+    {"quick20", {core::SolverType::kQuickStep, 20}, false},
+    {"step_sleep", {core::SolverType::kStep, 20}, true},
 };
 
-void RunWorld(benchmark::State& state, const core::WorldDesc& world,
-              const core::SolverSettings& solver) {
+void RunWorld(benchmark::State& state, const core::WorldDesc& world, const SolverCase& solver) {
   LaminaTotals totals;
+  int asleep = 0;
   for (auto _ : state) {
     state.PauseTiming();
-    auto simulator = std::make_unique<core::Simulator>(world, solver);
+    auto simulator = std::make_unique<core::Simulator>(world, solver.settings);
+    simulator->SetSleeping(solver.sleep);
     state.ResumeTiming();
     simulator->Simulate(kWorldSpan);
     state.PauseTiming();
@@ -46,10 +50,12 @@ void RunWorld(benchmark::State& state, const core::WorldDesc& world,
       break;
     }
     totals.Add(kWorldSpan, simulator->statistics());
+    asleep = simulator->SleepingObjectCount();
     simulator.reset();
     state.ResumeTiming();
   }
   SetLaminaCounters(state, totals);
+  if (solver.sleep) state.counters["asleep_at_end"] = asleep;
 }
 
 std::vector<std::filesystem::path> TestWorldFiles() {
@@ -68,14 +74,13 @@ void RegisterWorld(const std::filesystem::path& file) {
   const bool loaded = LoadWorld(file.string(), world.get(), &errors);
   for (const SolverCase& solver : kSolvers) {
     const std::string name = "World/" + file.stem().string() + "/" + solver.name;
-    const core::SolverSettings settings = solver.settings;
-    benchmark::RegisterBenchmark(name.c_str(), [world, settings, loaded,
+    benchmark::RegisterBenchmark(name.c_str(), [world, solver, loaded,
                                                 errors](benchmark::State& state) {
       if (!loaded) {
         Fail(state, "cannot load the world: " + errors);
         return;
       }
-      RunWorld(state, *world, settings);
+      RunWorld(state, *world, solver);
     })->Unit(benchmark::kMillisecond);
   }
 }
