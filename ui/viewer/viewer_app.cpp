@@ -26,6 +26,7 @@
 #include "ui/render/renderer.h"
 #include "ui/viewer/sim_clock.h"
 #include "ui/viewer/viewer_input.h"
+#include "ui/viewer/world_files.h"
 #include "ui/viewer/world_session.h"
 
 namespace lamina::ui {
@@ -60,20 +61,6 @@ double Median(std::vector<double> values) {
 }
 
 // every .xml file under `directory`, sorted
-std::vector<std::string> WorldFilesUnder(const std::string& directory) {
-  std::vector<std::string> files;
-  std::error_code error;
-  if (directory.empty() || !std::filesystem::is_directory(directory, error)) return files;
-  for (auto it = std::filesystem::recursive_directory_iterator(directory, error);
-       !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error)) {
-    if (it->is_regular_file(error) && it->path().extension() == ".xml") {
-      files.push_back(it->path().string());
-    }
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 // the hovered body drawn a little lighter
 void HighlightHovered(int hovered_id, core::RenderScene* scene) {
   if (hovered_id < 0) return;
