@@ -103,6 +103,10 @@ void Simulator::UpdateSleep(double step) {
   const int count = object_count();
   for (int i = 0; i < count; ++i) {
     const BodyRecord& body = bodies_[object_ids_[i]];
+    // ODE itself enables a disabled body that a joint ties to an enabled one
+    if (sleep_[i].asleep && body.moves_freely() && dBodyIsEnabled(body.body)) {
+      sleep_[i].asleep = false;
+    }
     if (!body.moves_freely() || sleep_[i].asleep) continue;
     sleep_[i].idle_time = Speed(body.body) < kSleepSpeed ? sleep_[i].idle_time + step : 0.0;
   }
