@@ -58,6 +58,7 @@ void SimBody::SetSurface(const SurfaceDesc& surface) {
   }
   if (BodySimParams* params = simulator_->mutable_sim_params(id_)) params->surface = surface;
   simulator_->WakeBody(id_);
+  simulator_->WakeTouching(id_);
 }
 
 double SimBody::GetPadding() const {

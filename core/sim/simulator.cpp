@@ -318,6 +318,7 @@ void Simulator::SetObjectPose(int object, const Pose& pose) {
   bodies_[object_ids_[object]].energy = -1.0;
   ForgetAnchors(&anchors_, object_ids_[object]);
   WakeBody(object_ids_[object]);
+  WakeTouching(object_ids_[object]);
 }
 
 Twist Simulator::GetObjectVelocity(int object) const {
@@ -347,6 +348,7 @@ void Simulator::SetBodyEnabled(int id, bool enabled) {
     WakeBody(id);
   } else {
     dBodyDisable(body->body);
+    WakeTouching(id);
   }
 }
 
@@ -362,6 +364,7 @@ void Simulator::SetBodyDynamic(int id, bool dynamic) {
   body->energy = -1.0;
   contacts_current_ = false;  // which pairs may collide changed
   WakeBody(id);
+  WakeTouching(id);
   if (dynamic) {
     dBodySetDynamic(body->body);
   } else {
@@ -381,6 +384,7 @@ void Simulator::SetBodyPose(int id, const Pose& pose) {
   body->energy = -1.0;
   ForgetAnchors(&anchors_, id);
   WakeBody(id);
+  WakeTouching(id);
 }
 
 Twist Simulator::BodyVelocity(int id) const {
@@ -405,6 +409,7 @@ void Simulator::SetBodyPadding(int id, double padding) {
   params->padding = padding;
   RebuildCollisionGeometry(id);
   WakeBody(id);
+  WakeTouching(id);
 }
 
 void Simulator::AddBodyForce(int id, const Vec3& force, const Vec3& point) {
@@ -480,11 +485,11 @@ void Simulator::RestoreState(const SimState& state) {
   }
   RestoreRobotState(state);
   anchors_ = state.anchors;
-  if (state.sleep.size() == sleep_.size()) {
-    for (size_t i = 0; i < sleep_.size(); ++i) {
-      sleep_[i].idle_time = state.sleep[i].idle_time;
-      SetObjectAsleep(static_cast<int>(i), state.sleep[i].asleep);
-    }
+  // a state from elsewhere (or taken with sleeping on while it is off now) wakes everything
+  const bool usable = sleeping_ && state.sleep.size() == sleep_.size();
+  for (size_t i = 0; i < sleep_.size(); ++i) {
+    sleep_[i].idle_time = usable ? state.sleep[i].idle_time : 0.0;
+    SetObjectAsleep(static_cast<int>(i), usable && state.sleep[i].asleep);
   }
 }
 
@@ -553,12 +558,14 @@ StepStatus Simulator::Step(double step) {
     }
     // keep the contacts of the state before the step in case it is rolled back
     std::swap(pairs_, saved_pairs_);
+    std::swap(candidates_, saved_candidates_);
     DetectContacts();
     bool unreliable = false;
     if (world_.settings.adaptive_time_stepping && NeedsRollback(saved_pairs_, &unreliable) &&
         h / 2 >= kMinimumAdaptiveStep) {
       RestoreState(rollback_state_);
       std::swap(pairs_, saved_pairs_);
+      std::swap(candidates_, saved_candidates_);
       contacts_current_ = true;
       h /= 2;
       ++statistics_.rollbacks;
@@ -764,9 +771,11 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     UpdateFrictionAnchors(step);
     const Vec3* anchor_velocities = anchor_velocities_.data();
     for (const ContactPair& pair : pairs_) {
-      AddContactJoints(pair, anchor_velocities, step);
+      // no joint ties a sleeper to what cannot wake it (ODE would enable it through the joint)
+      if (!sleeping_ || !SleepsAgainstInert(pair)) AddContactJoints(pair, anchor_velocities, step);
       anchor_velocities += pair.contacts.size();
     }
+    joint_feedback_.resize(next_feedback_slot_);  // slots of pairs that made no joint
     ApplyAccumulatedForces();
     PrepareRobotsForStep(step);
     if (solver_.type == SolverType::kQuickStep) {
@@ -792,7 +801,7 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
 
 void Simulator::ApplyAccumulatedForces() {
   for (const BodyRecord& body : bodies_) {
-    if (!body.moves_freely()) continue;
+    if (!body.moves_freely() || !dBodyIsEnabled(body.body)) continue;  // asleep
     if (!body.force.isZero(0.0)) {
       dBodyAddForce(body.body, body.force.x(), body.force.y(), body.force.z());
     }

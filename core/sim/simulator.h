@@ -272,6 +272,8 @@ class Simulator {
   void AddPairContacts(int a, int b);
   void UpdateFrictionAnchors(double step);
   bool WakeTouchedSleepers();
+  void WakeTouching(int id);
+  bool SleepsAgainstInert(const ContactPair& pair) const;
   void UpdateSleep(double step);
   void WakeBody(int id);
   void SetObjectAsleep(int object, bool asleep);
@@ -336,12 +338,14 @@ class Simulator {
   std::vector<std::pair<int, int>> candidates_;  ///< candidate pairs of the broad phase
   std::vector<ContactPair> pairs_;               ///< contacts at the current state
   std::vector<ContactPair> saved_pairs_;         ///< contacts at the start of a tentative step
-  SimState rollback_state_;                      ///< state at the start of a tentative step
-  std::vector<FrictionAnchor> anchors_;          ///< pairs that stick, sorted by (a, b)
-  bool sleeping_ = false;                        ///< SetSleeping
-  std::vector<ObjectSleep> sleep_;               ///< per rigid object
-  std::vector<int> sleep_islands_;               ///< scratch of UpdateSleep: union-find parents
-  std::vector<FrictionAnchor> next_anchors_;     ///< scratch of UpdateFrictionAnchors
+  std::vector<std::pair<int, int>> saved_candidates_;  ///< broad phase of saved_pairs_
+  SimState rollback_state_;                            ///< state at the start of a tentative step
+  std::vector<FrictionAnchor> anchors_;                ///< pairs that stick, sorted by (a, b)
+  bool sleeping_ = false;                              ///< SetSleeping
+  std::vector<ObjectSleep> sleep_;                     ///< per rigid object
+  std::vector<int> sleep_islands_;                ///< scratch of UpdateSleep: union-find parents
+  std::vector<char> sleep_ready_, island_ready_;  ///< scratch of UpdateSleep
+  std::vector<FrictionAnchor> next_anchors_;      ///< scratch of UpdateFrictionAnchors
   std::vector<Vec3> anchor_velocities_;  ///< per contact of pairs_, in order: anchor correction
   bool contacts_current_ = false;        ///< pairs_ describes the current state
   ContactList scratch_contacts_;

@@ -212,6 +212,9 @@ void Simulator::SetRobotConfig(int robot, const VecX& q) {
   std::erase_if(anchors_, [&](const FrictionAnchor& anchor) {
     return is_link(anchor.a) || is_link(anchor.b);
   });
+  for (size_t id = 0; id < bodies_.size(); ++id) {
+    if (is_link(static_cast<int>(id))) WakeTouching(static_cast<int>(id));
+  }
 }
 
 void Simulator::SetJointLimits(int robot, int link, double q_min, double q_max) {

@@ -26,6 +26,11 @@ double Speed(dBodyID body) {
   return std::max(ToVec3(dBodyGetLinearVel(body)).norm(), ToVec3(dBodyGetAngularVel(body)).norm());
 }
 
+// a kinematic body carries what it touches whenever it moves at all
+bool KinematicMoves(dBodyID body) {
+  return Speed(body) > 0.0;
+}
+
 }  // namespace
 
 void Simulator::SetSleeping(bool on) {
@@ -53,6 +58,8 @@ void Simulator::SetObjectAsleep(int object, bool asleep) {
   if (asleep) {
     dBodySetLinearVel(body.body, 0, 0, 0);
     dBodySetAngularVel(body.body, 0, 0, 0);
+    dBodySetForce(body.body, 0, 0, 0);
+    dBodySetTorque(body.body, 0, 0, 0);
     dBodyDisable(body.body);
     body.energy = 0.0;
   } else {
@@ -68,6 +75,32 @@ void Simulator::WakeBody(int id) {
   if (sleep_[body->index].asleep) SetObjectAsleep(body->index, false);
 }
 
+// body `id` moved, changed shape or went away: what sleeps on it may have lost its support
+void Simulator::WakeTouching(int id) {
+  for (const ContactPair& pair : pairs_) {
+    if (pair.contacts.empty() || (pair.a != id && pair.b != id)) continue;
+    const BodyRecord& other = bodies_[pair.a == id ? pair.b : pair.a];
+    if (other.kind != kObject || !sleep_[other.index].asleep) continue;
+    sleep_[other.index].idle_time = 0.0;
+    SetObjectAsleep(other.index, false);
+  }
+}
+
+// a pair of a sleeper and something that cannot wake it: static, asleep, or a kinematic body
+// standing still (no contact joint for it: ODE would enable the sleeper through the joint)
+bool Simulator::SleepsAgainstInert(const ContactPair& pair) const {
+  const auto asleep = [&](const BodyRecord& body) {
+    return body.kind == kObject && sleep_[body.index].asleep;
+  };
+  const auto inert = [&](const BodyRecord& body) {
+    if (body.body == nullptr || !body.enabled || asleep(body)) return true;
+    return !body.dynamic && !KinematicMoves(body.body);
+  };
+  const BodyRecord& a = bodies_[pair.a];
+  const BodyRecord& b = bodies_[pair.b];
+  return (asleep(a) && inert(b)) || (asleep(b) && inert(a));
+}
+
 // before a step: a sleeping object touched by an awake one, by a robot or by a moving kinematic
 // body wakes, and so does everything asleep that touches it (its idle time stays, so that the
 // island can fall asleep again together); true when some object woke
@@ -76,9 +109,9 @@ bool Simulator::WakeTouchedSleepers() {
     const BodyRecord& body = bodies_[id];
     if (body.body == nullptr || !body.enabled) return false;
     if (body.kind == kObject) {
-      return body.dynamic ? !sleep_[body.index].asleep : Speed(body.body) > kSleepSpeed;
+      return body.dynamic ? !sleep_[body.index].asleep : KinematicMoves(body.body);
     }
-    return body.dynamic || Speed(body.body) > kSleepSpeed;  // robot links; kinematic links
+    return body.dynamic || KinematicMoves(body.body);  // robot links; kinematic links
   };
   bool woke = false, changed = true;
   while (changed) {
@@ -106,6 +139,7 @@ void Simulator::UpdateSleep(double step) {
     // ODE itself enables a disabled body that a joint ties to an enabled one
     if (sleep_[i].asleep && body.moves_freely() && dBodyIsEnabled(body.body)) {
       sleep_[i].asleep = false;
+      sleep_[i].idle_time = 0.0;
     }
     if (!body.moves_freely() || sleep_[i].asleep) continue;
     sleep_[i].idle_time = Speed(body.body) < kSleepSpeed ? sleep_[i].idle_time + step : 0.0;
@@ -113,9 +147,13 @@ void Simulator::UpdateSleep(double step) {
   std::vector<int>& parent = sleep_islands_;
   parent.resize(count);
   std::iota(parent.begin(), parent.end(), 0);
-  std::vector<bool> ready(count);
+  // a body pushed by an applied force stays awake while the force lasts
+  std::vector<char>& ready = sleep_ready_;
+  ready.assign(count, 0);
   for (int i = 0; i < count; ++i) {
-    ready[i] = bodies_[object_ids_[i]].moves_freely() && sleep_[i].idle_time >= kSleepTime;
+    const BodyRecord& body = bodies_[object_ids_[i]];
+    ready[i] = body.moves_freely() && sleep_[i].idle_time >= kSleepTime && body.force.isZero(0.0) &&
+               body.torque.isZero(0.0);
   }
   for (const ContactPair& pair : pairs_) {
     if (pair.contacts.empty()) continue;
@@ -131,12 +169,13 @@ void Simulator::UpdateSleep(double step) {
     for (const auto& [free, touched, other] :
          {std::tuple(a_free, &a, &b), std::tuple(b_free, &b, &a)}) {
       if (!free || other->body == nullptr || !other->enabled) continue;
-      if (other->dynamic || Speed(other->body) > kSleepSpeed) ready[touched->index] = false;
+      if (other->dynamic || KinematicMoves(other->body)) ready[touched->index] = 0;
     }
   }
-  std::vector<bool> island_ready(count, true);
+  std::vector<char>& island_ready = island_ready_;
+  island_ready.assign(count, 1);
   for (int i = 0; i < count; ++i) {
-    if (!ready[i]) island_ready[IslandRoot(parent, i)] = false;
+    if (!ready[i]) island_ready[IslandRoot(parent, i)] = 0;
   }
   for (int i = 0; i < count; ++i) {
     if (ready[i] && island_ready[IslandRoot(parent, i)] && !sleep_[i].asleep) {

@@ -117,6 +117,53 @@ TEST(SleepTest, AMovingKinematicBodyWakesWhatItPushes) {
   EXPECT_GT(simulator.GetObjectPose(0).translation().x(), 0.05);
 }
 
+TEST(SleepTest, AForceLastingTheCallKeepsABoxAwakeAndLeavesNoImpulseBehind) {
+  core::Simulator simulator(BoxesOnPlane({Vec3(0, 0, kRest)}));
+  simulator.SetSleeping(true);
+  core::SimBody box = simulator.body(static_cast<int>(simulator.world().terrains.size()));
+  box.ApplyWrench(Vec3(2, 0, 0), Vec3::Zero());  // below μ m g = 4.9 N: static friction holds
+  simulator.Simulate(2.0);
+  EXPECT_FALSE(simulator.ObjectAsleep(0));
+  ASSERT_GT(TimeToSleep(simulator, 0, simulator.time() + 2.0), 0.0);
+  simulator.SetObjectVelocity(0, core::Twist{});  // wakes it
+  simulator.Simulate(0.01);
+  EXPECT_LT(simulator.GetObjectVelocity(0).linear.norm(), 0.01);
+}
+
+TEST(SleepTest, ASleeperWhoseSupportIsMovedAwayFalls) {
+  core::Simulator simulator(BoxesOnPlane({Vec3(0, 0, kRest), Vec3(0, 0, kRest + kSide + 0.005)}));
+  simulator.SetSleeping(true);
+  ASSERT_GT(TimeToSleep(simulator, 1, 3.0), 0.0);
+  ASSERT_TRUE(simulator.ObjectAsleep(0));
+  core::Pose aside = simulator.GetObjectPose(0);
+  aside.translation().x() += 2.0;
+  simulator.SetObjectPose(0, aside);
+  EXPECT_FALSE(simulator.ObjectAsleep(1));
+  simulator.Simulate(1.0);
+  EXPECT_NEAR(simulator.GetObjectPose(1).translation().z(), kRest, 1e-3);  // on the plane now
+}
+
+TEST(SleepTest, ABoxCarriedByASlowKinematicBodyNeverSleeps) {
+  // a 1 m kinematic slab moving at 5 mm/s (below the sleep speed) carries a box
+  core::WorldDesc world = BoxesOnPlane({Vec3(0, 0, 0.05 + kRest + 0.0025)});
+  core::RigidObjectDesc slab = test::BoxObject(0.1, 10.0, Vec3(0, 0, 0.0));
+  slab.geometry.primitive = core::Primitive::Box(Vec3(1.0, 1.0, 0.1));
+  slab.sim.surface = {0.0, 0.5, core::kInf, core::kInf};
+  world.objects.push_back(slab);
+  core::Simulator simulator(world);
+  simulator.SetSleeping(true);
+  core::SimBody conveyor = simulator.body(static_cast<int>(world.terrains.size()) + 1);
+  conveyor.EnableDynamics(false);
+  conveyor.SetVelocity(core::Twist{Vec3(0.005, 0, 0), Vec3::Zero()});
+  const double x0 = simulator.GetObjectPose(0).translation().x();
+  for (int i = 0; i < 400; ++i) {
+    simulator.Simulate(0.01);
+    conveyor.SetVelocity(core::Twist{Vec3(0.005, 0, 0), Vec3::Zero()});
+    ASSERT_FALSE(simulator.ObjectAsleep(0)) << "at " << simulator.time() << " s";
+  }
+  EXPECT_NEAR(simulator.GetObjectPose(0).translation().x() - x0, 0.02, 5e-4);
+}
+
 TEST(SleepTest, RestoringAStateRestoresWhoSleeps) {
   core::Simulator simulator(BoxesOnPlane({Vec3(0, 0, kRest + 0.01), Vec3(0.5, 0, kRest + 0.3)}));
   simulator.SetSleeping(true);
@@ -132,6 +179,10 @@ TEST(SleepTest, RestoringAStateRestoresWhoSleeps) {
   EXPECT_FALSE(simulator.ObjectAsleep(1));
   simulator.Simulate(1.0);
   EXPECT_EQ(simulator.GetState(), end);
+  // with sleeping off, a state restores everyone awake
+  simulator.SetSleeping(false);
+  simulator.SetState(end);
+  EXPECT_EQ(simulator.SleepingObjectCount(), 0);
 }
 
 }  // namespace

@@ -17,6 +17,8 @@ TEST(WorldFilesTest, RootElementDecides) {
       "world_files/a.xml",
       "<?xml version=\"1.0\"?>\n<!-- a <comment> -->\n  <world>\n</world>\n")));
   EXPECT_TRUE(IsWorldFile(test::WriteScratchFile("world_files/b.xml", "<world name=\"x\"/>")));
+  EXPECT_TRUE(IsWorldFile(
+      test::WriteScratchFile("world_files/f.xml", "<!DOCTYPE world>\n<world></world>")));
   EXPECT_FALSE(IsWorldFile(test::WriteScratchFile(
       "world_files/c.xml", "<?xml version=\"1.0\"?>\n<multipath>\n</multipath>\n")));
   EXPECT_FALSE(IsWorldFile(test::WriteScratchFile("world_files/d.xml", "<worldly/>")));

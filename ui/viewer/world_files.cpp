@@ -26,6 +26,10 @@ std::size_t FirstElement(const std::string& text) {
       const std::size_t end = text.find("-->", at);
       if (end == std::string::npos) return std::string::npos;
       at = end + 3;
+    } else if (text.compare(at, 2, "<!") == 0) {  // <!DOCTYPE ...>
+      const std::size_t end = text.find('>', at);
+      if (end == std::string::npos) return std::string::npos;
+      at = end + 1;
     } else {
       return at;
     }
