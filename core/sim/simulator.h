@@ -146,7 +146,8 @@ class Simulator {
   /// slower than kSleepSpeed (linear, m/s, and angular, rad/s) for kSleepTime seconds, together
   /// with every free body it touches, is taken out of the steps until an awake or kinematic
   /// body touches it, a setter or an applied force reaches it, or gravity changes. Robots never
-  /// sleep. Contact forces on sleeping bodies read zero. Turning it off wakes everything.
+  /// sleep. Contact feedback does not see a sleeper's contacts with inert bodies. Turning it off
+  /// wakes everything.
   void SetSleeping(bool on);
   bool sleeping() const { return sleeping_; }
   bool ObjectAsleep(int object) const;
