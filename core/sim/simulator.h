@@ -272,7 +272,8 @@ class Simulator {
   void FindCandidatePairs();
   void AddPairContacts(int a, int b);
   void UpdateFrictionAnchors(double step);
-  bool WakeTouchedSleepers();
+  bool KeepsTouchedAwake(const BodyRecord& body) const;
+  void WakeTouchedSleepers();
   void WakeTouching(int id);
   bool SleepsAgainstInert(const ContactPair& pair) const;
   void UpdateSleep(double step);

@@ -86,47 +86,43 @@ void Simulator::WakeTouching(int id) {
   }
 }
 
-// a pair of a sleeper and something that cannot wake it: static, asleep, or a kinematic body
-// standing still (no contact joint for it: ODE would enable the sleeper through the joint)
+// what keeps the objects it touches awake: an awake dynamic object, a robot link, a kinematic
+// body that moves at all; static, disabled and sleeping bodies and standing kinematic ones do not
+bool Simulator::KeepsTouchedAwake(const BodyRecord& body) const {
+  if (body.body == nullptr || !body.enabled) return false;
+  if (!body.dynamic) return KinematicMoves(body.body);
+  return body.kind != kObject || !sleep_[body.index].asleep;
+}
+
+// a pair of a sleeper and something that cannot wake it (no contact joint for it: ODE would
+// enable the sleeper through the joint)
 bool Simulator::SleepsAgainstInert(const ContactPair& pair) const {
   const auto asleep = [&](const BodyRecord& body) {
     return body.kind == kObject && sleep_[body.index].asleep;
   };
-  const auto inert = [&](const BodyRecord& body) {
-    if (body.body == nullptr || !body.enabled || asleep(body)) return true;
-    return !body.dynamic && !KinematicMoves(body.body);
-  };
   const BodyRecord& a = bodies_[pair.a];
   const BodyRecord& b = bodies_[pair.b];
-  return (asleep(a) && inert(b)) || (asleep(b) && inert(a));
+  return (asleep(a) && !KeepsTouchedAwake(b)) || (asleep(b) && !KeepsTouchedAwake(a));
 }
 
-// before a step: a sleeping object touched by an awake one, by a robot or by a moving kinematic
-// body wakes, and so does everything asleep that touches it (its idle time stays, so that the
-// island can fall asleep again together); true when some object woke
-bool Simulator::WakeTouchedSleepers() {
-  const auto awake = [&](int id) {
-    const BodyRecord& body = bodies_[id];
-    if (body.body == nullptr || !body.enabled) return false;
-    if (body.kind == kObject) {
-      return body.dynamic ? !sleep_[body.index].asleep : KinematicMoves(body.body);
-    }
-    return body.dynamic || KinematicMoves(body.body);  // robot links; kinematic links
-  };
-  bool woke = false, changed = true;
+// before a step: a sleeping object touched by something that keeps it awake wakes, and so does
+// everything asleep that touches it (its idle time stays, so that the island can fall asleep
+// again together)
+void Simulator::WakeTouchedSleepers() {
+  bool changed = true;
   while (changed) {
     changed = false;
     for (const ContactPair& pair : pairs_) {
       if (pair.contacts.empty()) continue;
       for (const auto& [sleeper, other] : {std::pair(pair.a, pair.b), std::pair(pair.b, pair.a)}) {
         const BodyRecord& body = bodies_[sleeper];
-        if (body.kind != kObject || !sleep_[body.index].asleep || !awake(other)) continue;
+        if (body.kind != kObject || !sleep_[body.index].asleep) continue;
+        if (!KeepsTouchedAwake(bodies_[other])) continue;
         SetObjectAsleep(body.index, false);
-        woke = changed = true;
+        changed = true;
       }
     }
   }
-  return woke;
 }
 
 // after an accepted step: idle times, then every island of touching objects whose members have
@@ -166,11 +162,8 @@ void Simulator::UpdateSleep(double step) {
       continue;
     }
     // a robot link, or a kinematic body on the move, keeps what it touches awake
-    for (const auto& [free, touched, other] :
-         {std::tuple(a_free, &a, &b), std::tuple(b_free, &b, &a)}) {
-      if (!free || other->body == nullptr || !other->enabled) continue;
-      if (other->dynamic || KinematicMoves(other->body)) ready[touched->index] = 0;
-    }
+    if (a_free && KeepsTouchedAwake(b)) ready[a.index] = 0;
+    if (b_free && KeepsTouchedAwake(a)) ready[b.index] = 0;
   }
   std::vector<char>& island_ready = island_ready_;
   island_ready.assign(count, 1);
