@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Fails when core/ includes GL, GLFW, EGL, ImGui or OSMesa headers, or ui/render includes
-# GLFW or ImGui: the core must build and run without any of them.
+# The layering of the README's layout table, checked on every project #include:
+#  - core/ includes no GL, GLFW, EGL, ImGui or OSMesa header, ui/render no GLFW or ImGui header;
+#  - every folder includes only the folders below it (the rules table below; "core" is the
+#    files at the top of core/: math types, diagnostics, numbers as text).
 set -u
 root=${1:?usage: layering_test.sh PROJECT_ROOT}
 status=0
@@ -17,5 +19,65 @@ if [ -d "$root/ui/render" ] &&
   echo "$hits"
   status=1
 fi
-[ $status -eq 0 ] && echo "layering ok: core/ is free of GL, GLFW, EGL, ImGui and OSMesa"
+
+# folder: the folders it may include (besides itself)
+declare -A allowed=(
+  [core]=""
+  [core/geometry]="core"
+  [core/model]="core core/geometry"
+  [core/robot]="core core/geometry core/model"
+  [core/contact]="core core/geometry core/model"
+  [core/control]="core core/geometry core/model core/robot"
+  [core/io]="core core/geometry core/model core/control"
+  [core/sim]="core core/geometry core/model core/contact core/control core/robot"
+  [core/render]="core core/geometry core/model core/contact core/control core/robot core/sim"
+  [core/edit]="core core/geometry core/model core/io core/contact core/control core/robot core/sim"
+  [ui/platform]="core"
+  [ui/render]="core core/geometry core/model core/render ui/platform"
+  [ui/panels]="core core/geometry core/model core/io core/contact core/control core/robot core/sim core/render core/edit ui/viewer"
+  [ui/viewer]="core core/geometry core/model core/io core/contact core/control core/robot core/sim core/render core/edit ui/platform ui/render ui/panels"
+  [app]="core core/geometry core/model core/io core/contact core/control core/robot core/sim core/render core/edit ui/platform ui/render ui/viewer"
+)
+
+# the folder of a project path: core/x/y.h -> core/x, core/y.h -> core, app/z.cpp -> app
+folder_of() {
+  local path=$1 first rest second
+  first=${path%%/*}
+  rest=${path#*/}
+  if [ "$first" = app ] || [ "$rest" = "${rest#*/}" ]; then
+    echo "$first"
+  else
+    second=${rest%%/*}
+    echo "$first/$second"
+  fi
+}
+
+layer_errors=0
+while IFS= read -r line; do
+  file=${line%%:*}
+  file=${file#"$root"/}
+  included=$(sed -nE 's/.*#[[:space:]]*include[[:space:]]*"([^"]+)".*/\1/p' <<<"$line")
+  case $included in core/* | ui/* | app/*) ;; *) continue ;; esac
+  from=$(folder_of "$file")
+  to=$(folder_of "$included")
+  [ "$from" = "$to" ] && continue
+  if [ -z "${allowed[$from]+set}" ]; then
+    echo "$file: folder '$from' has no layering rule (add it to tests/layering_test.sh and the README)"
+    layer_errors=$((layer_errors + 1))
+    continue
+  fi
+  case " ${allowed[$from]} " in
+    *" $to "*) ;;
+    *)
+      echo "$file: '$from' may not include '$included' ('$to' is not below it)"
+      layer_errors=$((layer_errors + 1))
+      ;;
+  esac
+done < <(grep -rnE '#[[:space:]]*include[[:space:]]*"(core|ui|app)/' "$root/core" "$root/ui" "$root/app" \
+  --include='*.h' --include='*.cpp')
+if [ $layer_errors -gt 0 ]; then
+  echo "$layer_errors include(s) break the layering"
+  status=1
+fi
+[ $status -eq 0 ] && echo "layering ok: core/ is free of GL, GLFW, EGL, ImGui and OSMesa; every folder includes only the folders below it"
 exit $status

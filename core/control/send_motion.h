@@ -6,8 +6,8 @@
 
 #include <string>
 
+#include "core/control/milestone_sequence.h"
 #include "core/control/robot_controller.h"
-#include "core/io/trajectory_file.h"
 
 namespace lamina::core {
 

@@ -120,26 +120,6 @@ std::optional<Trajectory> Trajectory::FromSequence(const MilestoneSequence& sequ
   return FromTimedCubic(sequence.times, sequence.configs, sequence.velocities, error);
 }
 
-std::optional<Trajectory> Trajectory::Load(const std::string& path, Diagnostics& diagnostics,
-                                           const JointLimits& limits) {
-  const auto sequence = ReadMotionFile(path, diagnostics);
-  if (!sequence) return std::nullopt;
-  JointLimits timing_limits = limits;
-  if (sequence->times.empty() && limits.dof() == 0 && !sequence->configs.empty()) {
-    timing_limits =
-        JointLimits::Unbounded(static_cast<int>(sequence->configs.front().size()), 1.0, 1.0);
-    if (sequence->configs.size() > 1) {
-      diagnostics.Note({path, 0, 0},
-                       "untimed milestones are timed with unit limits (velocity 1 per s, "
-                       "acceleration 1 per s^2)");
-    }
-  }
-  std::string reason;
-  auto trajectory = FromSequence(*sequence, timing_limits, &reason);
-  if (!trajectory) diagnostics.Error({path, 0, 0}, "cannot build a trajectory: " + reason);
-  return trajectory;
-}
-
 void Trajectory::Eval(double t, VecX* out) const {
   out->resize(dof());
   for (int i = 0; i < dof(); ++i) (*out)[i] = curves_[i].Eval(t);

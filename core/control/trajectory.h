@@ -10,9 +10,8 @@
 #include <vector>
 
 #include "core/control/joint_limits.h"
+#include "core/control/milestone_sequence.h"
 #include "core/control/piecewise_polynomial.h"
-#include "core/diagnostics.h"
-#include "core/io/trajectory_file.h"
 #include "core/math_types.h"
 
 namespace lamina::core {
@@ -24,12 +23,6 @@ class MotionQueue;
 /// (a jump) the later one is the value at that time.
 class Trajectory {
  public:
-  /// Loads any motion file ReadMotionFile reads. Untimed milestones (.milestones, untimed
-  /// MultiPath sections, .config) are timed with `limits`; when `limits` is empty (dof 0) unit
-  /// limits are used (1 per s, 1 per s^2, unbounded positions) and a note says so. Errors go
-  /// to `diagnostics`.
-  static std::optional<Trajectory> Load(const std::string& path, Diagnostics& diagnostics,
-                                        const JointLimits& limits = {});
   /// Timed milestones: linear between them, or cubic Hermite when `sequence.velocities` is set.
   /// Untimed: FromMilestones.
   static std::optional<Trajectory> FromSequence(const MilestoneSequence& sequence,

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "core/number_text.h"  // ParseDouble, FormatDouble, ... (used with the tokens)
+
 namespace lamina::core {
 
 struct Token {
@@ -24,17 +26,5 @@ struct Statement {
 
 /// Splits `text` into non-empty statements.
 std::vector<Statement> SplitStatements(const std::string& text);
-
-/// Parses a whole token as a double: decimal or exponent notation, "inf", "+inf", "-inf"
-/// (any case). NaN, hex and trailing garbage are rejected.
-bool ParseDouble(const std::string& text, double* value);
-/// Parses a whole token as a (decimal, optionally signed) int.
-bool ParseInt(const std::string& text, int* value);
-/// Shortest text that ParseDouble reads back to exactly `value` ("0.1", "1e-06", "inf").
-std::string FormatDouble(double value);
-/// Values separated by single spaces, each with FormatDouble.
-std::string FormatDoubles(const double* values, int count);
-/// Lower-case copy.
-std::string ToLower(std::string text);
 
 }  // namespace lamina::core

@@ -394,4 +394,24 @@ std::string WriteMilestones(const MilestoneSequence& milestones) {
   return text;
 }
 
+std::optional<Trajectory> LoadTrajectory(const std::string& path, Diagnostics& diagnostics,
+                                         const JointLimits& limits) {
+  const auto sequence = ReadMotionFile(path, diagnostics);
+  if (!sequence) return std::nullopt;
+  JointLimits timing_limits = limits;
+  if (sequence->times.empty() && limits.dof() == 0 && !sequence->configs.empty()) {
+    timing_limits =
+        JointLimits::Unbounded(static_cast<int>(sequence->configs.front().size()), 1.0, 1.0);
+    if (sequence->configs.size() > 1) {
+      diagnostics.Note({path, 0, 0},
+                       "untimed milestones are timed with unit limits (velocity 1 per s, "
+                       "acceleration 1 per s^2)");
+    }
+  }
+  std::string reason;
+  auto trajectory = Trajectory::FromSequence(*sequence, timing_limits, &reason);
+  if (!trajectory) diagnostics.Error({path, 0, 0}, "cannot build a trajectory: " + reason);
+  return trajectory;
+}
+
 }  // namespace lamina::core

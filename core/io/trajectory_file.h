@@ -7,18 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "core/control/milestone_sequence.h"
+#include "core/control/trajectory.h"
 #include "core/diagnostics.h"
 #include "core/math_types.h"
 
 namespace lamina::core {
-
-/// A timed or untimed sequence of milestones. `times` is empty when untimed; `velocities` is
-/// empty when the file gave none.
-struct MilestoneSequence {
-  std::vector<double> times;     ///< s, nondecreasing
-  std::vector<VecX> configs;     ///< all the same length
-  std::vector<VecX> velocities;  ///< same count and length as configs, or empty
-};
 
 /// A `.config` file: one "N q1 ... qN" vector.
 std::optional<VecX> ReadConfigFile(const std::string& path, Diagnostics& diagnostics);
@@ -41,5 +35,12 @@ std::optional<MilestoneSequence> ReadMotionFile(const std::string& path, Diagnos
 std::string WriteConfig(const VecX& config);
 std::string WriteLinearPath(const MilestoneSequence& path);
 std::string WriteMilestones(const MilestoneSequence& milestones);
+
+/// A Trajectory from any motion file ReadMotionFile reads. Untimed milestones (.milestones,
+/// untimed MultiPath sections, .config) are timed with `limits`; when `limits` is empty (dof 0)
+/// unit limits are used (1 per s, 1 per s^2, unbounded positions) and a note says so. Errors go
+/// to `diagnostics`.
+std::optional<Trajectory> LoadTrajectory(const std::string& path, Diagnostics& diagnostics,
+                                         const JointLimits& limits = {});
 
 }  // namespace lamina::core

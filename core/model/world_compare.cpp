@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "core/io/text_statements.h"
+#include "core/number_text.h"
 
 namespace lamina::core {
 

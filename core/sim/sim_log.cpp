@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "core/sim/sim_log.h"
 
-#include "core/io/text_statements.h"
+#include "core/number_text.h"
 
 namespace lamina::core {
 

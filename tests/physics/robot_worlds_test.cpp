@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "core/control/trajectory.h"
+#include "core/io/trajectory_file.h"
 #include "core/robot/dynamics.h"
 #include "core/sim/simulator.h"
 #include "tests/common/scene_builders.h"
@@ -202,7 +203,7 @@ TEST(RobotWorldsTest, AthleteTracksTheFlexPathStreamedAsPidCommands) {
   const core::WorldDesc world = LoadRobotWorld("klampt/athlete_fractal_1.xml");
   core::Diagnostics diagnostics;
   const auto path =
-      core::Trajectory::Load(test::WorldsPath("klampt/motions/athlete_flex.path"), diagnostics);
+      core::LoadTrajectory(test::WorldsPath("klampt/motions/athlete_flex.path"), diagnostics);
   ASSERT_TRUE(path.has_value()) << diagnostics.FormatAll();
   core::Simulator simulator(world);
   core::RobotController& controller = simulator.controller(0);

@@ -34,7 +34,7 @@ void ExpectNear(const VecX& actual, const VecX& expected, double tolerance) {
 
 TEST(TrajectoryTest, LinearPathHitsTheKnotsWithSlopesBetween) {
   Diagnostics diagnostics;
-  const auto path = Trajectory::Load(DataPath("motions/arm.path"), diagnostics);
+  const auto path = LoadTrajectory(DataPath("motions/arm.path"), diagnostics);
   ASSERT_TRUE(path) << diagnostics.FormatAll();
   EXPECT_EQ(path->dof(), 3);
   EXPECT_EQ(path->StartTime(), 0);
@@ -59,7 +59,7 @@ TEST(TrajectoryTest, AthleteFlexPathMatchesTheFile) {
   Diagnostics diagnostics;
   const std::string file = WorldsPath("klampt/motions/athlete_flex.path");
   const auto sequence = ReadMotionFile(file, diagnostics);
-  const auto path = Trajectory::Load(file, diagnostics);
+  const auto path = LoadTrajectory(file, diagnostics);
   ASSERT_TRUE(sequence && path) << diagnostics.FormatAll();
   EXPECT_EQ(path->dof(), 42);
   EXPECT_EQ(path->Duration(), 2);
@@ -72,7 +72,7 @@ TEST(TrajectoryTest, AthleteFlexPathMatchesTheFile) {
 
 TEST(TrajectoryTest, TimedMultiPathWithVelocitiesIsCubicHermite) {
   Diagnostics diagnostics;
-  const auto path = Trajectory::Load(DataPath("motions/arm_sections.xml"), diagnostics);
+  const auto path = LoadTrajectory(DataPath("motions/arm_sections.xml"), diagnostics);
   ASSERT_TRUE(path) << diagnostics.FormatAll();
   EXPECT_EQ(path->EndTime(), 3);
   ExpectNear(path->Eval(0), Vec({0, 0, 0}), 0);
@@ -90,7 +90,7 @@ TEST(TrajectoryTest, TimedMultiPathWithVelocitiesIsCubicHermite) {
 TEST(TrajectoryTest, UntimedMilestonesAreJoinedBySynchronizedRamps) {
   Diagnostics diagnostics;
   const JointLimits limits = JointLimits::Unbounded(3, 5.0, 10.0);
-  const auto path = Trajectory::Load(DataPath("motions/arm.milestones"), diagnostics, limits);
+  const auto path = LoadTrajectory(DataPath("motions/arm.milestones"), diagnostics, limits);
   ASSERT_TRUE(path) << diagnostics.FormatAll();
   const VecX q0 = Vec({0, 0, 0}), q1 = Vec({0.1, 0.2, -0.3}), q2 = Vec({1, 1, 1});
   const VecX v0 = Vec({0, 0, 0}), v1 = Vec({1, 2, 3});
@@ -113,7 +113,7 @@ TEST(TrajectoryTest, UntimedMilestonesAreJoinedBySynchronizedRamps) {
 TEST(TrajectoryTest, UntimedMilestonesWithoutLimitsUseUnitLimitsAndSaySo) {
   Diagnostics diagnostics;
   const std::string file = DataPath("motions/arm.milestones");
-  const auto path = Trajectory::Load(file, diagnostics);
+  const auto path = LoadTrajectory(file, diagnostics);
   ASSERT_TRUE(path) << diagnostics.FormatAll();
   EXPECT_THAT(diagnostics.Messages(Severity::kNote),
               testing::ElementsAre(file + ": note: untimed milestones are timed with unit "
@@ -126,7 +126,7 @@ TEST(TrajectoryTest, UntimedMilestonesWithoutLimitsUseUnitLimitsAndSaySo) {
 
 TEST(TrajectoryTest, ConfigFileIsAPoint) {
   Diagnostics diagnostics;
-  const auto path = Trajectory::Load(DataPath("motions/arm.config"), diagnostics);
+  const auto path = LoadTrajectory(DataPath("motions/arm.config"), diagnostics);
   ASSERT_TRUE(path) << diagnostics.FormatAll();
   EXPECT_EQ(path->Duration(), 0);
   ExpectNear(path->Eval(1), Vec({0.1, -0.2, 0.3}), 0);
@@ -141,13 +141,13 @@ TEST(TrajectoryTest, BadSequencesAreRejectedWithAMessage) {
   EXPECT_FALSE(Trajectory::FromTimedLinear({}, {}, &error));
   EXPECT_EQ(error, "no milestones");
   Diagnostics diagnostics;
-  EXPECT_FALSE(Trajectory::Load(DataPath("motions/missing.path"), diagnostics));
+  EXPECT_FALSE(LoadTrajectory(DataPath("motions/missing.path"), diagnostics));
   EXPECT_TRUE(diagnostics.HasErrors());
 }
 
 TEST(TrajectoryTest, AppendToQueueReplaysAfterTheTransition) {
   Diagnostics diagnostics;
-  const auto path = Trajectory::Load(DataPath("motions/arm.path"), diagnostics);
+  const auto path = LoadTrajectory(DataPath("motions/arm.path"), diagnostics);
   ASSERT_TRUE(path);
   MotionQueue queue(JointLimits::Unbounded(3, 1, 1));
   queue.SetConstant(Vec({1, 1, 1}));
