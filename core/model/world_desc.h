@@ -5,6 +5,7 @@
 // infinite (stiffness, damping, joint limits) may be +/-inf here too.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <utility>
@@ -54,7 +55,12 @@ struct BodySimParams {
 /// saving loses nothing; the renderer interprets them.
 using DisplayAttributes = std::map<std::string, std::string>;
 
+/// Identity of a terrain, object or robot that survives renaming and reordering (0: none yet;
+/// core/edit's WorldDocument gives every element one). Not saved, not compared.
+using ElementUid = std::uint64_t;
+
 struct TerrainDesc {
+  ElementUid uid = 0;
   std::string name;
   DisplayAttributes display;
   GeometryDesc geometry;  ///< in world coordinates (terrains do not move)
@@ -62,6 +68,7 @@ struct TerrainDesc {
 };
 
 struct RigidObjectDesc {
+  ElementUid uid = 0;
   std::string name;
   DisplayAttributes display;
   Pose pose = Pose::Identity();  ///< object frame in the world
@@ -131,6 +138,7 @@ struct DriverDesc {
 };
 
 struct RobotDesc {
+  ElementUid uid = 0;
   std::string name;
   /// Absolute path of the robot file it was loaded from (.rob or .urdf); "" if built in code.
   std::string source_path;
@@ -159,7 +167,22 @@ struct RobotDesc {
   std::vector<std::pair<int, int>> SelfCollisionPairs() const;
 };
 
-/// Global simulation settings (`<simulation><globals>`).
+/// The physics solver: ODE's exact dWorldStep (a Dantzig LCP, stiff stacks and mass ratios
+/// hold) or its iterative dWorldQuickStep (projected Gauss-Seidel, faster on large robots).
+enum class SolverType { kStep, kQuickStep };
+
+/// The solver of a simulation (SimSettings::solver and quick_step_iterations).
+struct SolverSettings {
+  SolverType type = SolverType::kStep;  ///< dWorldStep (exact) or dWorldQuickStep
+  int quick_step_iterations = 20;       ///< iterations of dWorldQuickStep
+  bool operator==(const SolverSettings&) const = default;
+};
+
+/// Global simulation settings (`<simulation><globals>`). The first block is Klamp't's; the rest
+/// are Lamina's own `<globals>` attributes (written only when they differ from these defaults;
+/// Klamp't ignores them): the solver, sleeping, and the contact and stepping internals a user
+/// may need to tune. Every field is a row of the parameter table (core/model/params.h), which
+/// holds its range, unit and help text.
 struct SimSettings {
   double timestep = 0.001;              ///< s, largest physics sub-step
   Vec3 gravity = Vec3(0.0, 0.0, -9.8);  ///< m/s²
@@ -171,6 +194,24 @@ struct SimSettings {
   bool robot_self_collisions = false;   ///< robot self-contacts (allowed pairs only)
   bool robot_robot_collisions = true;   ///< contacts between different robots
 
+  SolverType solver = SolverType::kStep;  ///< `solver`: "step" (exact) or "quick"
+  int quick_step_iterations = 20;         ///< `quickStepIterations`
+  bool sleeping = false;                  ///< `sleeping`: idle objects leave the steps
+  /// `sleepSpeed`: linear (m/s) and angular (rad/s) speed below which an object is idle
+  double sleep_speed = 0.01;
+  double sleep_time = 0.5;  ///< `sleepTime`: s an object must stay idle to sleep
+  /// `bounceVelocityThreshold`: contacts closing slower than this do not bounce (m/s)
+  double bounce_velocity_threshold = 0.01;
+  /// `maxCorrectionSpeed`: fastest push-out of a hard contact's layer overlap (m/s)
+  double max_correction_speed = 0.01;
+  /// `frictionAnchorGain`: fraction of a sticking contact's tangential drift taken back per step
+  double friction_anchor_gain = 0.2;
+  /// `frictionAnchorSlip`: drift beyond which a contact counts as sliding and is re-anchored (m)
+  double friction_anchor_slip = 5e-4;
+  /// `minimumAdaptiveTimeStep`: adaptive stepping halves a step no further than this (s)
+  double minimum_adaptive_step = 1e-6;
+
+  SolverSettings solver_settings() const { return {solver, quick_step_iterations}; }
   bool operator==(const SimSettings&) const = default;
 };
 

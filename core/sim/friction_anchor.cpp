@@ -41,10 +41,10 @@ Vec3 AnchorDrift(const FrictionAnchor& anchor, const BodyFrame& frame_a, const B
   return drift - drift.dot(normal) * normal;
 }
 
-Vec3 AnchorCorrectionVelocity(const Vec3& drift, double step) {
+Vec3 AnchorCorrectionVelocity(const Vec3& drift, double step, double gain) {
   const double distance = drift.norm();
   if (distance < kAnchorMinDrift) return Vec3::Zero();
-  const double speed = std::min(kAnchorErp * distance / step, kAnchorMaxCorrectionSpeed);
+  const double speed = std::min(gain * distance / step, kAnchorMaxCorrectionSpeed);
   return -speed / distance * drift;
 }
 

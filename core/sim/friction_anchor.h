@@ -38,17 +38,12 @@ struct BodyFrame {
   Vec3 position = Vec3::Zero();
 };
 
-/// Drift beyond which a pair counts as sliding and is re-anchored where it is (m): a body that
-/// comes to rest after sliding is pulled back by at most this much.
-inline constexpr double kAnchorMaxSlip = 5e-4;
 /// Relative rotation beyond which a pair counts as rolling or tipping and is re-anchored (rad):
 /// the contact point of a rolling body moves over its surface, and the drift measured for the
 /// new contact point (a cycloid, r φ³/6) stays below 2e-7 r.
 inline constexpr double kAnchorMaxRotation = 0.01;
 /// Drift below which nothing is corrected (m): rounding, not creep.
 inline constexpr double kAnchorMinDrift = 1e-9;
-/// Fraction of the drift taken back per step.
-inline constexpr double kAnchorErp = 0.2;
 /// Fastest tangential correction (m/s).
 inline constexpr double kAnchorMaxCorrectionSpeed = 0.05;
 
@@ -64,9 +59,12 @@ double AnchorRotation(const FrictionAnchor& anchor, const BodyFrame& frame_a,
 Vec3 AnchorDrift(const FrictionAnchor& anchor, const BodyFrame& frame_a, const BodyFrame& frame_b,
                  const Vec3& point, const Vec3& normal);
 
-/// Relative tangential velocity (a minus b, m/s) that takes back kAnchorErp of `drift` in one
-/// step of `step` seconds, no faster than kAnchorMaxCorrectionSpeed.
-Vec3 AnchorCorrectionVelocity(const Vec3& drift, double step);
+/// Relative tangential velocity (a minus b, m/s) that takes back the fraction `gain` of `drift`
+/// in one step of `step` seconds, no faster than kAnchorMaxCorrectionSpeed. (The gain and the
+/// drift beyond which a pair re-anchors, SimSettings::friction_anchor_gain and
+/// friction_anchor_slip, are rows of the parameter table: a body that comes to rest after
+/// sliding is pulled back by at most that slip.)
+Vec3 AnchorCorrectionVelocity(const Vec3& drift, double step, double gain);
 
 /// The anchor of (a, b) in `anchors` (sorted by a, then b), or nullptr.
 const FrictionAnchor* FindAnchor(const std::vector<FrictionAnchor>& anchors, int a, int b);

@@ -24,11 +24,6 @@ void RequireFinite(bool finite, const char* what) {
   if (!finite) throw std::invalid_argument(std::string(what) + " must be finite");
 }
 
-// contacts closing slower than this do not bounce, so resting bodies do not chatter (m/s)
-constexpr double kBounceVelocityThreshold = 0.01;
-// a hard contact pushes an overlap of the boundary layer out no faster than this (m/s): ODE's
-// ERP alone would turn a 0.6 mm overlap into a 0.57 m/s rebound within one 1 ms step (ERP 0.95)
-constexpr double kMaxCorrectionSpeed = 0.01;
 constexpr double kHardContactCfm = 1e-9;
 // a pair whose layer moved less than this fraction of its thickness in a step has settled: no
 // reason to retake the step
@@ -111,9 +106,12 @@ struct Simulator::JointFeedbackSlot {
   FeedbackContact contact;
 };
 
-Simulator::Simulator(const WorldDesc& world, SolverSettings solver)
+Simulator::Simulator(const WorldDesc& world, const SolverSettings& solver) : Simulator(world) {
+  SetSolver(solver);
+}
+
+Simulator::Simulator(const WorldDesc& world)
     : world_(world),
-      solver_(solver),
       ode_world_(nullptr, [](dxWorld* w) { dWorldDestroy(w); }),
       contact_group_(nullptr, [](dxJointGroup* g) { dJointGroupDestroy(g); }) {
   EnsureOdeInitialized();
@@ -235,6 +233,11 @@ void Simulator::Reset() {
 
 void Simulator::SetSimStep(double step) {
   if (step > 0.0 && std::isfinite(step)) world_.settings.timestep = step;
+}
+
+void Simulator::SetSolver(const SolverSettings& solver) {
+  world_.settings.solver = solver.type;
+  world_.settings.quick_step_iterations = solver.quick_step_iterations;
 }
 
 void Simulator::SetGravity(const Vec3& gravity) {
@@ -486,7 +489,7 @@ void Simulator::RestoreState(const SimState& state) {
   RestoreRobotState(state);
   anchors_ = state.anchors;
   // a state from elsewhere (or taken with sleeping on while it is off now) wakes everything
-  const bool usable = sleeping_ && state.sleep.size() == sleep_.size();
+  const bool usable = world_.settings.sleeping && state.sleep.size() == sleep_.size();
   for (size_t i = 0; i < sleep_.size(); ++i) {
     sleep_[i].idle_time = usable ? state.sleep[i].idle_time : 0.0;
     SetObjectAsleep(static_cast<int>(i), usable && state.sleep[i].asleep);
@@ -525,7 +528,7 @@ StepStatus Simulator::Simulate(double dt) {
 
 // one sub-step of length `step`; with adaptive stepping, a tentative step that uses up more
 // than half of a boundary layer, or makes geometries interpenetrate, is undone and retaken in
-// halves until it is acceptable or the step reaches kMinimumAdaptiveStep
+// halves until it is acceptable or the step reaches settings.minimum_adaptive_step
 StepStatus Simulator::Step(double step) {
   StepStatus status = StepStatus::kNormal;
   RunControllers(step);
@@ -562,7 +565,7 @@ StepStatus Simulator::Step(double step) {
     DetectContacts();
     bool unreliable = false;
     if (world_.settings.adaptive_time_stepping && NeedsRollback(saved_pairs_, &unreliable) &&
-        h / 2 >= kMinimumAdaptiveStep) {
+        h / 2 >= world_.settings.minimum_adaptive_step) {
       RestoreState(rollback_state_);
       std::swap(pairs_, saved_pairs_);
       std::swap(candidates_, saved_candidates_);
@@ -767,19 +770,19 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     // sized before any joint points into it
     joint_feedback_.resize(feedback_slots);
     next_feedback_slot_ = 0;
-    if (sleeping_) WakeTouchedSleepers();
+    if (world_.settings.sleeping) WakeTouchedSleepers();
     UpdateFrictionAnchors(step);
     const Vec3* anchor_velocities = anchor_velocities_.data();
     for (const ContactPair& pair : pairs_) {
       // no joint ties a sleeper to what cannot wake it (ODE would enable it through the joint)
-      if (!sleeping_ || !SleepsAgainstInert(pair)) AddContactJoints(pair, anchor_velocities, step);
+      if (!world_.settings.sleeping || !SleepsAgainstInert(pair)) AddContactJoints(pair, anchor_velocities, step);
       anchor_velocities += pair.contacts.size();
     }
     joint_feedback_.resize(next_feedback_slot_);  // slots of pairs that made no joint
     ApplyAccumulatedForces();
     PrepareRobotsForStep(step);
-    if (solver_.type == SolverType::kQuickStep) {
-      dWorldSetQuickStepNumIterations(ode_world_.get(), solver_.quick_step_iterations);
+    if (world_.settings.solver == SolverType::kQuickStep) {
+      dWorldSetQuickStepNumIterations(ode_world_.get(), world_.settings.quick_step_iterations);
       // QuickStep shuffles its rows with ODE's process-wide random generator: seeded from the
       // state's time, the same state always takes the same step, whatever ran before
       dRandSetSeed(QuickStepSeed(time_));
@@ -924,7 +927,7 @@ double Simulator::ContactWeightDepth(const Contact& contact, const ContactPair& 
 double Simulator::HardContactErp(double depth, double step) const {
   const double erp = world_.settings.erp;
   if (depth <= 0.0) return erp;
-  return std::min(erp, kMaxCorrectionSpeed * step / depth);
+  return std::min(erp, world_.settings.max_correction_speed * step / depth);
 }
 
 BodyFrame Simulator::BodyFrameOf(int id) const {
@@ -952,8 +955,9 @@ void Simulator::UpdateFrictionAnchors(double step) {
       const Vec3 drift =
           sticks ? AnchorDrift(*anchor, frame_a, frame_b, contact.position, contact.normal)
                  : Vec3::Zero();
-      sticks = sticks && drift.norm() <= kAnchorMaxSlip;
-      anchor_velocities_.push_back(AnchorCorrectionVelocity(drift, step));
+      sticks = sticks && drift.norm() <= world_.settings.friction_anchor_slip;
+      anchor_velocities_.push_back(
+          AnchorCorrectionVelocity(drift, step, world_.settings.friction_anchor_gain));
     }
     if (sticks) {
       next_anchors_.push_back(*anchor);
@@ -1024,7 +1028,7 @@ void Simulator::AddContactJoints(const ContactPair& pair, const Vec3* anchor_vel
     if (surface.restitution > 0.0 && !soft.soft) {
       joint.surface.mode |= dContactBounce;
       joint.surface.bounce = surface.restitution;
-      joint.surface.bounce_vel = kBounceVelocityThreshold;
+      joint.surface.bounce_vel = world_.settings.bounce_velocity_threshold;
     }
     dVector3 velocity_a = {0, 0, 0}, velocity_b = {0, 0, 0};
     const Vec3& p = contact.position;
@@ -1036,7 +1040,7 @@ void Simulator::AddContactJoints(const ContactPair& pair, const Vec3* anchor_vel
       // a hard contact corrects the layer overlap gently; at a bouncing impact not at all: the
       // velocity constraint with restitution sets the rebound, and correcting the overlap as
       // well would add energy (Klamp't's spheres bounce too high for this)
-      const bool bouncing = surface.restitution > 0.0 && normal_speed < -kBounceVelocityThreshold;
+      const bool bouncing = surface.restitution > 0.0 && normal_speed < -world_.settings.bounce_velocity_threshold;
       joint.surface.mode |= dContactSoftERP | dContactSoftCFM;
       joint.surface.soft_erp = bouncing ? 0.0 : HardContactErp(contact.depth, step);
       joint.surface.soft_cfm = std::min(world_.settings.cfm, kHardContactCfm);

@@ -39,13 +39,6 @@ enum class StepStatus {
 /// "normal", "adaptive step", ...
 const char* StepStatusName(StepStatus status);
 
-enum class SolverType { kStep, kQuickStep };
-
-struct SolverSettings {
-  SolverType type = SolverType::kStep;  ///< dWorldStep (exact) or dWorldQuickStep
-  int quick_step_iterations = 20;       ///< iterations of dWorldQuickStep
-};
-
 /// Counters since construction or the last Reset.
 struct SimStatistics {
   long steps = 0;                    ///< physics sub-steps taken (accepted)
@@ -70,14 +63,6 @@ struct ContactPair {
   /// fastest tangential correction of the pair's friction anchor in a step from here (m/s)
   double anchor_speed = 0.0;
 };
-
-/// Sleeping (Simulator::SetSleeping): speeds below which an object counts as idle (m/s, rad/s)
-/// and how long it must stay idle (s), as ODE's and Box2D's defaults.
-inline constexpr double kSleepSpeed = 0.01;
-inline constexpr double kSleepTime = 0.5;
-
-/// Adaptive time stepping gives up halving below this step (s).
-inline constexpr double kMinimumAdaptiveStep = 1e-6;
 
 class Simulator;
 
@@ -129,8 +114,10 @@ class SimBody {
 
 class Simulator {
  public:
-  /// Builds the simulation of `world` (copied; later edits go through the setters).
-  explicit Simulator(const WorldDesc& world, SolverSettings solver = {});
+  /// Builds the simulation of `world` (copied; later edits go through the setters), with the
+  /// world's solver settings or `solver`.
+  explicit Simulator(const WorldDesc& world);
+  Simulator(const WorldDesc& world, const SolverSettings& solver);
   ~Simulator();
   Simulator(const Simulator&) = delete;
   Simulator& operator=(const Simulator&) = delete;
@@ -143,17 +130,17 @@ class Simulator {
   double sim_step() const { return world_.settings.timestep; }
   void SetGravity(const Vec3& gravity);
   /// Sleeping (off by default, as in ODE, Klamp't and MuJoCo): a rigid object that has moved
-  /// slower than kSleepSpeed (linear, m/s, and angular, rad/s) for kSleepTime seconds, together
+  /// slower than settings.sleep_speed (linear, m/s, and angular, rad/s) for sleep_time s, together
   /// with every free body it touches, is taken out of the steps until an awake or kinematic
   /// body touches it, a setter or an applied force reaches it, or gravity changes. Robots never
   /// sleep. Contact feedback does not see a sleeper's contacts with inert bodies. Turning it off
   /// wakes everything.
   void SetSleeping(bool on);
-  bool sleeping() const { return sleeping_; }
+  bool sleeping() const { return world_.settings.sleeping; }
   bool ObjectAsleep(int object) const;
   int SleepingObjectCount() const;
-  void SetSolver(const SolverSettings& solver) { solver_ = solver; }
-  const SolverSettings& solver() const { return solver_; }
+  void SetSolver(const SolverSettings& solver);
+  SolverSettings solver() const { return world_.settings.solver_settings(); }
   /// Back to the initial poses and velocities of the world description, time 0.
   void Reset();
   SimState GetState() const;
@@ -321,7 +308,6 @@ class Simulator {
   ContactFeedbackRecord* FindFeedback(int a, int b);
 
   WorldDesc world_;
-  SolverSettings solver_;
   Diagnostics diagnostics_;
   CollisionGeometryCache geometry_cache_;
   std::unique_ptr<dxWorld, void (*)(dxWorld*)> ode_world_;
@@ -343,7 +329,6 @@ class Simulator {
   std::vector<std::pair<int, int>> saved_candidates_;  ///< broad phase of saved_pairs_
   SimState rollback_state_;                            ///< state at the start of a tentative step
   std::vector<FrictionAnchor> anchors_;                ///< pairs that stick, sorted by (a, b)
-  bool sleeping_ = false;                              ///< SetSleeping
   std::vector<ObjectSleep> sleep_;                     ///< per rigid object
   std::vector<int> sleep_islands_;                ///< scratch of UpdateSleep: union-find parents
   std::vector<char> sleep_ready_, island_ready_;  ///< scratch of UpdateSleep

@@ -115,7 +115,7 @@ void Simulator::PrepareRobotsForStep(double step) {
     robot.GetConfig(&scratch.q);
     robot.GetVelocity(&scratch.dq);
     robot.PrepareStep(scratch.q, step, world_.settings.erp);
-    if (solver_.type == SolverType::kStep) {
+    if (world_.settings.solver == SolverType::kStep) {
       controllers_[r].ComputeImplicitServo(scratch.q, scratch.dq, step, &scratch.forces,
                                            &scratch.motors);
     } else {

@@ -34,7 +34,7 @@ bool KinematicMoves(dBodyID body) {
 }  // namespace
 
 void Simulator::SetSleeping(bool on) {
-  sleeping_ = on;
+  world_.settings.sleeping = on;
   if (on) return;
   for (int i = 0; i < object_count(); ++i) {
     sleep_[i].idle_time = 0.0;
@@ -126,9 +126,9 @@ void Simulator::WakeTouchedSleepers() {
 }
 
 // after an accepted step: idle times, then every island of touching objects whose members have
-// all been idle for kSleepTime, and that touches no robot and no moving kinematic body, sleeps
+// all been idle for sleep_time, and that touches no robot and no moving kinematic body, sleeps
 void Simulator::UpdateSleep(double step) {
-  if (!sleeping_) return;
+  if (!world_.settings.sleeping) return;
   const int count = object_count();
   for (int i = 0; i < count; ++i) {
     const BodyRecord& body = bodies_[object_ids_[i]];
@@ -138,7 +138,7 @@ void Simulator::UpdateSleep(double step) {
       sleep_[i].idle_time = 0.0;
     }
     if (!body.moves_freely() || sleep_[i].asleep) continue;
-    sleep_[i].idle_time = Speed(body.body) < kSleepSpeed ? sleep_[i].idle_time + step : 0.0;
+    sleep_[i].idle_time = Speed(body.body) < world_.settings.sleep_speed ? sleep_[i].idle_time + step : 0.0;
   }
   std::vector<int>& parent = sleep_islands_;
   parent.resize(count);
@@ -148,7 +148,7 @@ void Simulator::UpdateSleep(double step) {
   ready.assign(count, 0);
   for (int i = 0; i < count; ++i) {
     const BodyRecord& body = bodies_[object_ids_[i]];
-    ready[i] = body.moves_freely() && sleep_[i].idle_time >= kSleepTime && body.force.isZero(0.0) &&
+    ready[i] = body.moves_freely() && sleep_[i].idle_time >= world_.settings.sleep_time && body.force.isZero(0.0) &&
                body.torque.isZero(0.0);
   }
   for (const ContactPair& pair : pairs_) {

@@ -36,7 +36,7 @@ TEST(RunCommandTest, JsonReportsFreeFallBeforeImpact) {
   EXPECT_EQ(sphere["quaternion"][0], 1.0);
 }
 
-// --sleep: the tower of stacktest.xml settles and sleeps as one island after kSleepTime idle
+// --sleep: the tower of stacktest.xml settles and sleeps as one island after sleepTime idle
 TEST(RunCommandTest, SleepLetsTheSettledTowerSleep) {
   const std::string world = test::WorldsPath("klampt/simulation_test_worlds/stacktest.xml");
   const CommandResult awake = RunHeadless("run --json --duration 2 " + world);

@@ -58,7 +58,7 @@ double SlideDistance(const Vec3& direction, double speed, double mu) {
   }
   const double distance = simulator.GetObjectPose(0).translation().head<2>().norm();
   // once it stops, its friction anchor takes back at most the drift allowed while sticking
-  EXPECT_GE(distance, farthest - core::kAnchorMaxSlip);
+  EXPECT_GE(distance, farthest - core::SimSettings{}.friction_anchor_slip);
   return distance;
 }
 

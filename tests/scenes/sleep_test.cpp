@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Sleeping (Simulator::SetSleeping): an object idle for kSleepTime leaves the steps and stays
+// Sleeping (Simulator::SetSleeping): an object idle for sleepTime (0.5 s) leaves the steps and stays
 // exactly where it is; what touches it, a setter, a force or a gravity change wakes it; islands
 // of touching objects fall asleep together; restoring a state restores who sleeps.
 #include <vector>
@@ -49,9 +49,10 @@ TEST(SleepTest, AnIdleBoxSleepsAfterSleepTimeAndStaysExactlyPut) {
   core::Simulator simulator(BoxesOnPlane({Vec3(0, 0, kRest + 0.01)}));  // dropped from 1 cm
   simulator.SetSleeping(true);
   const double asleep_at = TimeToSleep(simulator, 0, 3.0);
-  // it lands after about 45 ms and settles; then kSleepTime idle
-  ASSERT_GT(asleep_at, core::kSleepTime);
-  EXPECT_LT(asleep_at, core::kSleepTime + 0.5);
+  // it lands after about 45 ms and settles; then sleepTime idle
+  const double sleep_time = simulator.world().settings.sleep_time;
+  ASSERT_GT(asleep_at, sleep_time);
+  EXPECT_LT(asleep_at, sleep_time + 0.5);
   EXPECT_EQ(simulator.SleepingObjectCount(), 1);
   const core::Pose pose = simulator.GetObjectPose(0);
   EXPECT_NEAR(pose.translation().z(), kRest, 5e-4);

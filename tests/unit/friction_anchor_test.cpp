@@ -71,13 +71,14 @@ TEST(FrictionAnchorTest, DriftIsRelativeToTheOtherBody) {
 TEST(FrictionAnchorTest, CorrectionTakesBackAFractionOfTheDriftPerStep) {
   const double step = 0.001;
   const Vec3 drift(3e-5, -4e-5, 0.0);  // 50 µm
-  const Vec3 velocity = AnchorCorrectionVelocity(drift, step);
-  EXPECT_NEAR((velocity + kAnchorErp * drift / step).norm(), 0.0, kTight);
+  const double gain = 0.2;
+  const Vec3 velocity = AnchorCorrectionVelocity(drift, step, gain);
+  EXPECT_NEAR((velocity + gain * drift / step).norm(), 0.0, kTight);
   // a large drift is taken back no faster than the cap
   const Vec3 large(4e-4, 0.0, 0.0);
-  EXPECT_NEAR(AnchorCorrectionVelocity(large, step).x(), -kAnchorMaxCorrectionSpeed, kTight);
+  EXPECT_NEAR(AnchorCorrectionVelocity(large, step, gain).x(), -kAnchorMaxCorrectionSpeed, kTight);
   // rounding-sized drift is left alone
-  EXPECT_EQ(AnchorCorrectionVelocity(Vec3(1e-12, 0, 0), step), Vec3::Zero());
+  EXPECT_EQ(AnchorCorrectionVelocity(Vec3(1e-12, 0, 0), step, gain), Vec3::Zero());
 }
 
 TEST(FrictionAnchorTest, AnchorsAreFoundByPairAndForgottenByBody) {

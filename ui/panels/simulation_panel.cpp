@@ -32,7 +32,7 @@ void DrawTransport(ViewerState* state) {
   ImGui::Checkbox("sleep idle objects", &state->sleep);
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("objects idle for %.1f s leave the steps until something touches them",
-                      core::kSleepTime);
+                      core::SimSettings{}.sleep_time);
   }
 }
 
