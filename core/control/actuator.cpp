@@ -33,9 +33,6 @@ bool IsContinuousDriver(const DriverDesc& driver, bool revolute) {
 ActuatorState InitialActuatorState(const DriverDesc& driver, bool revolute, double q) {
   ActuatorState state;
   state.mode = ActuatorMode::kPid;
-  state.kp = driver.servo_p;
-  state.ki = driver.servo_i;
-  state.kd = driver.servo_d;
   state.q_des = q;
   state.relative_encoding = IsContinuousDriver(driver, revolute);
   return state;
@@ -50,8 +47,9 @@ double ActuatorEffort(const ActuatorState& state, const DriverDesc& driver, doub
     case ActuatorMode::kTorque:
       return Clamp(state.torque, driver.torque_min, driver.torque_max);
     case ActuatorMode::kPid: {
-      const double effort = state.kp * PositionError(state, q) + state.kd * (state.dq_des - dq) +
-                            state.ki * state.i_term + state.torque;
+      const double effort = driver.servo_p * PositionError(state, q) +
+                            driver.servo_d * (state.dq_des - dq) + driver.servo_i * state.i_term +
+                            state.torque;
       return Clamp(effort, driver.torque_min, driver.torque_max);
     }
     case ActuatorMode::kOff:
@@ -64,7 +62,7 @@ double ActuatorEffort(const ActuatorState& state, const DriverDesc& driver, doub
 void IntegrateActuator(const DriverDesc& driver, double q, double h, ActuatorState* state) {
   if (state->mode == ActuatorMode::kPid) {
     state->i_term += PositionError(*state, q) * h;
-    state->i_term = AntiWindup(state->i_term, state->ki, driver.torque_min, driver.torque_max);
+    state->i_term = AntiWindup(state->i_term, driver.servo_i, driver.torque_min, driver.torque_max);
   } else if (state->mode == ActuatorMode::kLockedVelocity) {
     state->q_des += state->dq_des * h;
   }

@@ -17,11 +17,11 @@ enum class ActuatorMode {
 };
 
 /// The command state of one driver. Units are the driver's: rad or m for q, N·m or N for efforts.
+/// The gains are the driver's (DriverDesc::servo_p/i/d, read at every use): parameters, not
+/// state, so that a gain edited live survives SetState and Reset (Klamp't's setPIDGains writes
+/// the robot's drivers too).
 struct ActuatorState {
   ActuatorMode mode = ActuatorMode::kPid;
-  double kp = 0;      ///< N·m/rad (or N/m)
-  double ki = 0;      ///< N·m/(rad·s)
-  double kd = 0;      ///< N·m·s/rad
   double q_des = 0;   ///< desired driver value
   double dq_des = 0;  ///< desired driver velocity, per s
   double i_term = 0;  ///< integral of the position error, rad·s (or m·s)
@@ -36,21 +36,21 @@ struct ActuatorState {
 /// (Klamp't "relative encoding"). `revolute` says whether the driven link is revolute.
 bool IsContinuousDriver(const DriverDesc& driver, bool revolute);
 
-/// The initial state of a driver at value `q`: PID mode holding q with the driver's servo gains,
-/// zero integral and feed-forward; relative encoding per IsContinuousDriver.
+/// The initial state of a driver at value `q`: PID mode holding q, zero integral and
+/// feed-forward; relative encoding per IsContinuousDriver.
 ActuatorState InitialActuatorState(const DriverDesc& driver, bool revolute, double q);
 
 /// The position error q_des − q; the shortest angle AngleDiff(q_des, q) for relative encoding.
 double PositionError(const ActuatorState& state, double q);
 
 /// The clamped effort of the driver at value q and velocity dq (N·m or N):
-/// PID: kp·Δq + kd·(dq_des − dq) + ki·i_term + torque; torque mode: torque; both clamped to
-/// [driver.torque_min, driver.torque_max] (read live). Off and locked velocity: 0.
-/// Never changes the state (may be called again when the simulator retakes a step).
+/// PID: servo_p·Δq + servo_d·(dq_des − dq) + servo_i·i_term + torque; torque mode: torque; both
+/// clamped to [driver.torque_min, driver.torque_max] (read live). Off and locked velocity: 0. Never
+/// changes the state (may be called again when the simulator retakes a step).
 double ActuatorEffort(const ActuatorState& state, const DriverDesc& driver, double q, double dq);
 
 /// Advances the state after an accepted physics step of `h` s ending at value q: PID mode adds
-/// Δq·h to the integral with anti-windup (ki·i_term kept inside [torque_min, torque_max]);
+/// Δq·h to the integral with anti-windup (servo_i·i_term kept inside [torque_min, torque_max]);
 /// locked velocity moves q_des by dq_des·h.
 void IntegrateActuator(const DriverDesc& driver, double q, double h, ActuatorState* state);
 

@@ -9,11 +9,11 @@
 namespace lamina::core {
 
 bool RobotController::ServoDriver(int d) const {
-  const DriverDesc& driver = drivers_[d];
+  const DriverDesc& driver = robot_->drivers[d];
   const ActuatorState& state = actuators_[d];
   // ODE bounds a motor by ±fmax: limits that do not straddle zero stay explicit
   return UsableDriver(d) && driver.type == DriverType::kNormal &&
-         state.mode == ActuatorMode::kPid && (state.kp > 0.0 || state.kd > 0.0) &&
+         state.mode == ActuatorMode::kPid && (driver.servo_p > 0.0 || driver.servo_d > 0.0) &&
          driver.torque_min <= 0.0 && driver.torque_max >= 0.0;
 }
 
@@ -31,19 +31,20 @@ void RobotController::ComputeImplicitServo(const VecX& q, const VecX& dq, double
   if (q.size() != dof() || dq.size() != dof()) return;
   for (int d = 0; d < driver_count(); ++d) {
     if (!ServoDriver(d)) continue;
-    const DriverDesc& driver = drivers_[d];
+    const DriverDesc& driver = robot_->drivers[d];
     const ActuatorState& state = actuators_[d];
     // with unlimited torque, viscous joint friction is one more damper of the same row (solved
     // implicitly too); a limited actuator must not clamp the friction, which stays separate
     const bool unlimited = std::isinf(driver.torque_max) && std::isinf(driver.torque_min);
     const double viscous = unlimited ? std::max(0.0, driver.viscous_friction) : 0.0;
-    const double stiffness = state.kp * h + state.kd + viscous;
+    const double stiffness = driver.servo_p * h + driver.servo_d + viscous;
     ServoMotorCommand motor;
     motor.link = driver.links[0];
     motor.includes_viscous = unlimited;
-    motor.velocity = (state.kp * PositionError(state, DriverValue(d, q)) + state.kd * state.dq_des +
-                      state.ki * state.i_term + state.torque) /
-                     stiffness;
+    motor.velocity =
+        (driver.servo_p * PositionError(state, DriverValue(d, q)) + driver.servo_d * state.dq_des +
+         driver.servo_i * state.i_term + state.torque) /
+        stiffness;
     motor.cfm = 1.0 / stiffness;
     motor.fmax = std::min(driver.torque_max, -driver.torque_min);
     motors->push_back(motor);

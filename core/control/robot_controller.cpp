@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <regex>
 #include <utility>
 
@@ -111,25 +112,38 @@ double ControlPeriodFromProperty(const std::string& xml) {
 }
 
 RobotController::RobotController(const RobotDesc& robot)
-    : robot_(robot),
-      drivers_(robot.drivers),
-      limits_(LinkRampLimits(robot)),
-      queue_(limits_),
-      sensed_q_(robot.InitialConfig()),
-      sensed_dq_(robot.InitialVelocity()) {
-  for (LinkDesc& link : robot_.links) link.geometry.clear();
-  robot_.drivers.clear();  // drivers_ is the live copy
+    : RobotController(std::make_shared<RobotDesc>(robot)) {}
+
+RobotController::RobotController(std::shared_ptr<RobotDesc> robot)
+    : owned_(std::move(robot)), robot_(owned_.get()) {
+  Initialize();
+}
+
+RobotController RobotController::ViewOf(RobotDesc* robot) {
+  return RobotController(robot);
+}
+
+RobotController::RobotController(RobotDesc* robot) : robot_(robot) {
+  Initialize();
+}
+
+void RobotController::Initialize() {
+  const RobotDesc& robot = *robot_;
+  limits_ = LinkRampLimits(robot);
+  queue_ = MotionQueue(limits_);
+  sensed_q_ = robot.InitialConfig();
+  sensed_dq_ = robot.InitialVelocity();
   for (const JointDesc& joint : robot.joints) floating_base_ |= IsFloatingJoint(joint.type);
-  actuators_.reserve(drivers_.size());
+  actuators_.reserve(robot.drivers.size());
   for (int d = 0; d < driver_count(); ++d) {
-    const DriverDesc& driver = drivers_[d];
+    const DriverDesc& driver = robot.drivers[d];
     const bool revolute =
         UsableDriver(d) && robot.links[driver.links[0]].axis_type == LinkJointAxis::kRevolute;
     const double q = UsableDriver(d) ? DriverValue(d, sensed_q_) : 0.0;
     actuators_.push_back(InitialActuatorState(driver, revolute, q));
   }
   driven_.assign(robot.links.size(), false);
-  for (const DriverDesc& driver : drivers_) {
+  for (const DriverDesc& driver : robot.drivers) {
     for (const int link : driver.links) {
       if (link >= 0 && link < dof()) driven_[link] = true;
     }
@@ -141,16 +155,8 @@ RobotController::RobotController(const RobotDesc& robot)
   }
 }
 
-void RobotController::ApplyDriverGains() {
-  for (int d = 0; d < driver_count(); ++d) {
-    actuators_[d].kp = drivers_[d].servo_p;
-    actuators_[d].ki = drivers_[d].servo_i;
-    actuators_[d].kd = drivers_[d].servo_d;
-  }
-}
-
 bool RobotController::UsableDriver(int d) const {
-  const DriverDesc& driver = drivers_[d];
+  const DriverDesc& driver = robot_->drivers[d];
   if (driver.links.empty()) return false;
   for (int link : driver.links) {
     if (link < 0 || link >= dof()) return false;
@@ -163,7 +169,7 @@ bool RobotController::UsableDriver(int d) const {
 
 double RobotController::DriverValue(int d, const VecX& q) const {
   if (!UsableDriver(d)) return 0;
-  const DriverDesc& driver = drivers_[d];
+  const DriverDesc& driver = robot_->drivers[d];
   if (driver.type != DriverType::kAffine) return q[driver.links[0]];
   const size_t j = static_cast<size_t>(AffineReadIndex(driver));
   return (q[driver.links[j]] - AffineOffset(driver, j)) / driver.affine_scale[j];
@@ -171,7 +177,7 @@ double RobotController::DriverValue(int d, const VecX& q) const {
 
 double RobotController::DriverVelocity(int d, const VecX& dq) const {
   if (!UsableDriver(d)) return 0;
-  const DriverDesc& driver = drivers_[d];
+  const DriverDesc& driver = robot_->drivers[d];
   if (driver.type != DriverType::kAffine) return dq[driver.links[0]];
   const size_t j = static_cast<size_t>(AffineReadIndex(driver));
   return dq[driver.links[j]] / driver.affine_scale[j];
@@ -194,7 +200,7 @@ VecX RobotController::LinkValuesFromDrivers(const VecX& driver_values, const Vec
   VecX out = base;
   for (int d = 0; d < driver_count() && d < driver_values.size(); ++d) {
     if (!UsableDriver(d)) continue;
-    const DriverDesc& driver = drivers_[d];
+    const DriverDesc& driver = robot_->drivers[d];
     if (driver.type != DriverType::kAffine) {
       out[driver.links[0]] = driver_values[d];
       continue;
@@ -211,7 +217,7 @@ VecX RobotController::DriverForcesFromLinks(const VecX& link_forces) const {
   VecX forces = VecX::Zero(driver_count());
   for (int d = 0; d < driver_count(); ++d) {
     if (!UsableDriver(d)) continue;
-    const DriverDesc& driver = drivers_[d];
+    const DriverDesc& driver = robot_->drivers[d];
     if (driver.type != DriverType::kAffine) {
       forces[d] = link_forces[driver.links[0]];
       continue;
@@ -231,7 +237,7 @@ VecX RobotController::DriverEfforts(const VecX& q, const VecX& dq) const {
   for (int d = 0; d < driver_count(); ++d) {
     if (!UsableDriver(d)) continue;
     efforts[d] =
-        ActuatorEffort(actuators_[d], drivers_[d], DriverValue(d, q), DriverVelocity(d, dq));
+        ActuatorEffort(actuators_[d], robot_->drivers[d], DriverValue(d, q), DriverVelocity(d, dq));
   }
   return efforts;
 }
@@ -246,7 +252,7 @@ void RobotController::AddDriverForces(const VecX& q, const VecX& dq, bool skip_s
   if (q.size() != dof() || dq.size() != dof()) return;
   for (int d = 0; d < driver_count(); ++d) {
     if (!UsableDriver(d) || (skip_servos && ServoDriver(d))) continue;
-    const DriverDesc& driver = drivers_[d];
+    const DriverDesc& driver = robot_->drivers[d];
     const double effort =
         ActuatorEffort(actuators_[d], driver, DriverValue(d, q), DriverVelocity(d, dq));
     if (driver.type != DriverType::kAffine) {
@@ -266,7 +272,7 @@ void RobotController::AddDriverForces(const VecX& q, const VecX& dq, bool skip_s
 // 10·max torque_max of the links (when finite).
 void RobotController::AddAffineCorrection(int d, const VecX& q, const VecX& dq,
                                           VecX* link_forces) const {
-  const DriverDesc& driver = drivers_[d];
+  const DriverDesc& driver = robot_->drivers[d];
   const ActuatorState& state = actuators_[d];
   const size_t n = std::min(driver.links.size(), driver.affine_scale.size());
   VecX scale(static_cast<Eigen::Index>(n)), correction(static_cast<Eigen::Index>(n));
@@ -276,8 +282,9 @@ void RobotController::AddAffineCorrection(int d, const VecX& q, const VecX& dq,
     const double q_des = AffineOffset(driver, j) + driver.affine_scale[j] * state.q_des;
     const double dq_des = driver.affine_scale[j] * state.dq_des;
     scale[j] = driver.affine_scale[j];
-    correction[j] = 0.25 * state.kp * (q_des - q[link]) + 0.001 * state.kp * (dq_des - dq[link]);
-    cap = std::max(cap, std::abs(robot_.links[link].torque_max));
+    correction[j] =
+        0.25 * driver.servo_p * (q_des - q[link]) + 0.001 * driver.servo_p * (dq_des - dq[link]);
+    cap = std::max(cap, std::abs(robot_->links[link].torque_max));
   }
   correction -= scale * (scale.dot(correction) / scale.squaredNorm());
   cap *= 10;
@@ -290,7 +297,8 @@ void RobotController::AddAffineCorrection(int d, const VecX& q, const VecX& dq,
 void RobotController::AcceptStep(const VecX& q, double h) {
   if (q.size() != dof() || !(h >= 0)) return;
   for (int d = 0; d < driver_count(); ++d) {
-    if (UsableDriver(d)) IntegrateActuator(drivers_[d], DriverValue(d, q), h, &actuators_[d]);
+    if (UsableDriver(d))
+      IntegrateActuator(robot_->drivers[d], DriverValue(d, q), h, &actuators_[d]);
   }
 }
 
@@ -336,7 +344,7 @@ void RobotController::SetTargetsFromQueue() {
   queue_.Velocity(&dq);
   const bool feed_forward = gravity_compensation_ && !floating_base_;
   const VecX torque_ff =
-      feed_forward ? DriverForcesFromLinks(GravityTorques(robot_, sensed_q_, gravity_)) : VecX();
+      feed_forward ? DriverForcesFromLinks(GravityTorques(*robot_, sensed_q_, gravity_)) : VecX();
   for (int d = 0; d < driver_count(); ++d) {
     if (!UsableDriver(d)) continue;
     ActuatorState& state = actuators_[d];
@@ -419,9 +427,9 @@ bool RobotController::SetPIDGains(const VecX& kp, const VecX& ki, const VecX& kd
     return Fail("SetPIDGains: gains must be finite and >= 0");
   }
   for (int d = 0; d < driver_count(); ++d) {
-    drivers_[d].servo_p = actuators_[d].kp = kp[d];
-    drivers_[d].servo_i = actuators_[d].ki = ki[d];
-    drivers_[d].servo_d = actuators_[d].kd = kd[d];
+    robot_->drivers[d].servo_p = kp[d];
+    robot_->drivers[d].servo_i = ki[d];
+    robot_->drivers[d].servo_d = kd[d];
   }
   return Succeed();
 }
@@ -431,9 +439,9 @@ void RobotController::GetPIDGains(VecX* kp, VecX* ki, VecX* kd) const {
   ki->resize(driver_count());
   kd->resize(driver_count());
   for (int d = 0; d < driver_count(); ++d) {
-    (*kp)[d] = actuators_[d].kp;
-    (*ki)[d] = actuators_[d].ki;
-    (*kd)[d] = actuators_[d].kd;
+    (*kp)[d] = robot_->drivers[d].servo_p;
+    (*ki)[d] = robot_->drivers[d].servo_i;
+    (*kd)[d] = robot_->drivers[d].servo_d;
   }
 }
 

@@ -6,6 +6,7 @@
 // "Controller").
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -60,23 +61,24 @@ inline constexpr double kDefaultAccelerationMax = 10.0;
 ///   link's axis).
 class RobotController {
  public:
-  /// Copies the robot (robot() keeps no geometry and no drivers) and its drivers (drivers()).
-  /// Sensed and commanded state start at robot.config (zero if it has the wrong size) and
-  /// robot.velocity; every driver starts in PID mode holding its current value with its servo
-  /// gains. The control period is 1/rate (or timeStep) of the `controller` property when given,
-  /// else kDefaultControlPeriod.
+  /// A controller with its own copy of the robot (shared by copies of this controller). Sensed
+  /// and commanded state start at robot.config (zero if it has the wrong size) and
+  /// robot.velocity; every driver starts in PID mode holding its current value. The control
+  /// period is 1/rate (or timeStep) of the `controller` property when given, else
+  /// kDefaultControlPeriod.
   explicit RobotController(const RobotDesc& robot);
+  /// A controller of `robot` itself, which must outlive it: the simulator's, so that its robot
+  /// description is the only copy of the driver data (gains, friction and torque limits edited
+  /// on either are the same values, survive Reset and are saved).
+  static RobotController ViewOf(RobotDesc* robot);
 
-  int dof() const { return robot_.dof(); }
-  int driver_count() const { return static_cast<int>(drivers_.size()); }
-  const RobotDesc& robot() const { return robot_; }
+  int dof() const { return robot_->dof(); }
+  int driver_count() const { return static_cast<int>(robot_->drivers.size()); }
+  const RobotDesc& robot() const { return *robot_; }
 
-  /// Live-editable drivers: torque limits and friction are read at every use. After editing servo
-  /// gains here call ApplyDriverGains() (the actuators hold the active gains).
-  std::vector<DriverDesc>& drivers() { return drivers_; }
-  const std::vector<DriverDesc>& drivers() const { return drivers_; }
-  /// Copies each driver's servo_p/i/d into its actuator.
-  void ApplyDriverGains();
+  /// The robot's drivers: gains, torque limits and friction are read at every use.
+  std::vector<DriverDesc>& drivers() { return robot_->drivers; }
+  const std::vector<DriverDesc>& drivers() const { return robot_->drivers; }
   std::vector<ActuatorState>& actuators() { return actuators_; }
   const std::vector<ActuatorState>& actuators() const { return actuators_; }
 
@@ -133,6 +135,8 @@ class RobotController {
   bool Update(double time, const VecX& sensed_q, const VecX& sensed_dq);
   /// Gravity compensation feed-forward (off by default; ignored for floating-base robots).
   void SetGravityCompensation(bool on, const Vec3& gravity = Vec3(0, 0, -9.8));
+  /// The gravity the compensation balances (the simulator keeps it equal to the world's).
+  void SetGravity(const Vec3& gravity) { gravity_ = gravity; }
   bool gravity_compensation() const { return gravity_compensation_; }
 
   // ---- Klamp't commands ----------------------------------------------------------------
@@ -141,7 +145,7 @@ class RobotController {
   /// both sizes are equal) and feed-forward τ_ff (0 if omitted); keeps the integrals; manual on.
   bool SetPIDCommand(const VecX& q, const VecX& dq);
   bool SetPIDCommand(const VecX& q, const VecX& dq, const VecX& torque_ff);
-  /// Driver-sized gains.
+  /// Driver-sized gains, written into the drivers (as Klamp't's setPIDGains writes the robot's).
   bool SetPIDGains(const VecX& kp, const VecX& ki, const VecX& kd);
   void GetPIDGains(VecX* kp, VecX* ki, VecX* kd) const;
   /// Torque mode on every driver (link- or driver-sized); manual on.
@@ -188,6 +192,9 @@ class RobotController {
   const std::string& last_error() const { return last_error_; }
 
  private:
+  explicit RobotController(std::shared_ptr<RobotDesc> robot);
+  explicit RobotController(RobotDesc* robot);
+  void Initialize();
   bool UsableDriver(int d) const;
   bool AllPid() const;
   // Checks a link-sized vector (finite entries).
@@ -212,11 +219,11 @@ class RobotController {
   bool Fail(std::string message);
   bool Succeed();
 
-  RobotDesc robot_;
-  std::vector<DriverDesc> drivers_;
+  std::shared_ptr<RobotDesc> owned_;  ///< the robot when this controller keeps its own copy
+  RobotDesc* robot_ = nullptr;        ///< the robot: owned_, or the simulator's description
   std::vector<ActuatorState> actuators_;
   JointLimits limits_;
-  MotionQueue queue_;
+  MotionQueue queue_{JointLimits{}};
   VecX sensed_q_;
   VecX sensed_dq_;
   double control_period_ = kDefaultControlPeriod;

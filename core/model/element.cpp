@@ -10,8 +10,7 @@ std::string Count(size_t count, const char* singular, const char* plural) {
 }
 
 std::optional<std::string> CheckIndex(const std::string& path, int index, size_t count,
-                                      const char* what, const char* singular,
-                                      const char* plural) {
+                                      const char* what, const char* singular, const char* plural) {
   if (index >= 0 && static_cast<size_t>(index) < count) return std::nullopt;
   return path + ": " + what + " has " + Count(count, singular, plural);
 }
@@ -53,8 +52,8 @@ std::optional<std::string> CheckElement(const WorldDesc& world, const ElementInd
       break;
   }
   const std::string robot_path = "robots[" + std::to_string(element.index) + "]";
-  if (auto error = CheckIndex(robot_path, element.index, world.robots.size(), "the world",
-                              "robot", "robots")) {
+  if (auto error = CheckIndex(robot_path, element.index, world.robots.size(), "the world", "robot",
+                              "robots")) {
     return error;
   }
   const RobotDesc& robot = world.robots[element.index];

@@ -68,7 +68,7 @@ struct ParamSpec {
   /// True for Klamp't's own attributes (always written); false for Lamina's additions, which the
   /// writer leaves out while they hold their default.
   bool klampt;
-  std::string_view help;  ///< one line
+  std::string_view help;                      ///< one line
   std::span<const std::string_view> choices;  ///< kChoice: names by index
   ParamValue (*get)(const WorldDesc& world, const ElementIndex& element);
   /// Writes without checking (callers check first with CheckParam or SetParam).

@@ -1,8 +1,5 @@
 // SPDX-License-Identifier: MIT
 // SimBody: the per-body handle of a Simulator (declared in simulator.h, which it needs whole).
-#include <cmath>
-#include <stdexcept>
-
 #include "core/sim/simulator.h"
 
 namespace lamina::core {
@@ -49,16 +46,7 @@ SurfaceDesc SimBody::GetSurface() const {
 }
 
 void SimBody::SetSurface(const SurfaceDesc& surface) {
-  const bool valid = surface.restitution >= 0.0 && std::isfinite(surface.restitution) &&
-                     surface.friction >= 0.0 && surface.stiffness >= 0.0 && surface.damping >= 0.0;
-  if (!valid) {
-    throw std::invalid_argument(
-        "a surface needs finite restitution >= 0 and friction, stiffness, damping >= 0 (inf "
-        "allowed)");
-  }
-  if (BodySimParams* params = simulator_->mutable_sim_params(id_)) params->surface = surface;
-  simulator_->WakeBody(id_);
-  simulator_->WakeTouching(id_);
+  simulator_->SetBodySurface(id_, surface);
 }
 
 double SimBody::GetPadding() const {

@@ -115,6 +115,17 @@ Simulator::Simulator(const WorldDesc& world)
       ode_world_(nullptr, [](dxWorld* w) { dWorldDestroy(w); }),
       contact_group_(nullptr, [](dxJointGroup* g) { dJointGroupDestroy(g); }) {
   EnsureOdeInitialized();
+  Build();
+  ApplyInitialState();
+}
+
+Simulator::~Simulator() {
+  TearDown();
+}
+
+// the ODE world, bodies, robots and controllers of world_ (at the initial state)
+void Simulator::Build() {
+  diagnostics_ = Diagnostics();
   ode_world_.reset(dWorldCreate());
   contact_group_.reset(dJointGroupCreate(0));
   dWorldSetERP(ode_world_.get(), world_.settings.erp);
@@ -122,10 +133,37 @@ Simulator::Simulator(const WorldDesc& world)
   dWorldSetAutoDisableFlag(ode_world_.get(), 0);
   SetGravity(world_.settings.gravity);
   BuildBodies();
-  ApplyInitialState();
+  sleep_.assign(object_ids_.size(), ObjectSleep{});
+  halted_ = false;
 }
 
-Simulator::~Simulator() = default;
+// everything Build made; the robots first (they destroy their own joints and bodies)
+void Simulator::TearDown() {
+  robots_.clear();
+  controllers_.clear();
+  robot_scratch_.clear();
+  self_collision_pairs_.clear();
+  bodies_.clear();
+  object_ids_.clear();
+  pairs_.clear();
+  saved_pairs_.clear();
+  candidates_.clear();
+  saved_candidates_.clear();
+  anchors_.clear();
+  sleep_.clear();
+  joint_feedback_.clear();
+  contacts_current_ = false;
+  contact_group_.reset();
+  ode_world_.reset();
+}
+
+// MuJoCo's mj_recompile: a new simulation of world_ in the state `state` (time, bodies, robots,
+// controllers, anchors, sleep); statistics and contact-feedback registrations are kept
+void Simulator::RebuildWith(const SimState& state) {
+  TearDown();
+  Build();
+  SetState(state);
+}
 
 int Simulator::body_count() const {
   return static_cast<int>(bodies_.size());
@@ -210,7 +248,8 @@ void Simulator::ApplyInitialState() {
     const RobotDesc& robot = world_.robots[r];
     SetRobotConfig(r, robot.InitialConfig());
     SetRobotVelocity(r, robot.InitialVelocity());
-    controllers_[r] = RobotController(robot);
+    controllers_[r] = RobotController::ViewOf(&world_.robots[r]);
+    controllers_[r].SetGravity(world_.settings.gravity);
   }
   anchors_.clear();
   for (int i = 0; i < static_cast<int>(sleep_.size()); ++i) {
@@ -221,6 +260,10 @@ void Simulator::ApplyInitialState() {
 }
 
 void Simulator::Reset() {
+  if (halted_) {
+    TearDown();
+    Build();
+  }
   time_ = 0.0;
   statistics_ = SimStatistics();
   for (BodyRecord& body : bodies_) {
@@ -231,19 +274,9 @@ void Simulator::Reset() {
   ApplyInitialState();
 }
 
-void Simulator::SetSimStep(double step) {
-  if (step > 0.0 && std::isfinite(step)) world_.settings.timestep = step;
-}
-
 void Simulator::SetSolver(const SolverSettings& solver) {
   world_.settings.solver = solver.type;
   world_.settings.quick_step_iterations = solver.quick_step_iterations;
-}
-
-void Simulator::SetGravity(const Vec3& gravity) {
-  world_.settings.gravity = gravity;
-  dWorldSetGravity(ode_world_.get(), gravity.x(), gravity.y(), gravity.z());
-  for (int id : object_ids_) WakeBody(id);
 }
 
 void Simulator::ForgetEnergies() {
@@ -403,18 +436,6 @@ void Simulator::SetBodyVelocity(int id, const Twist& velocity) {
   WakeBody(id);
 }
 
-void Simulator::SetBodyPadding(int id, double padding) {
-  if (!(padding >= 0.0) || !std::isfinite(padding)) {
-    throw std::invalid_argument("a padding must be finite and >= 0");
-  }
-  BodySimParams* params = mutable_sim_params(id);
-  if (params == nullptr) return;
-  params->padding = padding;
-  RebuildCollisionGeometry(id);
-  WakeBody(id);
-  WakeTouching(id);
-}
-
 void Simulator::AddBodyForce(int id, const Vec3& force, const Vec3& point) {
   RequireFinite(force.allFinite() && point.allFinite(), "an applied force");
   BodyRecord* body = record(id);
@@ -475,6 +496,8 @@ void Simulator::CaptureBodyState(SimState* state, bool with_controllers) const {
 }
 
 void Simulator::SetState(const SimState& state) {
+  // ODE cannot be trusted after one of its errors: a stopped simulation is built anew
+  if (halted_) RebuildWith(state);
   RestoreState(state);
   RestoreControllers(state);
   ForgetEnergies();
@@ -499,7 +522,7 @@ void Simulator::RestoreState(const SimState& state) {
 // ---- stepping ---------------------------------------------------------------------------
 
 StepStatus Simulator::Simulate(double dt) {
-  if (statistics_.worst_status == StepStatus::kError) return StepStatus::kError;
+  if (halted_) return StepStatus::kError;
   Stopwatch total;
   const SimTimeSplit before = statistics_.time_split;
   for (ContactFeedbackRecord& record : feedback_) record.BeginCall();
@@ -546,6 +569,7 @@ StepStatus Simulator::Step(double step) {
     if (result == IntegrateResult::kOdeError) {
       // ODE's internal state cannot be trusted after one of its errors
       statistics_.worst_status = StepStatus::kError;
+      halted_ = true;
       return StepStatus::kError;
     }
     if (result == IntegrateResult::kNonFinite) {
@@ -553,6 +577,7 @@ StepStatus Simulator::Step(double step) {
       if (recovered || !RecoverFromFailedStep()) {
         statistics_.error = "a body state became non-finite at t = " + std::to_string(time_) + " s";
         statistics_.worst_status = StepStatus::kError;
+        halted_ = true;
         return StepStatus::kError;
       }
       recovered = true;
@@ -775,7 +800,8 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     const Vec3* anchor_velocities = anchor_velocities_.data();
     for (const ContactPair& pair : pairs_) {
       // no joint ties a sleeper to what cannot wake it (ODE would enable it through the joint)
-      if (!world_.settings.sleeping || !SleepsAgainstInert(pair)) AddContactJoints(pair, anchor_velocities, step);
+      if (!world_.settings.sleeping || !SleepsAgainstInert(pair))
+        AddContactJoints(pair, anchor_velocities, step);
       anchor_velocities += pair.contacts.size();
     }
     joint_feedback_.resize(next_feedback_slot_);  // slots of pairs that made no joint
@@ -1040,7 +1066,8 @@ void Simulator::AddContactJoints(const ContactPair& pair, const Vec3* anchor_vel
       // a hard contact corrects the layer overlap gently; at a bouncing impact not at all: the
       // velocity constraint with restitution sets the rebound, and correcting the overlap as
       // well would add energy (Klamp't's spheres bounce too high for this)
-      const bool bouncing = surface.restitution > 0.0 && normal_speed < -world_.settings.bounce_velocity_threshold;
+      const bool bouncing =
+          surface.restitution > 0.0 && normal_speed < -world_.settings.bounce_velocity_threshold;
       joint.surface.mode |= dContactSoftERP | dContactSoftCFM;
       joint.surface.soft_erp = bouncing ? 0.0 : HardContactErp(contact.depth, step);
       joint.surface.soft_cfm = std::min(world_.settings.cfm, kHardContactCfm);

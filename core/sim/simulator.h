@@ -6,12 +6,14 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/contact/collision_geometry.h"
 #include "core/control/robot_controller.h"
 #include "core/diagnostics.h"
+#include "core/model/params.h"
 #include "core/model/world_desc.h"
 #include "core/sim/contact_feedback.h"
 #include "core/sim/energy_guard.h"
@@ -68,8 +70,9 @@ class Simulator;
 
 /// A handle on one body of a simulation (a terrain, a rigid object, later a robot link): cheap to
 /// copy, valid as long as its Simulator. Every setter takes effect on the running simulation and
-/// throws std::invalid_argument for a non-finite or negative value. Terrains are static: their
-/// pose and velocity setters and forces do nothing.
+/// throws std::invalid_argument for a value the parameter table refuses (the message names the
+/// path and the rule, as the file readers do) or a non-finite pose, velocity or force. Terrains
+/// are static: their pose and velocity setters and forces do nothing.
 class SimBody {
  public:
   SimBody(Simulator* simulator, int id) : simulator_(simulator), id_(id) {}
@@ -94,6 +97,8 @@ class SimBody {
   void SetVelocity(const Twist& velocity);
 
   SurfaceDesc GetSurface() const;
+  /// All four rows (kRestitution in [0, 1], kFriction >= 0, kStiffness > 0, kDamping >= 0; inf
+  /// allowed but for restitution) are checked before any is written.
   void SetSurface(const SurfaceDesc& surface);
   double GetPadding() const;
   /// Boundary-layer thickness (m, >= 0); a preshrunk geometry is shrunk again to match.
@@ -125,9 +130,11 @@ class Simulator {
   /// Advances by `dt` seconds in sub-steps of at most the simulation step.
   StepStatus Simulate(double dt);
   double time() const { return time_; }
-  /// Largest physics sub-step (s).
+  /// Largest physics sub-step (s); throws std::invalid_argument for what the table refuses
+  /// (the `timestep` row: > 0, finite).
   void SetSimStep(double step);
   double sim_step() const { return world_.settings.timestep; }
+  /// Throws std::invalid_argument for a non-finite gravity (m/s²).
   void SetGravity(const Vec3& gravity);
   /// Sleeping (off by default, as in ODE, Klamp't and MuJoCo): a rigid object that has moved
   /// slower than settings.sleep_speed (linear, m/s, and angular, rad/s) for sleep_time s, together
@@ -157,6 +164,27 @@ class Simulator {
   /// elements as the simulated one: object poses, velocities (as initial velocities), surfaces,
   /// paddings and the global settings.
   void UpdateWorld(WorldDesc* world) const;
+
+  // ---- live edits: the rows of the parameter table (core/model/params.h) ------------------
+  /// The value of a row on an element of the simulated world (its description with every edit
+  /// so far); nullopt with `error` naming the path when the element or the row does not exist.
+  std::optional<ParamValue> GetParam(const ElementIndex& element, const ParamSpec& spec,
+                                     std::string* error = nullptr) const;
+  /// The one path by which an edit reaches the simulation. Checks the element, the row and the
+  /// value exactly as the file readers do (a refused edit changes nothing and `error` names the
+  /// path and the rule), writes the simulated description, then by the row's apply kind: kLive
+  /// from the next step; kRebuildGeometry rebuilds the body's collision geometry; kRebuildSimulator
+  /// builds the whole simulation anew from the description and restores its state (MuJoCo's
+  /// mj_recompile); kOnReset changes only what Reset starts from. What the change invalidates
+  /// (contacts, energies, friction anchors) and wakes is decided in one place (BodyChanged).
+  bool SetParam(const ElementIndex& element, const ParamSpec& spec, const ParamValue& value,
+                std::string* error);
+  /// Builds the simulation anew from its description in the state it is in (or, stopped by an
+  /// error, in `state`); SetState of a stopped simulation does the same.
+  void Rebuild();
+  /// True after an error stopped the simulation (Simulate returns kError until SetState, Reset
+  /// or Rebuild).
+  bool halted() const { return halted_; }
 
   /// Body by Klamp't world id (terrains, then objects, then robots and their links).
   SimBody body(int id) { return SimBody(this, id); }
@@ -226,6 +254,12 @@ class Simulator {
   friend class SimBody;
   struct BodyRecord;
 
+  void Build();
+  void TearDown();
+  void RebuildWith(const SimState& state);
+  void ApplySettingsEdit(const ParamSpec& spec);
+  void ApplyBodyEdit(const ElementIndex& element, const ParamSpec& spec);
+  void ApplyRobotEdit(const ElementIndex& element, const ParamSpec& spec);
   void BuildBodies();
   void BuildRobot(int robot, int first_link_id);
   void RunControllers(double step);
@@ -300,6 +334,7 @@ class Simulator {
   Twist BodyVelocity(int id) const;
   void SetBodyVelocity(int id, const Twist& velocity);
   void SetBodyPadding(int id, double padding);
+  void SetBodySurface(int id, const SurfaceDesc& surface);
   void AddBodyForce(int id, const Vec3& force, const Vec3& point);
   void AddBodyWrench(int id, const Vec3& force, const Vec3& torque);
 
@@ -346,6 +381,7 @@ class Simulator {
     std::vector<int> checked;  ///< body id of each sample
   } energy_scratch_;
   double time_ = 0.0;
+  bool halted_ = false;  ///< an error stopped the simulation
   SimStatistics statistics_;
 };
 

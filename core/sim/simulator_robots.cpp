@@ -53,7 +53,8 @@ GeometryDesc CombinedLinkGeometry(const LinkDesc& link) {
 void Simulator::BuildRobot(int robot, int first_link_id) {
   const RobotDesc& desc = world_.robots[robot];
   robots_.push_back(std::make_unique<OdeRobot>(ode_world_.get(), desc, diagnostics_));
-  controllers_.emplace_back(desc);
+  controllers_.push_back(RobotController::ViewOf(&world_.robots[robot]));
+  controllers_.back().SetGravity(world_.settings.gravity);
   robot_scratch_.emplace_back();
   self_collision_pairs_.push_back(desc.SelfCollisionPairs());
   std::sort(self_collision_pairs_.back().begin(), self_collision_pairs_.back().end());
@@ -215,25 +216,6 @@ void Simulator::SetRobotConfig(int robot, const VecX& q) {
   for (size_t id = 0; id < bodies_.size(); ++id) {
     if (is_link(static_cast<int>(id))) WakeTouching(static_cast<int>(id));
   }
-}
-
-void Simulator::SetJointLimits(int robot, int link, double q_min, double q_max) {
-  RequireRobot(robot, robot_count());
-  LinkDesc* desc =
-      link >= 0 && link < robots_[robot]->dof() ? &world_.robots[robot].links[link] : nullptr;
-  if (desc == nullptr) {
-    throw std::out_of_range("link index " + std::to_string(link) + " out of range");
-  }
-  if (std::isnan(q_min) || std::isnan(q_max) || q_min > q_max) {
-    throw std::invalid_argument("joint limits must be numbers with q_min <= q_max");
-  }
-  desc->q_min = q_min;
-  desc->q_max = q_max;
-  robots_[robot]->UpdateStops(link);
-  JointLimits limits = controllers_[robot].limits();
-  limits.q_min[link] = q_min;
-  limits.q_max[link] = q_max;
-  controllers_[robot].SetLimits(limits);
 }
 
 void Simulator::SetRobotVelocity(int robot, const VecX& dq) {

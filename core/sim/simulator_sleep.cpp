@@ -138,7 +138,8 @@ void Simulator::UpdateSleep(double step) {
       sleep_[i].idle_time = 0.0;
     }
     if (!body.moves_freely() || sleep_[i].asleep) continue;
-    sleep_[i].idle_time = Speed(body.body) < world_.settings.sleep_speed ? sleep_[i].idle_time + step : 0.0;
+    sleep_[i].idle_time =
+        Speed(body.body) < world_.settings.sleep_speed ? sleep_[i].idle_time + step : 0.0;
   }
   std::vector<int>& parent = sleep_islands_;
   parent.resize(count);
@@ -148,8 +149,8 @@ void Simulator::UpdateSleep(double step) {
   ready.assign(count, 0);
   for (int i = 0; i < count; ++i) {
     const BodyRecord& body = bodies_[object_ids_[i]];
-    ready[i] = body.moves_freely() && sleep_[i].idle_time >= world_.settings.sleep_time && body.force.isZero(0.0) &&
-               body.torque.isZero(0.0);
+    ready[i] = body.moves_freely() && sleep_[i].idle_time >= world_.settings.sleep_time &&
+               body.force.isZero(0.0) && body.torque.isZero(0.0);
   }
   for (const ContactPair& pair : pairs_) {
     if (pair.contacts.empty()) continue;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Sleeping (Simulator::SetSleeping): an object idle for sleepTime (0.5 s) leaves the steps and stays
-// exactly where it is; what touches it, a setter, a force or a gravity change wakes it; islands
-// of touching objects fall asleep together; restoring a state restores who sleeps.
+// Sleeping (Simulator::SetSleeping): an object idle for sleepTime (0.5 s) leaves the steps and
+// stays exactly where it is; what touches it, a setter, a force or a gravity change wakes it;
+// islands of touching objects fall asleep together; restoring a state restores who sleeps.
 #include <vector>
 
 #include <gtest/gtest.h>

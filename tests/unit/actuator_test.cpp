@@ -31,14 +31,11 @@ ActuatorState PidState() {
   return state;
 }
 
-TEST(ActuatorTest, InitialStateHoldsTheValueWithTheServoGains) {
+TEST(ActuatorTest, InitialStateHoldsTheValue) {
   const ActuatorState state = InitialActuatorState(Driver(100), true, 0.3);
   EXPECT_EQ(state.mode, ActuatorMode::kPid);
   EXPECT_EQ(state.q_des, 0.3);
   EXPECT_EQ(state.dq_des, 0);
-  EXPECT_EQ(state.kp, 10);
-  EXPECT_EQ(state.ki, 2);
-  EXPECT_EQ(state.kd, 3);
   EXPECT_EQ(state.i_term, 0);
   EXPECT_FALSE(state.relative_encoding);
 }
@@ -46,6 +43,12 @@ TEST(ActuatorTest, InitialStateHoldsTheValueWithTheServoGains) {
 TEST(ActuatorTest, PidLawNumbers) {
   // 10·0.2 + 3·(0.5 − 0.1) + 2·0.25 + 1 = 4.7
   EXPECT_NEAR(ActuatorEffort(PidState(), Driver(100), 0.8, 0.1), 4.7, 1e-12);
+}
+
+TEST(ActuatorTest, GainsAreTheDriversReadLive) {
+  DriverDesc driver = Driver(100);
+  driver.servo_p = 20;  // 20·0.2 + 3·(0.5 − 0.1) + 2·0.25 + 1 = 6.7
+  EXPECT_NEAR(ActuatorEffort(PidState(), driver, 0.8, 0.1), 6.7, 1e-12);
 }
 
 TEST(ActuatorTest, PidIsClampedToTheDriverLimitsReadLive) {
@@ -66,14 +69,14 @@ TEST(ActuatorTest, IntegralAccumulatesErrorTimesStep) {
 TEST(ActuatorTest, AntiWindupBoundsTheIntegralEffort) {
   DriverDesc driver = Driver(5);
   driver.torque_min = -4;
+  driver.servo_i = 10;
   ActuatorState state = InitialActuatorState(driver, true, 0.0);
-  state.ki = 10;
   state.q_des = 1;
   for (int i = 0; i < 1000; ++i) IntegrateActuator(driver, 0.0, 0.01, &state);
-  EXPECT_NEAR(state.ki * state.i_term, 5, 1e-12);
+  EXPECT_NEAR(driver.servo_i * state.i_term, 5, 1e-12);
   state.q_des = -1;
   for (int i = 0; i < 1000; ++i) IntegrateActuator(driver, 0.0, 0.01, &state);
-  EXPECT_NEAR(state.ki * state.i_term, -4, 1e-12);
+  EXPECT_NEAR(driver.servo_i * state.i_term, -4, 1e-12);
 }
 
 TEST(ActuatorTest, ContinuousDriversAreDetectedByRange) {

@@ -87,7 +87,7 @@ TEST(RobotControllerTest, Ur5StartsHoldingItsConfigWithContinuousDrivers) {
     EXPECT_EQ(actuator.mode, ActuatorMode::kPid);
     EXPECT_TRUE(actuator.relative_encoding);  // range ±2π
   }
-  EXPECT_EQ(controller.actuators()[1].kp, 4000);
+  EXPECT_EQ(controller.drivers()[1].servo_p, 4000);
   VecX q;
   ASSERT_TRUE(controller.GetCommandedConfig(&q));
   EXPECT_EQ(q, VecX::Zero(8));
@@ -346,8 +346,19 @@ TEST(RobotControllerTest, GainsRoundTripAndDriverEdits) {
   EXPECT_EQ(d, kd);
   EXPECT_EQ(controller.drivers()[0].servo_p, 11);
   controller.drivers()[0].servo_p = 5;
-  controller.ApplyDriverGains();
-  EXPECT_EQ(controller.actuators()[0].kp, 5);
+  controller.GetPIDGains(&p, &i, &d);
+  EXPECT_EQ(p[0], 5);
+}
+
+TEST(RobotControllerTest, AViewSharesTheDriversOfItsRobot) {
+  RobotDesc robot = Ur5();
+  RobotController controller = RobotController::ViewOf(&robot);
+  const VecX kp = VecX::Constant(6, 7), ki = VecX::Constant(6, 1), kd = VecX::Constant(6, 2);
+  ASSERT_TRUE(controller.SetPIDGains(kp, ki, kd));
+  EXPECT_EQ(robot.drivers[3].servo_p, 7);  // written into the robot itself
+  robot.drivers[2].dry_friction = 0.5;
+  EXPECT_EQ(controller.drivers()[2].dry_friction, 0.5);
+  EXPECT_EQ(&controller.robot(), &robot);
 }
 
 TEST(RobotControllerTest, GravityCompensationFeedsForwardGravityTorques) {

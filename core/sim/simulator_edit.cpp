@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: MIT
+// Live edits of a running simulation: the parameter table's rows (Simulator::SetParam), the
+// typed setters built on it, and rebuilding the simulation from its description.
+#include <stdexcept>
+
+#include <ode/ode.h>
+
+#include "core/sim/ode_robot.h"
+#include "core/sim/simulator.h"
+#include "core/sim/simulator_records.h"
+
+namespace lamina::core {
+
+namespace {
+
+// padding and surface rows: every kind of body has them
+bool IsBodyRow(const ParamSpec& spec) {
+  return spec.AppliesTo(ElementKind::kTerrain);
+}
+
+// the typed setters throw what SetParam would refuse
+void SetOrThrow(Simulator* simulator, const ElementIndex& element, std::string_view key,
+                const ParamValue& value) {
+  const ParamSpec* spec = FindParam(key, element.kind);
+  std::string error;
+  if (spec == nullptr || !simulator->SetParam(element, *spec, value, &error)) {
+    throw std::invalid_argument(spec == nullptr ? "no parameter " + std::string(key) : error);
+  }
+}
+
+}  // namespace
+
+std::optional<ParamValue> Simulator::GetParam(const ElementIndex& element, const ParamSpec& spec,
+                                              std::string* error) const {
+  return core::GetParam(world_, element, spec, error);
+}
+
+bool Simulator::SetParam(const ElementIndex& element, const ParamSpec& spec,
+                         const ParamValue& value, std::string* error) {
+  // a change of an object's centre of mass keeps its frame where it is (the mass moves)
+  const bool keeps_frame =
+      element.kind == ElementKind::kObject && spec.apply == ParamApply::kRebuildSimulator &&
+      element.index >= 0 && element.index < object_count() && !halted_;
+  const Pose frame = keeps_frame ? GetObjectPose(element.index) : Pose::Identity();
+  const Twist twist = keeps_frame ? GetObjectVelocity(element.index) : Twist{};
+  if (!core::SetParam(&world_, element, spec, value, error)) return false;
+  switch (spec.apply) {
+    case ParamApply::kOnReset:
+      return true;
+    case ParamApply::kRebuildSimulator:
+      Rebuild();
+      if (keeps_frame) {
+        SetObjectPose(element.index, frame);
+        SetObjectVelocity(element.index, twist);
+      }
+      return true;
+    default:
+      break;
+  }
+  if (element.kind == ElementKind::kSettings) {
+    ApplySettingsEdit(spec);
+  } else if (IsBodyRow(spec)) {
+    ApplyBodyEdit(element, spec);
+  } else {
+    ApplyRobotEdit(element, spec);
+  }
+  return true;
+}
+
+void Simulator::ApplySettingsEdit(const ParamSpec& spec) {
+  const SimSettings& s = world_.settings;
+  if (spec.key == "gravity") {
+    SetGravity(s.gravity);
+  } else if (spec.key == "ERP") {
+    dWorldSetERP(ode_world_.get(), s.erp);
+  } else if (spec.key == "CFM") {
+    dWorldSetCFM(ode_world_.get(), s.cfm);
+  } else if (spec.key == "sleeping") {
+    SetSleeping(s.sleeping);
+  } else if (spec.key == "maxContacts" || spec.key == "rigidObjectCollisions" ||
+             spec.key == "robotSelfCollisions" || spec.key == "robotRobotCollisions") {
+    // what touches changed: contacts are found again, and what slept on them wakes
+    contacts_current_ = false;
+    for (int id : object_ids_) WakeBody(id);
+  }
+}
+
+void Simulator::ApplyBodyEdit(const ElementIndex& element, const ParamSpec& spec) {
+  const int id = WorldIdOfElement(world_, element);
+  if (spec.apply == ParamApply::kRebuildGeometry) RebuildCollisionGeometry(id);
+  WakeBody(id);
+  WakeTouching(id);
+}
+
+void Simulator::ApplyRobotEdit(const ElementIndex& element, const ParamSpec& spec) {
+  if (element.kind != ElementKind::kLink || spec.key != "jointLimits") return;
+  const LinkDesc& link = world_.robots[element.index].links[element.sub];
+  robots_[element.index]->UpdateStops(element.sub);
+  JointLimits limits = controllers_[element.index].limits();
+  limits.q_min[element.sub] = link.q_min;
+  limits.q_max[element.sub] = link.q_max;
+  controllers_[element.index].SetLimits(limits);
+}
+
+void Simulator::Rebuild() {
+  RebuildWith(GetState());
+}
+
+// ---- the typed setters ------------------------------------------------------------------
+
+void Simulator::SetSimStep(double step) {
+  SetOrThrow(this, ElementIndex::Settings(), "timestep", {step});
+}
+
+void Simulator::SetGravity(const Vec3& gravity) {
+  const ParamSpec& spec = *FindParam("gravity", ElementKind::kSettings);
+  if (auto error = CheckParam(spec, {gravity.x(), gravity.y(), gravity.z()}, 3)) {
+    throw std::invalid_argument("settings." + *error);
+  }
+  world_.settings.gravity = gravity;
+  dWorldSetGravity(ode_world_.get(), gravity.x(), gravity.y(), gravity.z());
+  for (RobotController& controller : controllers_) controller.SetGravity(gravity);
+  for (int id : object_ids_) WakeBody(id);
+}
+
+void Simulator::SetBodyPadding(int id, double padding) {
+  const std::optional<ElementIndex> element = ElementOfWorldId(world_, id);
+  if (!element || element->kind == ElementKind::kRobot) return;
+  SetOrThrow(this, *element, "padding", {padding});
+}
+
+void Simulator::SetBodySurface(int id, const SurfaceDesc& surface) {
+  const std::optional<ElementIndex> element = ElementOfWorldId(world_, id);
+  if (!element || element->kind == ElementKind::kRobot) return;
+  const std::pair<std::string_view, double> rows[] = {{"kRestitution", surface.restitution},
+                                                      {"kFriction", surface.friction},
+                                                      {"kStiffness", surface.stiffness},
+                                                      {"kDamping", surface.damping}};
+  // all four checked before any is written
+  for (const auto& [key, value] : rows) {
+    if (auto error = CheckParam(*FindParam(key, element->kind), {value}, 1)) {
+      throw std::invalid_argument(ElementPath(*element) + "." + *error);
+    }
+  }
+  for (const auto& [key, value] : rows) SetOrThrow(this, *element, key, {value});
+}
+
+void Simulator::SetJointLimits(int robot, int link, double q_min, double q_max) {
+  const ElementIndex element = ElementIndex::Link(robot, link);
+  if (auto error = CheckElement(world_, element)) throw std::out_of_range(*error);
+  SetOrThrow(this, element, "jointLimits", {q_min, q_max});
+}
+
+}  // namespace lamina::core
