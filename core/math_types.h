@@ -15,6 +15,7 @@ using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 using Mat4 = Eigen::Matrix4d;
 using VecX = Eigen::VectorXd;
+using MatX = Eigen::MatrixXd;
 /// A rigid transform (rotation + translation).
 using Pose = Eigen::Isometry3d;
 /// A general affine map (rotation, scale, shear + translation).

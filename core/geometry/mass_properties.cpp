@@ -245,4 +245,27 @@ MassProperties ComputeMassProperties(const GeometryDesc& geometry, double mass,
   return ComputeMassProperties(mesh, mass, f);
 }
 
+Mat3 ShiftInertia(const Mat3& inertia_at_com, double mass, const Vec3& d) {
+  return inertia_at_com + mass * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
+}
+
+CompositeMass CombineMass(const std::vector<MassPart>& parts) {
+  CompositeMass composite;
+  Vec3 moment = Vec3::Zero();
+  for (const MassPart& part : parts) {
+    composite.mass += part.mass;
+    moment += part.mass * (part.pose * part.com);
+  }
+  if (!(composite.mass > 0.0)) return composite;
+  MassProperties& properties = composite.properties;
+  properties.com = moment / composite.mass;
+  for (const MassPart& part : parts) {
+    const Mat3 R = part.pose.linear();
+    properties.inertia += ShiftInertia(R * part.inertia * R.transpose(), part.mass,
+                                       part.pose * part.com - properties.com);
+  }
+  properties.valid = true;
+  return composite;
+}
+
 }  // namespace lamina::core

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Mass properties from geometry ("automass"): centre of mass and inertia of a solid, of a
-// thin shell, or of a blend of the two, for a given total mass.
+// thin shell, or of a blend of the two, for a given total mass; and of a body made of rigid parts
+// (welded links, mounted meshes): the parallel-axis theorem, once.
 #pragma once
+
+#include <vector>
 
 #include "core/geometry/geometry_desc.h"
 #include "core/math_types.h"
@@ -22,5 +25,25 @@ MassProperties ComputeMassProperties(const TriangleMesh& mesh, double mass,
 /// Same for a body's geometry (scale and transform applied; primitives analytically).
 MassProperties ComputeMassProperties(const GeometryDesc& geometry, double mass,
                                      double surface_fraction);
+
+/// Inertia about a point `d` away from the centre of mass (kg·m²): I + m (|d|² 1 − d dᵀ).
+Mat3 ShiftInertia(const Mat3& inertia_at_com, double mass, const Vec3& d);
+
+/// One rigid part of a composite body.
+struct MassPart {
+  double mass = 0.0;             ///< kg
+  Vec3 com = Vec3::Zero();       ///< in the part's frame, m
+  Mat3 inertia = Mat3::Zero();   ///< about its COM, the part's axes, kg·m²
+  Pose pose = Pose::Identity();  ///< the part's frame in the composite's frame
+};
+
+/// The composite of `parts`: total mass, its centre of mass and inertia about it in the
+/// composite's frame (exact: rotated inertias plus the parallel-axis terms). `valid` is false
+/// (and com the origin) when the parts have no mass.
+struct CompositeMass {
+  double mass = 0.0;
+  MassProperties properties;
+};
+CompositeMass CombineMass(const std::vector<MassPart>& parts);
 
 }  // namespace lamina::core

@@ -2,7 +2,10 @@
 // Potential energy and gravity torques by subtree mass accumulation (see dynamics.h).
 #include "core/robot/dynamics.h"
 
+#include <algorithm>
 #include <vector>
+
+#include <Eigen/Cholesky>
 
 #include "core/robot/kinematics.h"
 
@@ -46,6 +49,75 @@ VecX GravityTorques(const RobotDesc& robot, const VecX& q, const Vec3& gravity) 
     }
   }
   return torques;
+}
+
+namespace {
+
+bool IsAncestorOrSelf(const RobotDesc& robot, int ancestor, int link) {
+  for (int k = link; k >= 0; k = robot.links[k].parent) {
+    if (k == ancestor) return true;
+  }
+  return false;
+}
+
+// the velocity of a world point carried by link `link` per unit rate of joint i (3 x n)
+MatX PointJacobian(const RobotDesc& robot, const std::vector<Pose>& frames,
+                   const std::vector<bool>& free, int link, const Vec3& point) {
+  MatX jacobian = MatX::Zero(3, robot.dof());
+  for (int i = 0; i < robot.dof(); ++i) {
+    if (!free[i] || !IsAncestorOrSelf(robot, i, link)) continue;
+    const LinkDesc& joint = robot.links[i];
+    const Vec3 axis = frames[i].linear() * joint.axis.normalized();
+    jacobian.col(i) = joint.axis_type == LinkJointAxis::kPrismatic
+                          ? axis
+                          : Vec3(axis.cross(point - frames[i].translation()));
+  }
+  return jacobian;
+}
+
+// the angular velocity of link `link` per unit rate of joint i (3 x n)
+MatX RotationJacobian(const RobotDesc& robot, const std::vector<Pose>& frames,
+                      const std::vector<bool>& free, int link) {
+  MatX jacobian = MatX::Zero(3, robot.dof());
+  for (int i = 0; i < robot.dof(); ++i) {
+    if (!free[i] || !IsAncestorOrSelf(robot, i, link)) continue;
+    if (robot.links[i].axis_type == LinkJointAxis::kPrismatic) continue;
+    jacobian.col(i) = frames[i].linear() * robot.links[i].axis.normalized();
+  }
+  return jacobian;
+}
+
+}  // namespace
+
+MatX MassMatrix(const RobotDesc& robot, const VecX& q, const std::vector<bool>& free) {
+  const std::vector<Pose> frames = LinkTransforms(robot, q);
+  const std::vector<Vec3> coms = LinkComPositions(robot, frames);
+  const int n = robot.dof();
+  MatX mass = MatX::Zero(n, n);
+  for (int k = 0; k < n; ++k) {
+    const LinkDesc& link = robot.links[k];
+    if (link.mass <= 0.0 && link.inertia.isZero(0.0)) continue;
+    const MatX linear = PointJacobian(robot, frames, free, k, coms[k]);
+    const MatX angular = RotationJacobian(robot, frames, free, k);
+    const Mat3 rotation = frames[k].linear();
+    const Mat3 inertia = rotation * link.inertia * rotation.transpose();
+    mass += link.mass * linear.transpose() * linear + angular.transpose() * inertia * angular;
+  }
+  return mass;
+}
+
+double EffectiveMassAt(const RobotDesc& robot, const VecX& q, const std::vector<bool>& free,
+                       int link, const Vec3& point) {
+  const MatX jacobian = PointJacobian(robot, LinkTransforms(robot, q), free, link, point);
+  if (jacobian.isZero(0.0)) return kInf;
+  MatX mass = MassMatrix(robot, q, free);
+  // joints that move nothing with mass (or are not free) would make M singular: a tiny
+  // armature keeps it invertible without changing what the masses say
+  const double armature = 1e-9 * std::max(1.0, mass.diagonal().cwiseAbs().maxCoeff());
+  mass.diagonal().array() += armature;
+  const MatX solved = mass.ldlt().solve(jacobian.transpose());
+  const double trace = (jacobian * solved).trace();
+  return trace > 0.0 ? 3.0 / trace : kInf;
 }
 
 }  // namespace lamina::core

@@ -10,7 +10,9 @@
 
 #include <vector>
 
+#include "core/contact/contact.h"
 #include "core/math_types.h"
+#include "core/sim/ode_fwd.h"
 
 namespace lamina::core {
 
@@ -44,6 +46,54 @@ struct ContactFeedbackRecord {
   Vec3 LastForce() const;
   /// Sum of the last sub-step's torques on first about the world origin (N·m).
   Vec3 LastTorque() const;
+};
+
+/// The contact feedback of a simulation: the records of the pairs that asked for it (sorted by
+/// (first, second)), and ODE's force readout of this step's contact joints, turned into the
+/// records' contacts after every accepted step. Queries never allocate.
+class FeedbackRecorder {
+ public:
+  bool empty() const { return records_.empty(); }
+  const std::vector<ContactFeedbackRecord>& records() const { return records_; }
+  /// Starts recording the pair (a, b) (a != b; nothing when it is recorded already).
+  void Enable(int a, int b);
+  /// The record of the pair (a, b) in either order, or null.
+  const ContactFeedbackRecord* Find(int a, int b) const;
+  /// Every record forgets the last Simulate call.
+  void BeginCall();
+
+  FeedbackRecorder();
+  ~FeedbackRecorder();
+  FeedbackRecorder(FeedbackRecorder&&) noexcept;
+  FeedbackRecorder& operator=(FeedbackRecorder&&) noexcept;
+  /// ODE's readout of one contact joint of the current step (contact_feedback.cpp).
+  struct Slot;
+  /// Before a step's joints are made: `contacts` slots at most (joints point into them, so they
+  /// must not move while the step is built).
+  void ReserveSlots(size_t contacts);
+  /// A slot for a new contact joint of `pair`'s `contact` under `record` (Find's result).
+  Slot* Attach(dxJoint* joint, const ContactFeedbackRecord& record, int joint_first_body,
+               const Contact& contact, double friction);
+  /// The rigid-core joint of a soft contact reports into the same slot.
+  static void AttachCore(Slot* slot, dxJoint* core_joint);
+  /// After the step: the slots' forces become the records' last sub-step of length `step`.
+  void RecordStep(double step);
+
+  /// Calls f(record, sign) for every record touching a (and b, unless b < 0); sign is +1 when a is
+  /// the record's first body (its forces are on a), -1 otherwise.
+  template <typename F>
+  void ForEach(int a, int b, const F& f) const {
+    for (const ContactFeedbackRecord& r : records_) {
+      const bool touches_a = r.first == a || r.second == a;
+      if (touches_a && (b < 0 || r.first == b || r.second == b)) f(r, r.first == a ? 1.0 : -1.0);
+    }
+  }
+
+ private:
+  std::vector<ContactFeedbackRecord> records_;
+  std::vector<std::vector<FeedbackContact>> step_contacts_;  ///< per record, one step
+  std::vector<Slot> slots_;
+  size_t used_slots_ = 0;
 };
 
 }  // namespace lamina::core

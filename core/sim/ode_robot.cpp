@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/geometry/mass_properties.h"
 #include "core/robot/kinematics.h"
 #include "core/sim/ode_conversions.h"
 
@@ -131,6 +132,22 @@ OdeRobot::~OdeRobot() {
 // their parent's body (or the world). Mass properties of a body are its links' exact sum.
 void OdeRobot::BuildBodies(dWorldID world, const VecX& q, Diagnostics& diagnostics) {
   const std::vector<Pose> frames = LinkTransforms(robot_, q);
+  const std::vector<int> owner = AssignOwners(frames);
+  for (int o = 0; o < dof(); ++o) {
+    if (owner[o] == o) CreateBody(world, o, owner, frames, diagnostics);
+  }
+  for (int k = 0; k < dof(); ++k) {
+    if (owner[k] < 0 || owner[k] == k) continue;
+    const Link& carrier = links_[owner[k]];
+    const Pose o_from_k = frames[owner[k]].inverse() * frames[k];
+    links_[k].body = carrier.body;
+    links_[k].rotation_in_body = o_from_k.linear();
+    links_[k].com = o_from_k.inverse() * carrier.com;
+  }
+}
+
+// the link whose body carries each link (itself, a welded ancestor, or -1: virtual or static)
+std::vector<int> OdeRobot::AssignOwners(const std::vector<Pose>& frames) {
   std::vector<int> owner(links_.size(), -1);
   for (int i = 0; i < dof(); ++i) {
     const LinkDesc& desc = robot_.links[i];
@@ -148,59 +165,45 @@ void OdeRobot::BuildBodies(dWorldID world, const VecX& q, Diagnostics& diagnosti
       owner[i] = i;
     }
   }
-  // composite mass of each owner's group, in the owner's link frame
-  for (int o = 0; o < dof(); ++o) {
-    if (owner[o] != o) continue;
-    double mass = 0.0;
-    Vec3 moment = Vec3::Zero();
-    for (int k = 0; k < dof(); ++k) {
-      if (owner[k] != o) continue;
-      const Pose o_from_k = frames[o].inverse() * frames[k];
-      mass += robot_.links[k].mass;
-      moment += robot_.links[k].mass * (o_from_k * robot_.links[k].com);
-    }
-    const Vec3 com = mass > 0.0 ? Vec3(moment / mass) : robot_.links[o].com;
-    Mat3 inertia = Mat3::Zero();
-    for (int k = 0; k < dof(); ++k) {
-      if (owner[k] != o) continue;
-      const Pose o_from_k = frames[o].inverse() * frames[k];
-      const Mat3 R = o_from_k.linear();
-      const Vec3 r = o_from_k * robot_.links[k].com - com;
-      inertia += R * robot_.links[k].inertia * R.transpose() +
-                 robot_.links[k].mass * (r.squaredNorm() * Mat3::Identity() - r * r.transpose());
-    }
-    Link& link = links_[o];
-    link.body = dBodyCreate(world);
-    link.owns_body = true;
-    dBodySetFiniteRotationMode(link.body, 1);
-    // a translating floating base has no rotational DOFs: its body never turns
-    if (o == floating_link_ && !floating_rotates()) dBodySetMaxAngularSpeed(link.body, 0.0);
-    dMass ode_mass;
-    dMassSetParameters(&ode_mass, mass, 0, 0, 0, inertia(0, 0), inertia(1, 1), inertia(2, 2),
-                       inertia(0, 1), inertia(0, 2), inertia(1, 2));
-    if (!dMassCheck(&ode_mass)) {
-      diagnostics.Note({robot_.source_path, 0},
-                       "robot '" + robot_.name + "': link '" + robot_.links[o].name +
-                           "' has no valid mass or inertia; simulated with 1 g");
-      mass = std::max(mass, kMinimumLinkMass);
-      inertia = kMinimumLinkMass * Mat3::Identity();
-      dMassSetParameters(&ode_mass, mass, 0, 0, 0, inertia(0, 0), inertia(1, 1), inertia(2, 2), 0,
-                         0, 0);
-    }
-    dBodySetMass(link.body, &ode_mass);
-    link.mass = ode_mass.mass;
-    link.inertia = inertia;
-    link.com = com;
-    PlaceBody(link.body, frames[o].linear(), frames[o] * com);
-  }
+  return owner;
+}
+
+// the body of owner `o` with the composite mass of its group, in the owner's link frame
+void OdeRobot::CreateBody(dWorldID world, int o, const std::vector<int>& owner,
+                          const std::vector<Pose>& frames, Diagnostics& diagnostics) {
+  std::vector<MassPart> parts;
   for (int k = 0; k < dof(); ++k) {
-    if (owner[k] < 0 || owner[k] == k) continue;
-    const Link& carrier = links_[owner[k]];
-    const Pose o_from_k = frames[owner[k]].inverse() * frames[k];
-    links_[k].body = carrier.body;
-    links_[k].rotation_in_body = o_from_k.linear();
-    links_[k].com = o_from_k.inverse() * carrier.com;
+    if (owner[k] != o) continue;
+    const LinkDesc& part = robot_.links[k];
+    parts.push_back({part.mass, part.com, part.inertia, frames[o].inverse() * frames[k]});
   }
+  const CompositeMass composite = CombineMass(parts);
+  double mass = composite.mass;
+  Mat3 inertia = composite.properties.inertia;
+  const Vec3 com = composite.properties.valid ? composite.properties.com : robot_.links[o].com;
+  Link& link = links_[o];
+  link.body = dBodyCreate(world);
+  link.owns_body = true;
+  dBodySetFiniteRotationMode(link.body, 1);
+  // a translating floating base has no rotational DOFs: its body never turns
+  if (o == floating_link_ && !floating_rotates()) dBodySetMaxAngularSpeed(link.body, 0.0);
+  dMass ode_mass;
+  dMassSetParameters(&ode_mass, mass, 0, 0, 0, inertia(0, 0), inertia(1, 1), inertia(2, 2),
+                     inertia(0, 1), inertia(0, 2), inertia(1, 2));
+  if (!dMassCheck(&ode_mass)) {
+    diagnostics.Note({robot_.source_path, 0},
+                     "robot '" + robot_.name + "': link '" + robot_.links[o].name +
+                         "' has no valid mass or inertia; simulated with 1 g");
+    mass = std::max(mass, kMinimumLinkMass);
+    inertia = kMinimumLinkMass * Mat3::Identity();
+    dMassSetParameters(&ode_mass, mass, 0, 0, 0, inertia(0, 0), inertia(1, 1), inertia(2, 2), 0, 0,
+                       0);
+  }
+  dBodySetMass(link.body, &ode_mass);
+  link.mass = ode_mass.mass;
+  link.inertia = inertia;
+  link.com = com;
+  PlaceBody(link.body, frames[o].linear(), frames[o] * com);
 }
 
 void OdeRobot::BuildJoints(dWorldID world, const VecX& q) {

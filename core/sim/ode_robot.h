@@ -46,6 +46,8 @@ class OdeRobot {
 
   int dof() const { return static_cast<int>(links_.size()); }
   const Link& link(int i) const { return links_[i]; }
+  /// The link's joint moves (a hinge, a slider or a floating base's axis); false for welds.
+  bool DofFree(int i) const { return joint_types_[i] != JointType::kWeld; }
   /// A 6-link floating base rotates; a 3-link one (x, y, z) only translates.
   bool floating_rotates() const { return floating_link_ - floating_first_ == 5; }
 
@@ -79,6 +81,9 @@ class OdeRobot {
 
  private:
   void BuildBodies(dWorldID world, const VecX& q, Diagnostics& diagnostics);
+  std::vector<int> AssignOwners(const std::vector<Pose>& frames);
+  void CreateBody(dWorldID world, int o, const std::vector<int>& owner,
+                  const std::vector<Pose>& frames, Diagnostics& diagnostics);
   void BuildJoints(dWorldID world, const VecX& q);
   void SetStops(int i);
   void SetJointMotor(int i, double fmax, double cfm);

@@ -5,7 +5,8 @@
 namespace lamina::core {
 
 bool SimBody::valid() const {
-  return simulator_->mutable_sim_params(id_) != nullptr;
+  const BodyRecord* body = simulator_->bodies_.Find(id_);
+  return body != nullptr && body->kind != WorldId::Kind::kRobot;
 }
 
 void SimBody::Enable(bool enabled) {
@@ -41,8 +42,8 @@ void SimBody::SetVelocity(const Twist& velocity) {
 }
 
 SurfaceDesc SimBody::GetSurface() const {
-  const BodySimParams* params = simulator_->mutable_sim_params(id_);
-  return params ? params->surface : SurfaceDesc{};
+  simulator_->RequireBody(id_);
+  return simulator_->sim_params(id_).surface;
 }
 
 void SimBody::SetSurface(const SurfaceDesc& surface) {
@@ -50,8 +51,8 @@ void SimBody::SetSurface(const SurfaceDesc& surface) {
 }
 
 double SimBody::GetPadding() const {
-  const BodySimParams* params = simulator_->mutable_sim_params(id_);
-  return params ? params->padding : 0.0;
+  simulator_->RequireBody(id_);
+  return simulator_->sim_params(id_).padding;
 }
 
 void SimBody::SetPadding(double padding) {

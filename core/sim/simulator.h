@@ -1,10 +1,19 @@
 // SPDX-License-Identifier: MIT
-// The simulator: rigid objects and terrains of a WorldDesc on ODE (double precision) with
-// boundary-layer contact. Every setter works on a running simulation. Bodies are named by their
-// Klamp't world id (terrains, then rigid objects, then robots and their links); robots slot in
-// later as further bodies and joints.
+// The simulator: the terrains, rigid objects and robots of a WorldDesc on ODE (double precision)
+// with boundary-layer contact. Bodies are named by their Klamp't world id (terrains, then rigid
+// objects, then robots and their links).
+//
+// The class orchestrates units that each own their data: the body table (body_table.h), the
+// contact set with its broad phase (contact_set.h, broad_phase.h), the contact rows
+// (contact_rows.h), the friction anchors (friction_anchors.h), the step guard (rollback and
+// stability, step_guard.h), the feedback recorder (contact_feedback.h) and sleep (sleep.h).
+// Every edit of a running simulation reaches it through one path (SetParam and the typed setters
+// built on it), and what a change of a body invalidates is decided by one rule (body_change.h).
+// Results do not depend on how Simulate is chunked: Simulate(0.01) once and Simulate(0.001) ten
+// times give bit-identical states.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,60 +24,22 @@
 #include "core/diagnostics.h"
 #include "core/model/params.h"
 #include "core/model/world_desc.h"
+#include "core/sim/body_table.h"
 #include "core/sim/contact_feedback.h"
-#include "core/sim/energy_guard.h"
+#include "core/sim/contact_set.h"
+#include "core/sim/friction_anchors.h"
+#include "core/sim/interaction.h"
 #include "core/sim/sim_state.h"
-#include "core/sim/sim_timing.h"
-
-// ODE's opaque types (ode/common.h), so that this header does not pull in ODE
-struct dxWorld;
-struct dxBody;
-struct dxJointGroup;
-struct dxJoint;
-struct dContact;
+#include "core/sim/sleep.h"
+#include "core/sim/step_guard.h"
+#include "core/sim/step_observer.h"
 
 namespace lamina::core {
 
 class OdeRobot;
-
-enum class StepStatus {
-  kNormal = 0,
-  kAdaptiveStep = 1,       ///< a step was rolled back and retaken with a smaller step
-  kContactUnreliable = 2,  ///< underlying geometries interpenetrated (beyond the padding)
-  kUnstable = 3,           ///< energy blew up (or a state became non-finite) and was corrected
-  kError = 4,              ///< ODE failed or a state stayed non-finite; the simulation stopped
-};
-/// "normal", "adaptive step", ...
-const char* StepStatusName(StepStatus status);
-
-/// Counters since construction or the last Reset.
-struct SimStatistics {
-  long steps = 0;                    ///< physics sub-steps taken (accepted)
-  long rollbacks = 0;                ///< sub-steps undone and retaken at half the step
-  long instability_corrections = 0;  ///< bodies whose energy blow-up was corrected
-  int max_contacts_in_step = 0;      ///< most contact joints in one sub-step
-  long contact_joints = 0;           ///< contact joints over all accepted sub-steps
-  double max_penetration = 0.0;      ///< deepest boundary-layer overlap in an accepted state, m
-  StepStatus worst_status = StepStatus::kNormal;
-  std::string error;  ///< what stopped the simulation (kError)
-  SimTimeSplit time_split;
-};
-
-/// The contacts between two bodies at the current state, after clustering.
-struct ContactPair {
-  int a = -1;  ///< world id of a body with an ODE body (dynamic or kinematic)
-  int b = -1;  ///< world id of the other body (may be static); normals point from b into a
-  ContactList contacts;
-  double tolerance = 0.0;  ///< padding sum of the pair (m)
-  double max_depth = 0.0;  ///< deepest boundary-layer overlap (m)
-  bool penetrating = false;
-  /// fastest tangential correction of the pair's friction anchor in a step from here (m/s)
-  double anchor_speed = 0.0;
-};
-
 class Simulator;
 
-/// A handle on one body of a simulation (a terrain, a rigid object, later a robot link): cheap to
+/// A handle on one body of a simulation (a terrain, a rigid object or a robot link): cheap to
 /// copy, valid as long as its Simulator. Every setter takes effect on the running simulation and
 /// throws std::invalid_argument for a value the parameter table refuses (the message names the
 /// path and the rule, as the file readers do) or a non-finite pose, velocity or force. Terrains
@@ -104,7 +75,8 @@ class SimBody {
   /// Boundary-layer thickness (m, >= 0); a preshrunk geometry is shrunk again to match.
   void SetPadding(double padding);
 
-  /// Forces that act during every sub-step of the next Simulate call, then end.
+  /// Forces that act during every sub-step of the next Simulate call, then end (Klamp't's
+  /// autokill hooks). For forces that last, see Simulator::SetAppliedWrench.
   /// `force` (N, world) at `point` (world).
   void ApplyForceAtPoint(const Vec3& force, const Vec3& point);
   /// `force` (N, world) at `point` given in the body frame.
@@ -127,7 +99,9 @@ class Simulator {
   Simulator(const Simulator&) = delete;
   Simulator& operator=(const Simulator&) = delete;
 
-  /// Advances by `dt` seconds in sub-steps of at most the simulation step.
+  /// Advances by `dt` seconds in sub-steps of at most the simulation step. A remainder within a
+  /// part per million of a step is taken as a whole step, so that the steps are the same however
+  /// the caller chunks its calls.
   StepStatus Simulate(double dt);
   double time() const { return time_; }
   /// Largest physics sub-step (s); throws std::invalid_argument for what the table refuses
@@ -136,33 +110,36 @@ class Simulator {
   double sim_step() const { return world_.settings.timestep; }
   /// Throws std::invalid_argument for a non-finite gravity (m/s²).
   void SetGravity(const Vec3& gravity);
-  /// Sleeping (off by default, as in ODE, Klamp't and MuJoCo): a rigid object that has moved
-  /// slower than settings.sleep_speed (linear, m/s, and angular, rad/s) for sleep_time s, together
-  /// with every free body it touches, is taken out of the steps until an awake or kinematic
-  /// body touches it, a setter or an applied force reaches it, or gravity changes. Robots never
-  /// sleep. Contact feedback does not see a sleeper's contacts with inert bodies. Turning it off
-  /// wakes everything.
+  /// Sleeping (off by default, as in ODE, Klamp't and MuJoCo; sleep.h has the rules). Robots
+  /// never sleep. Contact feedback does not see a sleeper's contacts with inert bodies. Turning
+  /// it off wakes everything.
   void SetSleeping(bool on);
   bool sleeping() const { return world_.settings.sleeping; }
-  bool ObjectAsleep(int object) const;
-  int SleepingObjectCount() const;
+  bool ObjectAsleep(int object) const { return sleep_.asleep(object); }
+  int SleepingObjectCount() const { return sleep_.asleep_count(); }
   void SetSolver(const SolverSettings& solver);
   SolverSettings solver() const { return world_.settings.solver_settings(); }
-  /// Back to the initial poses and velocities of the world description, time 0.
+  /// Back to the initial poses and velocities of the world description, time 0; held wrenches,
+  /// drags and kinematic targets end.
   void Reset();
   SimState GetState() const;
   /// GetState into existing storage.
   void CaptureState(SimState* state) const;
+  /// Restores a state of this simulation exactly; a simulation stopped by an error is built anew
+  /// first (ODE cannot be trusted after one of its errors). std::invalid_argument for a state
+  /// that is not finite.
   void SetState(const SimState& state);
   const SimStatistics& statistics() const { return statistics_; }
   /// Warnings from building the simulation (e.g. a preshrink that flipped triangles).
   const Diagnostics& diagnostics() const { return diagnostics_; }
-  /// The simulated world: the description it was built from with every setter's edits (surfaces,
-  /// paddings, gravity, step); poses are the initial ones (see UpdateWorld).
+  /// The simulated world: the description it was built from with every edit since (surfaces,
+  /// paddings, settings, drivers, joint limits); poses are the initial ones (see UpdateWorld).
   const WorldDesc& world() const { return world_; }
-  /// Writes the current state and every live edit into `world`, which must have the same
-  /// elements as the simulated one: object poses, velocities (as initial velocities), surfaces,
-  /// paddings and the global settings.
+  /// Klamp't's UpdateModel: writes the current state and every live edit into `world`, which
+  /// must have the same elements: object poses and velocities (as initial ones), robot
+  /// configurations and velocities, surfaces, paddings, drivers, joint limits, settings. An
+  /// editor never calls it on its document (runtime state enters a document only through an
+  /// explicit edit, core/edit).
   void UpdateWorld(WorldDesc* world) const;
 
   // ---- live edits: the rows of the parameter table (core/model/params.h) ------------------
@@ -173,31 +150,73 @@ class Simulator {
   /// The one path by which an edit reaches the simulation. Checks the element, the row and the
   /// value exactly as the file readers do (a refused edit changes nothing and `error` names the
   /// path and the rule), writes the simulated description, then by the row's apply kind: kLive
-  /// from the next step; kRebuildGeometry rebuilds the body's collision geometry; kRebuildSimulator
-  /// builds the whole simulation anew from the description and restores its state (MuJoCo's
-  /// mj_recompile); kOnReset changes only what Reset starts from. What the change invalidates
-  /// (contacts, energies, friction anchors) and wakes is decided in one place (BodyChanged).
+  /// from the next step; kRebuildGeometry rebuilds the body's collision geometry;
+  /// kRebuildSimulator builds the whole simulation anew from the description and restores its
+  /// state (MuJoCo's mj_recompile); kOnReset changes only what Reset starts from.
   bool SetParam(const ElementIndex& element, const ParamSpec& spec, const ParamValue& value,
                 std::string* error);
-  /// Builds the simulation anew from its description in the state it is in (or, stopped by an
-  /// error, in `state`); SetState of a stopped simulation does the same.
+  /// Builds the simulation anew from its description in the state it is in; a simulation stopped
+  /// by an error, in the state at the start of the step that failed.
   void Rebuild();
   /// True after an error stopped the simulation (Simulate returns kError until SetState, Reset
   /// or Rebuild).
   bool halted() const { return halted_; }
 
+  // ---- step observers ---------------------------------------------------------------------
+  /// `observer` is called after every accepted physics sub-step (step_observer.h); the id
+  /// removes it.
+  int AddStepObserver(StepObserver observer);
+  void RemoveStepObserver(int id);
+
   /// Body by Klamp't world id (terrains, then objects, then robots and their links).
   SimBody body(int id) { return SimBody(this, id); }
-  int body_count() const;
+  int body_count() const { return bodies_.size(); }
+  /// Kinetic energy of every freely moving body (J) and potential energy of every body with mass
+  /// in gravity (−Σ m g·p_com, J), at the current state.
+  double KineticEnergy() const;
+  double PotentialEnergy() const;
 
-  // rigid objects, by index in world().objects
-  int object_count() const;
+  // rigid objects, by index in world().objects; std::out_of_range for a bad index
+  int object_count() const { return static_cast<int>(bodies_.object_ids().size()); }
   /// Object frame (not the COM) in the world.
   Pose GetObjectPose(int object) const;
   void SetObjectPose(int object, const Pose& pose);
   /// Linear velocity of the object frame's origin and angular velocity, world.
   Twist GetObjectVelocity(int object) const;
   void SetObjectVelocity(int object, const Twist& velocity);
+
+  // ---- forces that last (MuJoCo's xfrc_applied) -----------------------------------------
+  /// A force (N, world) at the centre of mass and a torque (N·m, world) on body `id`, acting at
+  /// every step until changed or cleared, however Simulate is chunked. Replaces the body's
+  /// previous held wrench. std::invalid_argument for non-finite values; nothing for static ids.
+  void SetAppliedWrench(int id, const Vec3& force, const Vec3& torque);
+  /// A force (N, world direction) that lasts, acting at `local_point` (body frame, moves with
+  /// the body).
+  void SetAppliedForceAtLocalPoint(int id, const Vec3& force, const Vec3& local_point);
+  void ClearAppliedWrench(int id);
+  void ClearAppliedWrenches();
+
+  // ---- interaction: the mouse spring and kinematic drags (interaction.h) -----------------
+  /// Grabs body `id` (an object or robot link with an ODE body) at world point `point` with an
+  /// implicit spring towards a target (initially the point itself). False for a static or
+  /// unknown body. One grab at a time; a new one replaces the old.
+  bool StartDrag(int id, const Vec3& point, const DragSpringSettings& settings = {});
+  /// Moves the spring's target (world). Held until the next call or EndDrag, whatever the
+  /// chunking; the stretch is capped at settings.max_stretch.
+  void SetDragTarget(const Vec3& target);
+  void EndDrag();
+  bool dragging() const { return drag_.active; }
+  /// The grab: body, point, target, spring parameters and the force on the body in the last
+  /// step (N, world).
+  const DragState& drag() const { return drag_; }
+  /// Body `id` becomes kinematic and moves, at constant velocity, to reach the frame `target`
+  /// after `duration` s of simulated time (a step if 0), then stops there; it pushes what it
+  /// meets and carries what rests on it by friction (Box2D's b2Body_SetTargetTransform).
+  /// Calling it again (every frame of a mouse drag) retargets it.
+  void SetKinematicTarget(int id, const Pose& target, double duration);
+  /// The body becomes dynamic again with the velocity it last moved at (a throw works).
+  void ReleaseKinematicTarget(int id);
+  bool HasKinematicTarget(int id) const { return targets_.count(id) != 0; }
 
   // robots, by index in world().robots
   int robot_count() const { return static_cast<int>(robots_.size()); }
@@ -207,14 +226,15 @@ class Simulator {
   /// Teleports a robot (bodies placed by forward kinematics); the controller is not told.
   void SetRobotConfig(int robot, const VecX& q);
   void SetRobotVelocity(int robot, const VecX& dq);
-  /// Changes the joint range of a robot link on the running simulation: its joint stops from the
-  /// next step, and the position limits of the controller's ramps. Throws std::out_of_range for
-  /// a bad robot or link index and std::invalid_argument for a NaN bound or q_min > q_max
-  /// (infinite bounds remove the stop).
+  /// Changes the joint range of a robot link on the running simulation (the jointLimits row):
+  /// its joint stops from the next step, and the position limits of the controller's ramps.
+  /// Throws std::out_of_range for a bad robot or link index and std::invalid_argument for what
+  /// the table refuses (a NaN bound or q_min > q_max; infinite bounds remove the stop).
   void SetJointLimits(int robot, int link, double q_min, double q_max);
-  /// The controller of a robot: commands, gains, limits and friction, all live.
-  RobotController& controller(int robot) { return controllers_[robot]; }
-  const RobotController& controller(int robot) const { return controllers_[robot]; }
+  /// The controller of a robot: commands, gains, limits and friction, all live (its drivers are
+  /// this simulation's description: RobotController::ViewOf). std::out_of_range for a bad index.
+  RobotController& controller(int robot);
+  const RobotController& controller(int robot) const;
   /// Clamped driver efforts at the current state (driver-sized; Klamp't getActualTorque).
   VecX GetActuatorTorques(int robot) const;
   /// No physics: runs the controllers for dt, advances the time and moves every robot to its
@@ -222,7 +242,7 @@ class Simulator {
   void FakeSimulate(double dt);
 
   // contacts at the current state (after clustering), one entry per touching pair
-  const std::vector<ContactPair>& contact_pairs() const { return pairs_; }
+  const std::vector<ContactPair>& contact_pairs() const { return contacts_.pairs(); }
 
   // contact feedback, recorded only for pairs that asked for it (see contact_feedback.h for the
   // sign convention). b = -1 means "any body" in the queries.
@@ -232,6 +252,7 @@ class Simulator {
   /// enabled or made dynamic) need another call.
   void EnableContactFeedbackAll();
   void EnableContactFeedback(int a, int b);
+  const FeedbackRecorder& feedback() const { return feedback_; }
   /// Contacts acted between a and b in the last sub-step.
   bool InContact(int a, int b = -1) const;
   /// During the last Simulate call: some sub-step had contact / had none / interpenetrated.
@@ -252,79 +273,79 @@ class Simulator {
 
  private:
   friend class SimBody;
-  struct BodyRecord;
+  struct RobotScratch {
+    VecX q, dq, forces;
+    std::vector<ServoMotorCommand> motors;
+  };
+  struct StepProgress {  ///< what the sub-steps of one Step reported so far
+    unsigned flags = 0;
+    int rollbacks = 0;
+    int corrections = 0;
+  };
+  enum class IntegrateResult { kOk, kOdeError, kNonFinite };
+  enum class SubStep { kAccepted, kRetake, kError };
 
+  // building (simulator.cpp, simulator_bodies.cpp, simulator_robots.cpp)
   void Build();
   void TearDown();
   void RebuildWith(const SimState& state);
-  void ApplySettingsEdit(const ParamSpec& spec);
-  void ApplyBodyEdit(const ElementIndex& element, const ParamSpec& spec);
-  void ApplyRobotEdit(const ElementIndex& element, const ParamSpec& spec);
   void BuildBodies();
+  void BuildObject(int id, int object);
   void BuildRobot(int robot, int first_link_id);
+  void RebuildCollisionGeometry(int id);
+  std::shared_ptr<const CollisionGeometry> LinkCollisionGeometry(int robot, int link);
+  void ApplyInitialState();
+
+  // the step (simulator.cpp)
+  StepStatus Step(double step);
+  SubStep TrySubStep(double* h, StepProgress* progress, bool* recovered);
+  IntegrateResult Integrate(double step);
+  void BuildConstraints(double step);
+  StepStatus AcceptStep(double step, StepProgress* progress);
+  SubStep Halt(const std::string& error);
+  void DetectContacts();
+  void UpdateBounds();
+  bool MayCollide(const BodyRecord& a, const BodyRecord& b) const;
+  double PairStiffness(const ContactPair& pair) const;
+  void CaptureBodyState(SimState* state, bool with_controllers) const;
+  void RestoreState(const SimState& state);
+
+  // contact joints and feedback (simulator_contacts.cpp)
+  void AddContactJoints(const ContactPair& pair, const Vec3* anchor_velocities, double step);
+
+  // robots (simulator_robots.cpp)
   void RunControllers(double step);
   void PrepareRobotsForStep(double step);
   void AcceptRobotStep(double step);
-  void CaptureBodyState(SimState* state, bool with_controllers) const;
   void CaptureRobotState(SimState* state, bool with_controllers) const;
   void RestoreRobotState(const SimState& state);
   void RestoreControllers(const SimState& state);
   void UpdateWorldRobots(WorldDesc* world) const;
-  std::shared_ptr<const CollisionGeometry> LinkCollisionGeometry(int robot, int link);
-  /// SetState without forgetting the energies of the instability check (rollbacks).
-  void RestoreState(const SimState& state);
-  void ApplyInitialState();
-  StepStatus Step(double step);
-  enum class IntegrateResult { kOk, kOdeError, kNonFinite };
-  IntegrateResult Integrate(double step);
-  bool NeedsRollback(const std::vector<ContactPair>& before, bool* unreliable) const;
-  void AcceptStep(double step);
-  void ApplyAccumulatedForces();
-  bool CorrectInstabilities(double step);
-  void MeasureUnknownEnergies();
-  bool StopOverflowingBodies();
-  double BodyKineticEnergy(const BodyRecord& body) const;
-  double ContactEnergyAllowance(int id, double step) const;
-  bool RecoverFromFailedStep();
-  void RecordAcceptedContacts();
-  void RecordFeedback(double step);
-  void DetectContacts();
-  bool MayCollide(const BodyRecord& a, const BodyRecord& b) const;
-  void FindCandidatePairs();
-  void AddPairContacts(int a, int b);
-  void UpdateFrictionAnchors(double step);
-  bool KeepsTouchedAwake(const BodyRecord& body) const;
-  void WakeTouchedSleepers();
-  void WakeTouching(int id);
-  bool SleepsAgainstInert(const ContactPair& pair) const;
-  void UpdateSleep(double step);
-  void WakeBody(int id);
-  void SetObjectAsleep(int object, bool asleep);
-  BodyFrame BodyFrameOf(int id) const;
-  void AddContactJoints(const ContactPair& pair, const Vec3* anchor_velocities, double step);
-  double HardContactErp(double depth, double step) const;
-  static double ContactWeightDepth(const Contact& contact, const ContactPair& pair);
-  struct JointFeedbackSlot;
-  JointFeedbackSlot* AttachFeedback(dxJoint* joint, const ContactFeedbackRecord& record,
-                                    const ContactPair& pair, const Contact& contact,
-                                    double friction);
-  void AddCoreContactJoint(const dContact& soft_joint, double tolerance, double step,
-                           dxBody* body_a, dxBody* body_b, JointFeedbackSlot* slot);
-  bool StateIsFinite() const;
-  void RebuildCollisionGeometry(int id);
-  void ForgetEnergies();
+  void RobotLinksChanged(int robot, unsigned changes);
+  int RequireRobot(int robot) const;
 
-  // body access by world id
+  // edits (simulator_edit.cpp)
+  void ApplySettingsEdit(const ParamSpec& spec);
+  void ApplyBodyEdit(const ElementIndex& element, const ParamSpec& spec);
+  void ApplyRobotEdit(const ElementIndex& element, const ParamSpec& spec);
+  void SetBodySurface(int id, const SurfaceDesc& surface);
+  void SetBodyPadding(int id, double padding);
+
+  // interaction (simulator_interaction.cpp)
+  void MoveKinematicTargets(double step);
+  void AddDragJoint(double step);
+  void AcceptInteraction(double step);
+  void ClearInteraction();
+  double EffectiveMassAt(int id, const Vec3& point) const;
+
+  // bodies (simulator_bodies.cpp)
+  /// The one invalidation rule (body_change.h): what `changes` to body `id` make stale and wake.
+  void BodyChanged(int id, unsigned changes);
   const BodySimParams& sim_params(int id) const;
-  BodySimParams* mutable_sim_params(int id);
-  BodyRecord* record(int id);
-  const BodyRecord* record(int id) const;
-  Pose GetBodyPose(const BodyRecord& body) const;
-  void SetBodyPose(const BodyRecord& body, const Pose& pose);
-  Twist GetBodyVelocity(const BodyRecord& body) const;
-  void SetBodyVelocity(const BodyRecord& body, const Twist& velocity);
-
-  // the body operations behind SimBody, by world id; ignored for ids without a body
+  BodyRecord& RequireObject(int object);
+  const BodyRecord& RequireObject(int object) const;
+  BodyRecord& RequireBody(int id);
+  const BodyRecord& RequireBody(int id) const;
   bool BodyEnabled(int id) const;
   void SetBodyEnabled(int id, bool enabled);
   bool BodyDynamic(int id) const;
@@ -333,55 +354,33 @@ class Simulator {
   void SetBodyPose(int id, const Pose& pose);
   Twist BodyVelocity(int id) const;
   void SetBodyVelocity(int id, const Twist& velocity);
-  void SetBodyPadding(int id, double padding);
-  void SetBodySurface(int id, const SurfaceDesc& surface);
   void AddBodyForce(int id, const Vec3& force, const Vec3& point);
   void AddBodyWrench(int id, const Vec3& force, const Vec3& torque);
-
-  // feedback records touching (a, b); b = -1: every record touching a
-  std::vector<const ContactFeedbackRecord*> FeedbackRecords(int a, int b) const;
-  ContactFeedbackRecord* FindFeedback(int a, int b);
 
   WorldDesc world_;
   Diagnostics diagnostics_;
   CollisionGeometryCache geometry_cache_;
   std::unique_ptr<dxWorld, void (*)(dxWorld*)> ode_world_;
   std::unique_ptr<dxJointGroup, void (*)(dxJointGroup*)> contact_group_;
-  std::vector<BodyRecord> bodies_;  ///< by world id
-  std::vector<int> object_ids_;     ///< world id of each rigid object
+  std::unique_ptr<OdeDragJoint, void (*)(OdeDragJoint*)> drag_joint_;  ///< the spring's readout
+  BodyTable bodies_;
   std::vector<std::unique_ptr<OdeRobot>> robots_;
   std::vector<RobotController> controllers_;
   std::vector<std::vector<std::pair<int, int>>> self_collision_pairs_;  ///< per robot, sorted
-  struct RobotScratch {
-    VecX q, dq, forces;
-    std::vector<ServoMotorCommand> motors;
-  };
   std::vector<RobotScratch> robot_scratch_;  ///< per robot, reused every sub-step
   std::vector<int> collidable_;              ///< ids of bodies with geometry, for the broad phase
-  std::vector<std::pair<int, int>> candidates_;  ///< candidate pairs of the broad phase
-  std::vector<ContactPair> pairs_;               ///< contacts at the current state
-  std::vector<ContactPair> saved_pairs_;         ///< contacts at the start of a tentative step
-  std::vector<std::pair<int, int>> saved_candidates_;  ///< broad phase of saved_pairs_
-  SimState rollback_state_;                            ///< state at the start of a tentative step
-  std::vector<FrictionAnchor> anchors_;                ///< pairs that stick, sorted by (a, b)
-  std::vector<ObjectSleep> sleep_;                     ///< per rigid object
-  std::vector<int> sleep_islands_;                ///< scratch of UpdateSleep: union-find parents
-  std::vector<char> sleep_ready_, island_ready_;  ///< scratch of UpdateSleep
-  std::vector<FrictionAnchor> next_anchors_;      ///< scratch of UpdateFrictionAnchors
-  std::vector<Vec3> anchor_velocities_;  ///< per contact of pairs_, in order: anchor correction
-  bool contacts_current_ = false;        ///< pairs_ describes the current state
-  ContactList scratch_contacts_;
-  std::vector<ContactFeedbackRecord> feedback_;              ///< sorted by (first, second)
-  std::vector<std::vector<FeedbackContact>> step_feedback_;  ///< per feedback record, one step
-  std::vector<JointFeedbackSlot> joint_feedback_;            ///< ODE feedback of this step's joints
-  size_t next_feedback_slot_ = 0;
-  struct EnergyScratch {
-    std::vector<bool> pushed;  ///< per body: touched a kinematic body this step
-    std::vector<BodyEnergySample> samples;
-    std::vector<int> checked;  ///< body id of each sample
-  } energy_scratch_;
+  ContactSet contacts_;
+  FrictionAnchors anchors_;
+  StepGuard guard_;
+  FeedbackRecorder feedback_;
+  SleepTracker sleep_;
+  DragState drag_;
+  std::map<int, KinematicTarget> targets_;  ///< by body id
+  std::vector<std::pair<int, StepObserver>> observers_;
+  int next_observer_ = 0;
   double time_ = 0.0;
   bool halted_ = false;  ///< an error stopped the simulation
+  SimState last_good_;   ///< when halted: the state at the start of the step that failed
   SimStatistics statistics_;
 };
 

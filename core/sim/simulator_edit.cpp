@@ -2,12 +2,13 @@
 // Live edits of a running simulation: the parameter table's rows (Simulator::SetParam), the
 // typed setters built on it, and rebuilding the simulation from its description.
 #include <stdexcept>
+#include <string>
 
 #include <ode/ode.h>
 
+#include "core/sim/body_change.h"
 #include "core/sim/ode_robot.h"
 #include "core/sim/simulator.h"
-#include "core/sim/simulator_records.h"
 
 namespace lamina::core {
 
@@ -38,9 +39,8 @@ std::optional<ParamValue> Simulator::GetParam(const ElementIndex& element, const
 bool Simulator::SetParam(const ElementIndex& element, const ParamSpec& spec,
                          const ParamValue& value, std::string* error) {
   // a change of an object's centre of mass keeps its frame where it is (the mass moves)
-  const bool keeps_frame =
-      element.kind == ElementKind::kObject && spec.apply == ParamApply::kRebuildSimulator &&
-      element.index >= 0 && element.index < object_count() && !halted_;
+  const bool keeps_frame = element.kind == ElementKind::kObject && spec.key == "com" &&
+                           element.index >= 0 && element.index < object_count() && !halted_;
   const Pose frame = keeps_frame ? GetObjectPose(element.index) : Pose::Identity();
   const Twist twist = keeps_frame ? GetObjectVelocity(element.index) : Twist{};
   if (!core::SetParam(&world_, element, spec, value, error)) return false;
@@ -80,16 +80,19 @@ void Simulator::ApplySettingsEdit(const ParamSpec& spec) {
   } else if (spec.key == "maxContacts" || spec.key == "rigidObjectCollisions" ||
              spec.key == "robotSelfCollisions" || spec.key == "robotRobotCollisions") {
     // what touches changed: contacts are found again, and what slept on them wakes
-    contacts_current_ = false;
-    for (int id : object_ids_) WakeBody(id);
+    contacts_.Invalidate();
+    sleep_.WakeAll(&bodies_);
   }
 }
 
 void Simulator::ApplyBodyEdit(const ElementIndex& element, const ParamSpec& spec) {
   const int id = WorldIdOfElement(world_, element);
-  if (spec.apply == ParamApply::kRebuildGeometry) RebuildCollisionGeometry(id);
-  WakeBody(id);
-  WakeTouching(id);
+  if (spec.apply == ParamApply::kRebuildGeometry) {
+    RebuildCollisionGeometry(id);
+    BodyChanged(id, kShapeChanged);
+  } else {
+    BodyChanged(id, kSurfaceChanged);
+  }
 }
 
 void Simulator::ApplyRobotEdit(const ElementIndex& element, const ParamSpec& spec) {
@@ -100,10 +103,6 @@ void Simulator::ApplyRobotEdit(const ElementIndex& element, const ParamSpec& spe
   limits.q_min[element.sub] = link.q_min;
   limits.q_max[element.sub] = link.q_max;
   controllers_[element.index].SetLimits(limits);
-}
-
-void Simulator::Rebuild() {
-  RebuildWith(GetState());
 }
 
 // ---- the typed setters ------------------------------------------------------------------
@@ -120,18 +119,32 @@ void Simulator::SetGravity(const Vec3& gravity) {
   world_.settings.gravity = gravity;
   dWorldSetGravity(ode_world_.get(), gravity.x(), gravity.y(), gravity.z());
   for (RobotController& controller : controllers_) controller.SetGravity(gravity);
-  for (int id : object_ids_) WakeBody(id);
+  for (int id : bodies_.object_ids()) BodyChanged(id, kForceApplied);
+}
+
+void Simulator::SetSleeping(bool on) {
+  world_.settings.sleeping = on;
+  if (!on) sleep_.WakeAll(&bodies_);
+}
+
+void Simulator::SetSolver(const SolverSettings& solver) {
+  if (!(solver.quick_step_iterations >= 1)) {
+    throw std::invalid_argument("settings.quickStepIterations must be a whole number >= 1, got " +
+                                std::to_string(solver.quick_step_iterations));
+  }
+  world_.settings.solver = solver.type;
+  world_.settings.quick_step_iterations = solver.quick_step_iterations;
 }
 
 void Simulator::SetBodyPadding(int id, double padding) {
+  RequireBody(id);
   const std::optional<ElementIndex> element = ElementOfWorldId(world_, id);
-  if (!element || element->kind == ElementKind::kRobot) return;
   SetOrThrow(this, *element, "padding", {padding});
 }
 
 void Simulator::SetBodySurface(int id, const SurfaceDesc& surface) {
+  RequireBody(id);
   const std::optional<ElementIndex> element = ElementOfWorldId(world_, id);
-  if (!element || element->kind == ElementKind::kRobot) return;
   const std::pair<std::string_view, double> rows[] = {{"kRestitution", surface.restitution},
                                                       {"kFriction", surface.friction},
                                                       {"kStiffness", surface.stiffness},

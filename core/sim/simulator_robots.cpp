@@ -8,20 +8,14 @@
 #include <string>
 
 #include "core/geometry/shrink.h"
+#include "core/sim/body_change.h"
 #include "core/sim/ode_conversions.h"
 #include "core/sim/ode_robot.h"
 #include "core/sim/simulator.h"
-#include "core/sim/simulator_records.h"
 
 namespace lamina::core {
 
 namespace {
-
-void RequireRobot(int robot, int count) {
-  if (robot < 0 || robot >= count) {
-    throw std::out_of_range("robot index " + std::to_string(robot) + " out of range");
-  }
-}
 
 void RequireFiniteVector(const VecX& v, int size, const char* what) {
   if (v.size() != size || !v.allFinite()) {
@@ -49,6 +43,28 @@ GeometryDesc CombinedLinkGeometry(const LinkDesc& link) {
 }
 
 }  // namespace
+
+int Simulator::RequireRobot(int robot) const {
+  if (robot < 0 || robot >= robot_count()) {
+    throw std::out_of_range("robots[" + std::to_string(robot) + "]: the world has " +
+                            std::to_string(robot_count()) + " robots");
+  }
+  return robot;
+}
+
+RobotController& Simulator::controller(int robot) {
+  return controllers_[RequireRobot(robot)];
+}
+
+const RobotController& Simulator::controller(int robot) const {
+  return controllers_[RequireRobot(robot)];
+}
+
+// every link of `robot` made `changes` (body_change.h)
+void Simulator::RobotLinksChanged(int robot, unsigned changes) {
+  const int first = world_.RobotLinkId(robot, 0);
+  for (int l = 0; l < robots_[robot]->dof(); ++l) BodyChanged(first + l, changes);
+}
 
 void Simulator::BuildRobot(int robot, int first_link_id) {
   const RobotDesc& desc = world_.robots[robot];
@@ -181,7 +197,13 @@ void Simulator::UpdateWorldRobots(WorldDesc* world) const {
   for (int r = 0; r < robot_count(); ++r) {
     RobotDesc& robot = world->robots[r];
     for (size_t l = 0; l < robot.links.size() && l < world_.robots[r].links.size(); ++l) {
-      robot.links[l].sim = world_.robots[r].links[l].sim;
+      const LinkDesc& link = world_.robots[r].links[l];
+      robot.links[l].sim = link.sim;
+      robot.links[l].q_min = link.q_min;
+      robot.links[l].q_max = link.q_max;
+    }
+    if (robot.drivers.size() == world_.robots[r].drivers.size()) {
+      robot.drivers = world_.robots[r].drivers;
     }
     robot.config = GetRobotConfig(r);
     robot.velocity = GetRobotVelocity(r);
@@ -189,43 +211,35 @@ void Simulator::UpdateWorldRobots(WorldDesc* world) const {
 }
 
 VecX Simulator::GetRobotConfig(int robot) const {
-  RequireRobot(robot, robot_count());
+  RequireRobot(robot);
   VecX q;
   robots_[robot]->GetConfig(&q);
   return q;
 }
 
 VecX Simulator::GetRobotVelocity(int robot) const {
-  RequireRobot(robot, robot_count());
+  RequireRobot(robot);
   VecX dq;
   robots_[robot]->GetVelocity(&dq);
   return dq;
 }
 
 void Simulator::SetRobotConfig(int robot, const VecX& q) {
-  RequireRobot(robot, robot_count());
+  RequireRobot(robot);
   RequireFiniteVector(q, robots_[robot]->dof(), "a robot configuration");
   robots_[robot]->SetConfig(q);
-  contacts_current_ = false;
-  const auto is_link = [&](int id) {
-    return bodies_[id].kind == WorldId::Kind::kRobotLink && bodies_[id].index == robot;
-  };
-  std::erase_if(anchors_, [&](const FrictionAnchor& anchor) {
-    return is_link(anchor.a) || is_link(anchor.b);
-  });
-  for (size_t id = 0; id < bodies_.size(); ++id) {
-    if (is_link(static_cast<int>(id))) WakeTouching(static_cast<int>(id));
-  }
+  RobotLinksChanged(robot, kPoseChanged);
 }
 
 void Simulator::SetRobotVelocity(int robot, const VecX& dq) {
-  RequireRobot(robot, robot_count());
+  RequireRobot(robot);
   RequireFiniteVector(dq, robots_[robot]->dof(), "a robot velocity");
   robots_[robot]->SetVelocity(dq);
+  RobotLinksChanged(robot, kVelocityChanged);
 }
 
 VecX Simulator::GetActuatorTorques(int robot) const {
-  RequireRobot(robot, robot_count());
+  RequireRobot(robot);
   return controllers_[robot].DriverEfforts(GetRobotConfig(robot), GetRobotVelocity(robot));
 }
 
@@ -241,8 +255,9 @@ void Simulator::FakeSimulate(double dt) {
     if (!controller.GetCommandedVelocity(&dq)) dq.setZero();
     robots_[r]->SetConfig(controller.CommandedLinkConfig());
     robots_[r]->SetVelocity(dq);
+    // a teleport like SetRobotConfig: the same rule decides what it invalidates and wakes
+    RobotLinksChanged(r, kPoseChanged | kVelocityChanged);
   }
-  contacts_current_ = false;
 }
 
 }  // namespace lamina::core

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+#include "core/sim/contact_set.h"
+
+#include "core/contact/contact_clustering.h"
+
+namespace lamina::core {
+
+bool FindPairContacts(int first, int second, const NarrowBody& body_first,
+                      const NarrowBody& body_second, int max_contacts, ContactList* scratch,
+                      ContactPair* pair, SimTimeSplit* timing) {
+  // a is a body that moves (ODE attaches contact joints to it); normals point into a
+  const bool swap = !body_first.moves;
+  const NarrowBody& a = swap ? body_second : body_first;
+  const NarrowBody& b = swap ? body_first : body_second;
+  Stopwatch watch;
+  scratch->clear();
+  Collide(*a.geometry, a.pose, a.padding, *b.geometry, b.pose, b.padding, scratch);
+  timing->contact_generation += watch.Lap();
+  if (scratch->empty()) return false;
+  *pair = ContactPair{};
+  pair->a = swap ? second : first;
+  pair->b = swap ? first : second;
+  pair->tolerance = a.padding + a.geometry->margin() + b.padding + b.geometry->margin();
+  for (const Contact& contact : *scratch) {
+    pair->max_depth = std::max(pair->max_depth, contact.depth);
+    pair->penetrating = pair->penetrating || contact.penetrating;
+  }
+  MergeCoincidentContacts(std::max(kMergeFraction * pair->tolerance, kMinimumMergeRadius), scratch);
+  ClusterContacts(max_contacts, kDefaultClusterNormalScale, scratch);
+  pair->contacts = *scratch;
+  timing->clustering += watch.Lap();
+  return true;
+}
+
+void ContactSet::Clear() {
+  broad_.Clear();
+  before_candidates_.clear();
+  pairs_.clear();
+  before_.clear();
+  current_ = false;
+}
+
+void ContactSet::KeepForRollback() {
+  std::swap(pairs_, before_);
+  broad_.Swap(&before_candidates_);
+  current_ = false;
+}
+
+void ContactSet::Rollback() {
+  std::swap(pairs_, before_);
+  broad_.Swap(&before_candidates_);
+  current_ = true;
+}
+
+}  // namespace lamina::core

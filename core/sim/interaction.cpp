@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+#include "core/sim/interaction.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lamina::core {
+
+namespace {
+
+constexpr double kStandardGravity = 9.81;  // m/s², for the cap in a world without gravity
+
+Mat3 Cross(const Vec3& r) {
+  Mat3 m;
+  m << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0;
+  return m;
+}
+
+}  // namespace
+
+DragSpring MakeDragSpring(double mass, double gravity, const DragSpringSettings& settings) {
+  const double omega = 2.0 * kPi * settings.frequency;
+  const double g = gravity > 0.0 ? gravity : kStandardGravity;
+  return {mass * omega * omega, 2.0 * settings.damping_ratio * mass * omega,
+          settings.max_force_per_weight * mass * g};
+}
+
+double DragScale(const DragSpring& spring, const Vec3& stretch, const Vec3& velocity,
+                 const Vec3& gravity, double h) {
+  const double bound = spring.stiffness * stretch.norm() +
+                       (spring.stiffness * h + spring.damping) * (velocity + h * gravity).norm();
+  return bound > spring.max_force ? spring.max_force / bound : 1.0;
+}
+
+Vec3 CapStretch(const Vec3& point, const Vec3& target, double max_stretch) {
+  const Vec3 stretch = target - point;
+  const double length = stretch.norm();
+  if (length <= max_stretch) return target;
+  return point + stretch * (max_stretch / length);
+}
+
+double RigidEffectiveMass(double mass, const Mat3& inertia, const Vec3& r) {
+  const Mat3 cross = Cross(r);
+  const double trace = 3.0 / mass + (cross * inertia.inverse() * cross.transpose()).trace();
+  return 3.0 / trace;
+}
+
+}  // namespace lamina::core

@@ -1,0 +1,184 @@
+// SPDX-License-Identifier: MIT
+// The Simulator's interaction primitives (interaction.h has the laws): the mouse spring as an
+// implicit ODE ball joint to the target, rebuilt every physics step, and kinematic targets.
+#include <cmath>
+#include <stdexcept>
+
+#include <ode/ode.h>
+
+#include "core/robot/dynamics.h"
+#include "core/sim/body_change.h"
+#include "core/sim/ode_conversions.h"
+#include "core/sim/ode_robot.h"
+#include "core/sim/simulator.h"
+
+namespace lamina::core {
+
+/// The spring's joint of the current step and ODE's readout of its force.
+struct OdeDragJoint {
+  dJointFeedback feedback{};
+  bool attached = false;  ///< a joint was made in the step being taken
+};
+
+OdeDragJoint* NewOdeDragJoint() {
+  return new OdeDragJoint();
+}
+
+void DeleteOdeDragJoint(OdeDragJoint* joint) {
+  delete joint;
+}
+
+namespace {
+
+// Lie-group logarithm of a rotation as an angular displacement (rad, world)
+Vec3 RotationBetween(const Mat3& from, const Mat3& to) {
+  return MomentFromRotation(to * from.transpose());
+}
+
+}  // namespace
+
+// ---- the mouse spring -------------------------------------------------------------------
+
+double Simulator::EffectiveMassAt(int id, const Vec3& point) const {
+  const BodyRecord& body = bodies_[id];
+  if (body.kind == WorldId::Kind::kRobotLink) {
+    const OdeRobot& robot = *robots_[body.index];
+    std::vector<bool> free(robot.dof());
+    for (int l = 0; l < robot.dof(); ++l) free[l] = robot.DofFree(l);
+    return core::EffectiveMassAt(world_.robots[body.index], GetRobotConfig(body.index), free,
+                                 body.link, point);
+  }
+  const Mat3 rotation = ToMat3(dBodyGetRotation(body.body));
+  const Vec3 com = ToVec3(dBodyGetPosition(body.body));
+  return RigidEffectiveMass(body.mass, rotation * body.inertia * rotation.transpose(), point - com);
+}
+
+bool Simulator::StartDrag(int id, const Vec3& point, const DragSpringSettings& settings) {
+  if (!point.allFinite()) throw std::invalid_argument("a drag point must be finite");
+  const BodyRecord* body = bodies_.Find(id);
+  if (body == nullptr || body->body == nullptr || !body->enabled || !body->dynamic) return false;
+  const double mass = EffectiveMassAt(id, point);
+  if (!(mass > 0.0) || !std::isfinite(mass)) return false;
+  drag_ = DragState{};
+  drag_.active = true;
+  drag_.body = id;
+  drag_.local_point = bodies_.GetPose(*body).inverse() * point;
+  drag_.target = point;
+  drag_.effective_mass = mass;
+  drag_.settings = settings;
+  drag_.spring = MakeDragSpring(mass, world_.settings.gravity.norm(), settings);
+  BodyChanged(id, kForceApplied);
+  return true;
+}
+
+void Simulator::SetDragTarget(const Vec3& target) {
+  if (!target.allFinite()) throw std::invalid_argument("a drag target must be finite");
+  if (!drag_.active) return;
+  drag_.target = target;
+  BodyChanged(drag_.body, kForceApplied);
+}
+
+void Simulator::EndDrag() {
+  drag_ = DragState{};
+}
+
+// the ball joint from the grabbed point to the (capped) target for a step of h, its k and c
+// scaled to keep the force under the cap (interaction.h)
+void Simulator::AddDragJoint(double step) {
+  drag_joint_->attached = false;
+  if (!drag_.active) return;
+  const BodyRecord& body = bodies_[drag_.body];
+  if (!body.moves_freely() || !dBodyIsEnabled(body.body)) return;
+  const Vec3 point = bodies_.GetPose(body) * drag_.local_point;
+  const Vec3 target = CapStretch(point, drag_.target, drag_.settings.max_stretch);
+  dVector3 velocity;
+  dBodyGetPointVel(body.body, point.x(), point.y(), point.z(), velocity);
+  const double scale =
+      DragScale(drag_.spring, target - point, ToVec3(velocity), world_.settings.gravity, step);
+  const double k = scale * drag_.spring.stiffness;
+  const double c = scale * drag_.spring.damping;
+  dJointID joint = dJointCreateBall(ode_world_.get(), contact_group_.get());
+  dJointAttach(joint, body.body, nullptr);
+  dJointSetBallAnchor(joint, point.x(), point.y(), point.z());
+  dJointSetBallAnchor2(joint, target.x(), target.y(), target.z());
+  dJointSetBallParam(joint, dParamERP, step * k / (step * k + c));
+  dJointSetBallParam(joint, dParamCFM, 1.0 / (step * k + c));
+  dJointSetFeedback(joint, &drag_joint_->feedback);
+  drag_joint_->attached = true;
+}
+
+// ---- kinematic targets ------------------------------------------------------------------
+
+void Simulator::SetKinematicTarget(int id, const Pose& target, double duration) {
+  if (!target.matrix().allFinite() || !std::isfinite(duration) || duration < 0.0) {
+    throw std::invalid_argument("a kinematic target needs a finite pose and duration >= 0");
+  }
+  BodyRecord& body = RequireBody(id);
+  if (body.body == nullptr) return;
+  const bool first = targets_.count(id) == 0;
+  KinematicTarget& move = targets_[id];
+  if (first) move.was_dynamic = body.dynamic;
+  if (body.dynamic) SetBodyDynamic(id, false);
+  const double time = std::max(duration, world_.settings.timestep);
+  const Pose now = bodies_.GetPose(body);
+  move.target = target;
+  move.duration = time;
+  move.remaining = time;
+  move.standing = 0.0;
+  move.com_velocity = (target * body.com - now * body.com) / time;
+  move.angular_velocity = RotationBetween(now.linear(), target.linear()) / time;
+}
+
+void Simulator::ReleaseKinematicTarget(int id) {
+  const auto found = targets_.find(id);
+  if (found == targets_.end()) return;
+  const KinematicTarget move = found->second;
+  targets_.erase(found);
+  BodyRecord& body = RequireBody(id);
+  if (move.was_dynamic) SetBodyDynamic(id, true);
+  // thrown with the velocity of its last move, unless it has stood still longer than that took
+  const bool moving = move.standing <= move.duration;
+  const Vec3 linear = moving ? move.com_velocity : Vec3::Zero();
+  const Vec3 angular = moving ? move.angular_velocity : Vec3::Zero();
+  dBodySetLinearVel(body.body, linear.x(), linear.y(), linear.z());
+  dBodySetAngularVel(body.body, angular.x(), angular.y(), angular.z());
+  BodyChanged(id, kVelocityChanged);
+}
+
+// each moving target's body gets the velocity of its move for this step, or in the step that
+// ends the move the one that lands exactly on the target; an arrived body stands
+void Simulator::MoveKinematicTargets(double step) {
+  for (auto& [id, move] : targets_) {
+    const BodyRecord& body = bodies_[id];
+    Vec3 linear = Vec3::Zero(), angular = Vec3::Zero();
+    if (move.remaining > step * (1 + 1e-9)) {
+      linear = move.com_velocity;
+      angular = move.angular_velocity;
+    } else if (move.remaining > 0.0) {
+      const Pose now = bodies_.GetPose(body);
+      linear = (move.target * body.com - now * body.com) / step;
+      angular = RotationBetween(now.linear(), move.target.linear()) / step;
+    }
+    dBodySetLinearVel(body.body, linear.x(), linear.y(), linear.z());
+    dBodySetAngularVel(body.body, angular.x(), angular.y(), angular.z());
+  }
+}
+
+void Simulator::AcceptInteraction(double step) {
+  for (auto& [id, move] : targets_) {
+    if (move.remaining == 0.0) move.standing += step;
+    move.remaining = std::max(0.0, move.remaining - step);
+  }
+  if (drag_.active && drag_joint_->attached) drag_.force = ToVec3(drag_joint_->feedback.f1);
+}
+
+void Simulator::ClearInteraction() {
+  for (const auto& [id, move] : targets_) {
+    if (move.was_dynamic) SetBodyDynamic(id, true);
+  }
+  targets_.clear();
+  drag_ = DragState{};
+  ClearAppliedWrenches();
+}
+
+}  // namespace lamina::core

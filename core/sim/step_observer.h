@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+// What a simulation reports about its steps: the status of a Simulate call, the counters since
+// construction or Reset, and the per-step event that observers receive (Jolt's
+// PhysicsStepListener, Box2D's per-step events). The event is the single source of per-step
+// numbers: the statistics are accumulated from it, `run --log` writes its rows from it, and plots
+// keep ring buffers of it. It is sent after every ACCEPTED physics sub-step (a rolled-back
+// tentative step sends nothing), so nothing an observer sees depends on how Simulate is chunked.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/sim/contact_set.h"
+#include "core/sim/sim_timing.h"
+
+namespace lamina::core {
+
+class Simulator;
+class FeedbackRecorder;
+
+enum class StepStatus {
+  kNormal = 0,
+  kAdaptiveStep = 1,       ///< a step was rolled back and retaken with a smaller step
+  kContactUnreliable = 2,  ///< underlying geometries interpenetrated (beyond the padding)
+  kUnstable = 3,           ///< energy blew up (or a state became non-finite) and was corrected
+  kError = 4,              ///< ODE failed or a state stayed non-finite; the simulation stopped
+};
+/// "normal", "adaptive step", ...
+const char* StepStatusName(StepStatus status);
+
+/// What happened in one accepted step (bits; several at once).
+enum StepFlag : unsigned {
+  kStepRetaken = 1u << 0,       ///< it was rolled back and retaken smaller before
+  kStepUnreliable = 1u << 1,    ///< some pair's geometries interpenetrate after it
+  kStepCorrected = 1u << 2,     ///< the instability check slowed bodies down
+  kStepRecovered = 1u << 3,     ///< a non-finite state was undone with the culprits stopped
+  kStepOverflowStop = 1u << 4,  ///< bodies with overflowing energy were stopped before it
+};
+
+/// Counters since construction or the last Reset.
+struct SimStatistics {
+  long steps = 0;                    ///< physics sub-steps taken (accepted)
+  long rollbacks = 0;                ///< sub-steps undone and retaken at half the step
+  long instability_corrections = 0;  ///< bodies whose energy blow-up was corrected
+  long unreliable_steps = 0;         ///< accepted steps after which geometries interpenetrated
+  int max_contacts_in_step = 0;      ///< most contact joints in one sub-step
+  long contact_joints = 0;           ///< contact joints over all accepted sub-steps
+  double max_penetration = 0.0;      ///< deepest boundary-layer overlap in an accepted state, m
+  StepStatus worst_status = StepStatus::kNormal;
+  std::string error;  ///< what stopped the simulation (kError)
+  SimTimeSplit time_split;
+};
+
+/// One accepted physics sub-step, as observers see it (valid during the call only).
+struct StepEvent {
+  const Simulator& simulator;  ///< the state after the step (poses, robots, energies)
+  double time = 0.0;           ///< simulated time after the step (s)
+  double h = 0.0;              ///< its length (s)
+  unsigned flags = 0;          ///< StepFlag bits
+  int contact_joints = 0;      ///< contact joints the step was solved with
+  int rollbacks = 0;           ///< tentative steps undone since the previous accepted one
+  int corrections = 0;         ///< bodies slowed or stopped by the stability checks
+  const std::vector<ContactPair>& contacts;  ///< touching pairs after the step
+  const FeedbackRecorder& feedback;          ///< recorded pairs, this step's forces
+};
+
+using StepObserver = std::function<void(const StepEvent&)>;
+
+/// The status a step with `flags` reports (the worst of its bits).
+StepStatus StatusOfStep(unsigned flags);
+/// Adds one event to the counters (the simulator's own statistics are kept this way).
+void AccumulateStep(const StepEvent& event, SimStatistics* statistics);
+
+}  // namespace lamina::core
