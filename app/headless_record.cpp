@@ -149,8 +149,7 @@ int RunRecord(const RecordOptions& options) {
   for (int k = 0; k <= last; ++k) {
     const double time = k / options.fps;
     if (time > simulator->time()) simulator->Simulate(time - simulator->time());
-    simulator->UpdateWorld(&world);
-    if (!sink.Write(k, renderer.Render(world, simulator.get()))) {
+    if (!sink.Write(k, renderer.Render(world, core::CurrentPoses(*simulator), simulator.get()))) {
       std::cerr << "\nlamina-headless record: cannot write frame " << k << "\n";
       return 1;
     }

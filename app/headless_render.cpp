@@ -73,12 +73,13 @@ bool OffscreenView::Open(const ViewOptions& options, std::string* error) {
 }
 
 std::vector<std::uint8_t> OffscreenView::Render(const core::WorldDesc& world,
+                                                const core::WorldPoses& poses,
                                                 const core::Simulator* simulator) {
   State& s = *state_;
   const std::vector<core::ContactMarker> contacts =
       simulator ? core::ContactMarkersFromSimulator(*simulator)
                 : std::vector<core::ContactMarker>();
-  core::ExtractScene(world, s.options.overlays, contacts, &s.meshes, &s.scene);
+  core::ExtractScene(world, poses, s.options.overlays, contacts, &s.meshes, &s.scene);
   if (!s.camera_chosen) {
     std::string ignored;  // the spec was validated by ParseViewOptions
     core::CameraForScene(s.options.camera, s.scene,

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // What `shot` and `record` share: the view options (size, camera, overlays) parsed with messages
 // naming the option, world loading, and an off-screen view (OSMesa + the renderer) that turns a
-// world state into pixels.
+// world description drawn at given poses into pixels. Nothing here writes runtime state into the
+// description.
 #pragma once
 
 #include <cstdint>
@@ -12,6 +13,7 @@
 #include "core/model/world_desc.h"
 #include "core/render/camera.h"
 #include "core/render/overlay_options.h"
+#include "core/render/world_poses.h"
 
 namespace lamina::core {
 class Simulator;
@@ -46,8 +48,10 @@ class OffscreenView {
 
   /// Creates the OSMesa context and the renderer; false with a message otherwise.
   bool Open(const ViewOptions& options, std::string* error);
-  /// Draws `world` (contacts from `simulator` when given) and returns RGBA8 rows bottom-up.
-  std::vector<std::uint8_t> Render(const core::WorldDesc& world, const core::Simulator* simulator);
+  /// Draws `world` at `poses` (contacts from `simulator` when given) and returns RGBA8 rows
+  /// bottom-up.
+  std::vector<std::uint8_t> Render(const core::WorldDesc& world, const core::WorldPoses& poses,
+                                   const core::Simulator* simulator);
   const core::OrbitCamera& camera() const;
   /// GL_VERSION and GL_RENDERER, e.g. "4.5 (Core Profile) Mesa 22.3.6 / llvmpipe ...".
   std::string GlDescription() const;

@@ -48,14 +48,16 @@ int RunShot(const ShotOptions& options) {
   if (options.time > 0.0 || needs_contacts) {
     simulator = MakeRenderSimulator(world);
     if (options.time > 0.0) simulator->Simulate(options.time);
-    simulator->UpdateWorld(&world);
   }
+  // the simulation's state when there is one, else the file's initial conditions
+  const core::WorldPoses poses =
+      simulator ? core::CurrentPoses(*simulator) : core::InitialPoses(world);
   OffscreenView renderer;
   if (!renderer.Open(view, &error)) {
     std::cerr << "lamina-headless shot: " << error << "\n";
     return 1;
   }
-  const std::vector<std::uint8_t> pixels = renderer.Render(world, simulator.get());
+  const std::vector<std::uint8_t> pixels = renderer.Render(world, poses, simulator.get());
   if (!ui::WritePngBottomUp(options.output, view.width, view.height, pixels)) {
     std::cerr << "lamina-headless shot: cannot write " << options.output << "\n";
     return 1;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Builds the RenderScene of a world: body meshes first, then the overlays sized to the scene.
+// Builds the RenderScene of a world at given poses: body meshes first, then the overlays sized
+// to the scene.
 #include "core/render/scene_extract.h"
 
 #include <algorithm>
@@ -52,39 +53,55 @@ bool IsPlane(const GeometryDesc& geometry) {
          geometry.primitive.type == PrimitiveType::kPlane;
 }
 
-std::vector<BodyPart> CollectParts(const WorldDesc& world, int selected_id,
-                                   std::vector<BodyFrame>* frames) {
-  std::vector<BodyPart> parts;
+void AddTerrainParts(const WorldDesc& world, int selected_id, std::vector<BodyPart>* parts) {
   for (size_t i = 0; i < world.terrains.size(); ++i) {
     const TerrainDesc& terrain = world.terrains[i];
     const int id = world.TerrainId(static_cast<int>(i));
-    parts.push_back({&terrain.geometry, Pose::Identity(),
-                     DisplayColor(terrain.display).value_or(DefaultTerrainColor()), id, true,
-                     id == selected_id, terrain.sim.padding + terrain.geometry.margin});
+    parts->push_back({&terrain.geometry, Pose::Identity(),
+                      DisplayColor(terrain.display).value_or(DefaultTerrainColor()), id, true,
+                      id == selected_id, terrain.sim.padding + terrain.geometry.margin});
   }
+}
+
+void AddObjectParts(const WorldDesc& world, const WorldPoses& poses, int selected_id,
+                    std::vector<BodyPart>* parts, std::vector<BodyFrame>* frames) {
   for (size_t i = 0; i < world.objects.size(); ++i) {
     const RigidObjectDesc& object = world.objects[i];
     const int id = world.ObjectId(static_cast<int>(i));
-    parts.push_back({&object.geometry, object.pose,
-                     DisplayColor(object.display).value_or(DefaultObjectColor()), id, false,
-                     id == selected_id, object.sim.padding + object.geometry.margin});
-    frames->push_back({object.pose, object.pose * object.com});
+    const Pose pose = DrawnObjectPose(world, poses, static_cast<int>(i));
+    parts->push_back({&object.geometry, pose,
+                      DisplayColor(object.display).value_or(DefaultObjectColor()), id, false,
+                      id == selected_id, object.sim.padding + object.geometry.margin});
+    frames->push_back({pose, pose * object.com});
   }
-  for (size_t r = 0; r < world.robots.size(); ++r) {
-    const RobotDesc& robot = world.robots[r];
-    const bool robot_selected = world.RobotId(static_cast<int>(r)) == selected_id;
-    const std::vector<Pose> link_frames = LinkTransforms(robot, DisplayConfiguration(robot));
-    const std::vector<Vec3> coms = LinkComPositions(robot, link_frames);
-    for (int l = 0; l < robot.dof(); ++l) {
-      const LinkDesc& link = robot.links[l];
-      const int id = world.RobotLinkId(static_cast<int>(r), l);
-      for (const GeometryDesc& geometry : link.geometry) {
-        parts.push_back({&geometry, link_frames[l], RobotLinkColor(robot, l), id, false,
-                         robot_selected || id == selected_id, link.sim.padding + geometry.margin});
-      }
-      if (link.has_geometry()) frames->push_back({link_frames[l], coms[l]});
+}
+
+void AddRobotParts(const WorldDesc& world, const WorldPoses& poses, int robot_index,
+                   int selected_id, std::vector<BodyPart>* parts, std::vector<BodyFrame>* frames) {
+  const RobotDesc& robot = world.robots[robot_index];
+  const bool robot_selected = world.RobotId(robot_index) == selected_id;
+  const std::vector<Pose> link_frames =
+      LinkTransforms(robot, DrawnRobotConfiguration(world, poses, robot_index));
+  const std::vector<Vec3> coms = LinkComPositions(robot, link_frames);
+  for (int l = 0; l < robot.dof(); ++l) {
+    const LinkDesc& link = robot.links[l];
+    const int id = world.RobotLinkId(robot_index, l);
+    for (const GeometryDesc& geometry : link.geometry) {
+      parts->push_back({&geometry, link_frames[l], RobotLinkColor(robot, l), id, false,
+                        robot_selected || id == selected_id, link.sim.padding + geometry.margin});
     }
+    if (link.has_geometry()) frames->push_back({link_frames[l], coms[l]});
   }
+}
+
+// every body's pieces at `poses`, in world id order
+std::vector<BodyPart> CollectParts(const WorldDesc& world, const WorldPoses& poses, int selected_id,
+                                   std::vector<BodyFrame>* frames) {
+  std::vector<BodyPart> parts;
+  AddTerrainParts(world, selected_id, &parts);
+  AddObjectParts(world, poses, selected_id, &parts, frames);
+  for (size_t r = 0; r < world.robots.size(); ++r)
+    AddRobotParts(world, poses, static_cast<int>(r), selected_id, &parts, frames);
   return parts;
 }
 
@@ -209,19 +226,12 @@ void AddContacts(const OverlayOptions& options, const std::vector<ContactMarker>
 
 }  // namespace
 
-VecX DisplayConfiguration(const RobotDesc& robot) {
-  if (robot.config.size() == robot.dof()) return robot.config;
-  VecX q(robot.dof());
-  for (int l = 0; l < robot.dof(); ++l) q[l] = robot.links[l].q_initial;
-  return q;
-}
-
-void ExtractScene(const WorldDesc& world, const OverlayOptions& options,
+void ExtractScene(const WorldDesc& world, const WorldPoses& poses, const OverlayOptions& options,
                   const std::vector<ContactMarker>& contacts, RenderMeshCache* cache,
                   RenderScene* scene) {
   *scene = RenderScene();
   std::vector<BodyFrame> frames;
-  const std::vector<BodyPart> parts = CollectParts(world, options.selected_id, &frames);
+  const std::vector<BodyPart> parts = CollectParts(world, poses, options.selected_id, &frames);
   AddBodies(parts, cache, scene);
   const float marker = MarkerSize(*scene);
   AddBoxes(options, scene);

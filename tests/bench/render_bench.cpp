@@ -33,7 +33,8 @@ bool LoadWorld(const std::string& path, core::WorldDesc* world) {
   return core::LoadWorldFile(path, context, world) && !diagnostics.HasErrors();
 }
 
-// one frame of a running viewer: extract the (unchanged) world, draw, wait for the pixels
+// one frame of a running viewer: extract the (unchanged) world at its initial poses, draw, wait
+// for the pixels
 // state.range(0): samples per pixel (0: one sample smoothed by FXAA), state.range(1): shadow
 // map size (0 = no shadows)
 void BM_AthleteFrame(benchmark::State& state, const char* camera_spec, bool read_back) {
@@ -52,13 +53,14 @@ void BM_AthleteFrame(benchmark::State& state, const char* camera_spec, bool read
   }
   core::RenderMeshCache meshes;
   core::RenderScene scene;
-  core::ExtractScene(world, {}, {}, &meshes, &scene);
+  const core::WorldPoses poses = core::InitialPoses(world);
+  core::ExtractScene(world, poses, {}, {}, &meshes, &scene);
   core::OrbitCamera camera;
   core::CameraForScene(camera_spec, scene, double(kWidth) / kHeight, &camera, &error);
   renderer.Render(scene, camera, kWidth, kHeight);  // warm-up: uploads meshes, compiles shaders
   context.SwapOrFinish();
   for (auto _ : state) {
-    core::ExtractScene(world, {}, {}, &meshes, &scene);
+    core::ExtractScene(world, poses, {}, {}, &meshes, &scene);
     renderer.Render(scene, camera, kWidth, kHeight);
     if (read_back) {
       benchmark::DoNotOptimize(renderer.ReadPixels(kWidth, kHeight));
@@ -115,7 +117,7 @@ void BM_AthleteShot(benchmark::State& state) {
     }
     core::RenderMeshCache meshes;
     core::RenderScene scene;
-    core::ExtractScene(world, {}, {}, &meshes, &scene);
+    core::ExtractScene(world, core::InitialPoses(world), {}, {}, &meshes, &scene);
     core::OrbitCamera camera;
     core::CameraForScene("", scene, double(kWidth) / kHeight, &camera, &error);
     renderer.Render(scene, camera, kWidth, kHeight);

@@ -63,16 +63,17 @@ class RenderGoldenTest : public ::testing::Test {
     EXPECT_TRUE(core::ParseOverlayList(c.overlays, &overlays, &error)) << error;
     overlays.selected_id = c.selected_id;
     std::vector<core::ContactMarker> contacts;
+    core::WorldPoses poses = core::InitialPoses(loaded.world);
     if (c.time > 0.0) {
       core::Simulator simulator(loaded.world);
       simulator.EnableContactFeedbackAll();
       simulator.Simulate(c.time);
-      simulator.UpdateWorld(&loaded.world);
+      poses = core::CurrentPoses(simulator);
       contacts = core::ContactMarkersFromSimulator(simulator);
     }
     core::RenderMeshCache meshes;
     core::RenderScene scene;
-    core::ExtractScene(loaded.world, overlays, contacts, &meshes, &scene);
+    core::ExtractScene(loaded.world, poses, overlays, contacts, &meshes, &scene);
     core::OrbitCamera camera;
     EXPECT_TRUE(core::CameraForScene(c.camera, scene, double(kWidth) / kHeight, &camera, &error))
         << error;

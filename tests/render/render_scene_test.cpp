@@ -1,11 +1,19 @@
 // SPDX-License-Identifier: MIT
 // Scene extraction without any GL: draw items per world, colours from display attributes and
-// defaults, mesh caching across frames, overlays and the overlay list parser.
+// defaults, mesh caching across frames, overlays and the overlay list parser; the description
+// drawn at poses that are not its own (WorldPoses), and where those poses come from.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "core/render/display_color.h"
 #include "core/render/overlay_options.h"
+#include "core/render/picking.h"
+#include "core/render/scene_camera.h"
 #include "core/render/scene_extract.h"
+#include "core/render/world_poses.h"
+#include "core/robot/kinematics.h"
+#include "core/sim/simulator.h"
 #include "tests/common/test_support.h"
 
 namespace lamina::core {
@@ -22,7 +30,7 @@ void Extract(const std::string& path, const OverlayOptions& options, RenderScene
   test::LoadedWorld loaded;
   test::LoadWorld(path, &loaded);
   ASSERT_TRUE(loaded.ok) << loaded.diagnostics.FormatAll();
-  ExtractScene(loaded.world, options, contacts, cache, scene);
+  ExtractScene(loaded.world, InitialPoses(loaded.world), options, contacts, cache, scene);
 }
 
 TEST(DisplayColorTest, ParsesRgbAndRgba) {
@@ -74,9 +82,10 @@ TEST(RenderSceneTest, RobotLinksAreDrawnAndMeshesAreCachedAcrossFrames) {
   }
   RenderScene first, second;
   RenderMeshCache cache;
-  ExtractScene(loaded.world, {}, {}, &cache, &first);
+  const WorldPoses poses = InitialPoses(loaded.world);
+  ExtractScene(loaded.world, poses, {}, {}, &cache, &first);
   const int cached = cache.size();
-  ExtractScene(loaded.world, {}, {}, &cache, &second);
+  ExtractScene(loaded.world, poses, {}, {}, &cache, &second);
   EXPECT_EQ(static_cast<int>(first.items.size()), 1 + geometries);
   EXPECT_EQ(cache.size(), cached);
   for (size_t i = 0; i < first.items.size(); ++i) {
@@ -106,6 +115,172 @@ TEST(RenderSceneTest, OverlaysAddMarkersShellsAndBoxes) {
   EXPECT_EQ(scene.lines.size(), 3u * 12u);    // a box per body (the selected one highlighted)
   const DebugArrow& force = scene.arrows[7];  // after 6 frame axes and 1 normal
   EXPECT_NEAR(force.to.z() - force.from.z(), 9.8 * options.force_scale, 1e-6);
+}
+
+// largest entry of |a - b|
+float MaxDifference(const Eigen::Matrix4f& a, const Eigen::Matrix4f& b) {
+  return (a - b).cwiseAbs().maxCoeff();
+}
+
+Eigen::Matrix4f Drawn(const Pose& frame, const GeometryDesc& geometry) {
+  return (frame * geometry.Matrix()).matrix().cast<float>();
+}
+
+test::LoadedWorld Load(const std::string& path) {
+  test::LoadedWorld loaded;
+  test::LoadWorld(path, &loaded);
+  EXPECT_TRUE(loaded.ok) << loaded.diagnostics.FormatAll();
+  return loaded;
+}
+
+std::string PaddedContactsPath() {
+  return std::string(LAMINA_RENDER_TEST_DATA) + "/padded_contacts.xml";
+}
+
+// the box (object 0) turned 30 degrees about z and lifted to (1, 2, 3); the ball (object 1) at
+// (-1, 0.5, 0.7); neither where the file puts them
+WorldPoses MovedBoxAndBall(const WorldDesc& world) {
+  WorldPoses poses = InitialPoses(world);
+  poses.objects[0] = Eigen::Translation3d(1, 2, 3) * Eigen::AngleAxisd(M_PI / 6, Vec3::UnitZ());
+  poses.objects[1] = Pose(Eigen::Translation3d(-1, 0.5, 0.7));
+  return poses;
+}
+
+TEST(WorldPosesTest, ObjectsAndTheirOverlaysAreDrawnAtTheGivenPoses) {
+  const test::LoadedWorld loaded = Load(PaddedContactsPath());
+  const WorldDesc& world = loaded.world;
+  const WorldPoses poses = MovedBoxAndBall(world);
+  OverlayOptions options;
+  std::string error;
+  ASSERT_TRUE(ParseOverlayList("padding,com,frames", &options, &error));
+  RenderScene scene;
+  RenderMeshCache cache;
+  ExtractScene(world, poses, options, {}, &cache, &scene);
+  // items: terrain, box, ball, then the three padding shells in the same order
+  ASSERT_EQ(scene.items.size(), 6u);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_LE(MaxDifference(scene.items[1 + i].transform,
+                            Drawn(poses.objects[i], world.objects[i].geometry)),
+              1e-6f);
+    EXPECT_LE(MaxDifference(scene.items[4 + i].transform, poses.objects[i].matrix().cast<float>()),
+              1e-6f);
+    // centre of mass and frame axes at the given frame (points: COMs; arrows: 3 axes per body)
+    const Vec3 com = poses.objects[i] * world.objects[i].com;
+    EXPECT_LE((scene.points[i].position.cast<double>() - com).norm(), 1e-6);
+    const Vec3 origin = poses.objects[i].translation();
+    EXPECT_LE((scene.arrows[3 * i].from.cast<double>() - origin).norm(), 1e-6);
+    const Vec3 x_axis = (scene.arrows[3 * i].to - scene.arrows[3 * i].from).cast<double>();
+    EXPECT_NEAR(x_axis.normalized().dot(poses.objects[i].linear().col(0)), 1.0, 1e-6);
+  }
+  // the body bounds hold the moved bodies only: the box (0.2 m cube turned 30 degrees, half
+  // width 0.1 (cos 30 + sin 30) = 0.1366 m) and the ball (radius 0.1 m)
+  EXPECT_NEAR(scene.body_bounds.max().x(), 1.0 + 0.1 * (std::cos(M_PI / 6) + 0.5), 1e-6);
+  EXPECT_NEAR(scene.body_bounds.max().z(), 3.1, 1e-6);
+  EXPECT_NEAR(scene.body_bounds.min().x(), -1.1, 2e-3);
+  EXPECT_NEAR(scene.body_bounds.min().z(), 0.6, 2e-3);
+}
+
+TEST(WorldPosesTest, PickingAndFramingFollowTheGivenPoses) {
+  const test::LoadedWorld loaded = Load(PaddedContactsPath());
+  const WorldDesc& world = loaded.world;
+  RenderScene scene;
+  RenderMeshCache cache;
+  ExtractScene(world, MovedBoxAndBall(world), {}, {}, &cache, &scene);
+  const Ray down{Vec3(1, 2, 10), -Vec3::UnitZ()};
+  const PickHit at_pose = PickBody(scene, down);
+  EXPECT_EQ(at_pose.world_id, world.ObjectId(0));
+  EXPECT_NEAR(at_pose.point.z(), 3.1, 1e-6);  // the top face of the lifted box
+  // where the file puts the box there is only terrain now
+  const Vec3 file_position = world.objects[0].pose.translation();
+  const Ray at_file{file_position + Vec3(0, 0, 10), -Vec3::UnitZ()};
+  EXPECT_EQ(PickBody(scene, at_file).world_id, world.TerrainId(0));
+  // "bodies" frames the moved bodies: the target is the centre of their bounds
+  OrbitCamera camera;
+  std::string error;
+  ASSERT_TRUE(CameraForScene("bodies", scene, 4.0 / 3.0, &camera, &error)) << error;
+  EXPECT_LE((camera.target - scene.body_bounds.center()).norm(), 1e-9);
+  EXPECT_GT(camera.target.z(), 1.5);  // the file's bodies are all below 0.3 m
+}
+
+TEST(WorldPosesTest, RobotLinksAreDrawnAtTheForwardKinematicsOfTheGivenConfiguration) {
+  const test::LoadedWorld loaded = Load(test::WorldsPath("klampt/athlete_fractal_1.xml"));
+  const RobotDesc& robot = loaded.world.robots[0];
+  WorldPoses poses = InitialPoses(loaded.world);
+  VecX& q = poses.robots[0];
+  for (int l = 0; l < robot.dof(); ++l) q[l] += 0.05 * (l % 7) - 0.15;
+  RenderScene scene;
+  RenderMeshCache cache;
+  ExtractScene(loaded.world, poses, {}, {}, &cache, &scene);
+  const std::vector<Pose> frames = LinkTransforms(robot, q);
+  const std::vector<Pose> file_frames = LinkTransforms(robot, DisplayConfiguration(robot));
+  size_t item = 1;  // after the terrain
+  double largest_move = 0.0;
+  for (int l = 0; l < robot.dof(); ++l) {
+    for (const GeometryDesc& geometry : robot.links[l].geometry) {
+      if (geometry.empty()) continue;
+      ASSERT_LT(item, scene.items.size());
+      EXPECT_EQ(scene.items[item].world_id, loaded.world.RobotLinkId(0, l));
+      EXPECT_LE(MaxDifference(scene.items[item].transform, Drawn(frames[l], geometry)), 1e-5f)
+          << "link " << l;
+      largest_move = std::max<double>(largest_move, MaxDifference(scene.items[item].transform,
+                                                                  Drawn(file_frames[l], geometry)));
+      ++item;
+    }
+  }
+  EXPECT_EQ(item, scene.items.size());
+  EXPECT_GT(largest_move, 0.05);  // the configuration drawn is not the file's
+}
+
+TEST(WorldPosesTest, MissingOrMisSizedPosesFallBackToTheDescription) {
+  const test::LoadedWorld loaded = Load(test::WorldsPath("klampt/block.xml"));
+  RenderScene initial, fallback;
+  RenderMeshCache cache;
+  ExtractScene(loaded.world, InitialPoses(loaded.world), {}, {}, &cache, &initial);
+  WorldPoses odd;                                // no object entry ...
+  odd.robots.push_back(VecX::Constant(2, 0.5));  // ... and a robot config of the wrong size
+  ExtractScene(loaded.world, odd, {}, {}, &cache, &fallback);
+  ASSERT_EQ(initial.items.size(), fallback.items.size());
+  ASSERT_EQ(initial.items.size(), 3u);  // terrain, robot sphere, block
+  for (size_t i = 0; i < initial.items.size(); ++i) {
+    EXPECT_EQ(MaxDifference(initial.items[i].transform, fallback.items[i].transform), 0.0f);
+  }
+}
+
+TEST(WorldPosesTest, InitialPosesAreTheFilesAndCurrentPosesTheSimulations) {
+  const test::LoadedWorld loaded = Load(test::WorldsPath("klampt/block.xml"));
+  const WorldDesc& world = loaded.world;
+  const WorldPoses initial = InitialPoses(world);
+  ASSERT_EQ(initial.objects.size(), 1u);
+  ASSERT_EQ(initial.robots.size(), 1u);
+  EXPECT_TRUE(initial.objects[0].matrix() == world.objects[0].pose.matrix());
+  EXPECT_TRUE(initial.robots[0] == world.robots[0].config);  // "3  0 -0.065 0.05"
+  Simulator simulator(world);
+  simulator.Simulate(0.2);
+  const WorldPoses current = CurrentPoses(simulator);
+  ASSERT_EQ(current.objects.size(), 1u);
+  ASSERT_EQ(current.robots.size(), 1u);
+  EXPECT_TRUE(current.objects[0].matrix() == simulator.GetObjectPose(0).matrix());
+  EXPECT_TRUE(current.robots[0] == simulator.GetRobotConfig(0));
+  // the block fell from 0.11 m onto the terrain
+  EXPECT_LT(current.objects[0].translation().z(), 0.11 - 0.05);
+}
+
+TEST(WorldPosesTest, DrawnBodyFrameNamesObjectAndLinkFramesOnly) {
+  const test::LoadedWorld loaded = Load(test::WorldsPath("klampt/block.xml"));
+  const WorldDesc& world = loaded.world;
+  WorldPoses poses = InitialPoses(world);
+  poses.objects[0] = Pose(Eigen::Translation3d(0.3, -0.2, 0.5));
+  poses.robots[0] = Vec3(0.1, 0.2, 0.3);  // three prismatic joints along x, y, z
+  const std::optional<Pose> block = DrawnBodyFrame(world, poses, world.ObjectId(0));
+  ASSERT_TRUE(block);
+  EXPECT_TRUE(block->matrix() == poses.objects[0].matrix());
+  const std::optional<Pose> sphere = DrawnBodyFrame(world, poses, world.RobotLinkId(0, 2));
+  ASSERT_TRUE(sphere);
+  EXPECT_LE((sphere->translation() - Vec3(0.1, 0.2, 0.3)).norm(), 1e-12);
+  EXPECT_FALSE(DrawnBodyFrame(world, poses, world.TerrainId(0)));
+  EXPECT_FALSE(DrawnBodyFrame(world, poses, world.RobotId(0)));
+  EXPECT_FALSE(DrawnBodyFrame(world, poses, world.IdCount()));
+  EXPECT_FALSE(DrawnBodyFrame(world, poses, -1));
 }
 
 TEST(OverlayOptionsTest, ParsesListsAndNamesUnknownEntries) {

@@ -23,7 +23,7 @@ void DrawStatusLine(const WorldSession& session, const ViewerState& state) {
                 state.playing ? "playing" : "paused ", time, state.real_time_factor, state.speed,
                 status, state.frame_milliseconds);
     const std::string hovered =
-        state.hovered_id >= 0 ? BodyLabel(session.shown_world(), state.hovered_id) : "";
+        state.hovered_id >= 0 ? BodyLabel(session.description(), state.hovered_id) : "";
     if (!hovered.empty() || !state.message.empty()) {
       ImGui::SameLine();
       ImGui::TextDisabled("| %s", hovered.empty() ? state.message.c_str() : hovered.c_str());

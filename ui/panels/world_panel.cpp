@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
-// World panel: what is loaded, the diagnostics of the last load, and the selected body.
+// World panel: what is loaded, the diagnostics of the last load, and the selected body with
+// where it is now (the drawn poses, not the description's initial pose).
 #include <imgui.h>
 
+#include "core/render/world_poses.h"
 #include "ui/panels/panels.h"
 
 namespace lamina::ui {
@@ -36,13 +38,20 @@ void DrawContents(const core::WorldDesc& world) {
   }
 }
 
-void DrawSelection(const core::WorldDesc& world, ViewerState* state) {
+void DrawSelection(const WorldSession& session, ViewerState* state) {
   ImGui::Separator();
   if (state->selected_id < 0) {
     ImGui::TextDisabled("click a body to select it");
     return;
   }
+  const core::WorldDesc& world = session.description();
   ImGui::TextWrapped("selected: %s", BodyLabel(world, state->selected_id).c_str());
+  const std::optional<core::Pose> frame =
+      core::DrawnBodyFrame(world, session.poses(), state->selected_id);
+  if (frame) {
+    const core::Vec3 p = frame->translation();
+    ImGui::Text("frame now at %.4f %.4f %.4f m", p.x(), p.y(), p.z());
+  }
   if (ImGui::SmallButton("clear selection")) state->selected_id = -1;
 }
 
@@ -55,7 +64,7 @@ void DrawWorldPanel(const WorldSession& session, ViewerState* state) {
                                       ImVec2(380, OpenWorldPanelTop(display.y) - 20.0f));
   if (ImGui::Begin("World", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 360);
-    const core::WorldDesc& world = session.shown_world();
+    const core::WorldDesc& world = session.description();
     if (session.loaded()) {
       ImGui::Text("%s", world.name.c_str());
       ImGui::TextDisabled("%s", session.path().c_str());
@@ -69,7 +78,7 @@ void DrawWorldPanel(const WorldSession& session, ViewerState* state) {
       ImGui::TextWrapped("%s", session.load_messages().FormatAll().c_str());
       if (errors) ImGui::PopStyleColor();
     }
-    if (session.loaded()) DrawSelection(world, state);
+    if (session.loaded()) DrawSelection(session, state);
     ImGui::PopTextWrapPos();
   }
   ImGui::End();

@@ -143,7 +143,7 @@ bool Viewer::Start() {
   state_.worlds_dir = options_.worlds_dir;
   OpenWorld(options_.world_path);
   first_world_failed_ = !session_.loaded();
-  if (session_.loaded() && options_.selected_id < session_.shown_world().IdCount()) {
+  if (session_.loaded() && options_.selected_id < session_.description().IdCount()) {
     state_.selected_id = options_.selected_id;
   }
   session_.AdvanceTime(options_.start_time);
@@ -159,7 +159,7 @@ void Viewer::OpenWorld(const std::string& path) {
     std::cerr << "lamina: " << state_.message << "\n";
     return;
   }
-  window_.SetTitle("Lamina - " + session_.shown_world().name);
+  window_.SetTitle("Lamina - " + session_.description().name);
   session_.SetSolver(state_.solver);
   session_.SetSleeping(state_.sleep);
   state_.open_path_input = path;
@@ -223,7 +223,8 @@ void Viewer::DrawView(int width, int height) {
   const std::vector<core::ContactMarker> contacts =
       simulator ? core::ContactMarkersFromSimulator(*simulator)
                 : std::vector<core::ContactMarker>();
-  core::ExtractScene(session_.shown_world(), overlays, contacts, &meshes_, &scene_);
+  core::ExtractScene(session_.description(), session_.poses(), overlays, contacts, &meshes_,
+                     &scene_);
   HighlightHovered(state_.hovered_id, &scene_);
   if (!camera_chosen_) {
     std::string error;

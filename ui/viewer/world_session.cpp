@@ -33,11 +33,11 @@ bool WorldSession::Load(const std::string& requested_path) {
   }
   diagnostics_ = std::move(diagnostics);
   if (!simulator) return false;
-  shown_ = std::move(world);
+  description_ = std::move(world);
   simulator_ = std::move(simulator);
   path_ = path;
   last_status_ = core::StepStatus::kNormal;
-  SyncShownWorld();
+  TakePoses();
   return true;
 }
 
@@ -45,21 +45,21 @@ double WorldSession::Advance(int steps) {
   if (!simulator_ || steps <= 0) return 0.0;
   const double before = simulator_->time();
   last_status_ = simulator_->Simulate(steps * simulator_->sim_step());
-  SyncShownWorld();
+  TakePoses();
   return simulator_->time() - before;
 }
 
 void WorldSession::AdvanceTime(double seconds) {
   if (!simulator_ || !(seconds > 0.0)) return;
   last_status_ = simulator_->Simulate(seconds);
-  SyncShownWorld();
+  TakePoses();
 }
 
 void WorldSession::Reset() {
   if (!simulator_) return;
   simulator_->Reset();
   last_status_ = core::StepStatus::kNormal;
-  SyncShownWorld();
+  TakePoses();
 }
 
 void WorldSession::SetSolver(core::SolverType type) {
@@ -73,8 +73,8 @@ void WorldSession::SetSleeping(bool on) {
   if (simulator_) simulator_->SetSleeping(on);
 }
 
-void WorldSession::SyncShownWorld() {
-  simulator_->UpdateWorld(&shown_);
+void WorldSession::TakePoses() {
+  poses_ = core::CurrentPoses(*simulator_);
 }
 
 }  // namespace lamina::ui

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
-// The world the viewer shows: the loaded description, its simulation and the state drawn. A
-// world that fails to load leaves the previous one in place and keeps the messages for the World
-// panel; nothing here throws.
+// The world the viewer shows: the loaded description, its simulation, and the poses drawn (the
+// simulation's current state, taken after every Advance, AdvanceTime and Reset). The description
+// stays as loaded: runtime state never goes into it (what would be saved is not the current
+// frame), and the viewer draws description + poses. A world that fails to load leaves the
+// previous one in place and keeps the messages for the World panel; nothing here throws.
 #pragma once
 
 #include <memory>
@@ -9,6 +11,7 @@
 
 #include "core/diagnostics.h"
 #include "core/model/world_desc.h"
+#include "core/render/world_poses.h"
 #include "core/sim/simulator.h"
 
 namespace lamina::ui {
@@ -32,8 +35,10 @@ class WorldSession {
   void SetSolver(core::SolverType type);
   void SetSleeping(bool on);
 
-  /// The world as it is now (poses and configurations written back after every change).
-  const core::WorldDesc& shown_world() const { return shown_; }
+  /// The world as loaded (its initial conditions; never the current state).
+  const core::WorldDesc& description() const { return description_; }
+  /// Where the simulation has the bodies now: object frames and robot configurations.
+  const core::WorldPoses& poses() const { return poses_; }
   const core::Simulator* simulator() const { return simulator_.get(); }
   const std::string& path() const { return path_; }
   /// Diagnostics of the world loaded last (warnings of a good load, errors of a failed one).
@@ -42,9 +47,10 @@ class WorldSession {
   core::StepStatus last_status() const { return last_status_; }
 
  private:
-  void SyncShownWorld();
+  void TakePoses();
 
-  core::WorldDesc shown_;
+  core::WorldDesc description_;
+  core::WorldPoses poses_;
   std::unique_ptr<core::Simulator> simulator_;
   core::Diagnostics diagnostics_;
   std::string path_;
