@@ -62,7 +62,8 @@ std::optional<SetArgument> ReadSet(const std::string& argument, const WorldDesc&
                                    bool simulation, std::string* error) {
   std::string path, text;
   if (!lamina::core::SplitAssignment(argument, &path, &text, error)) return std::nullopt;
-  SetArgument set{argument};
+  SetArgument set;
+  set.argument = argument;
   std::optional<AccessTarget> target =
       lamina::core::ResolveAccessPath(world, path, AccessContext::kDescription, error);
   set.on_description = target.has_value();
