@@ -13,6 +13,7 @@
 
 #include "core/diagnostics.h"
 #include "core/math_types.h"
+#include "core/suggest.h"  // SuggestName, used with the readers
 
 namespace lamina::core {
 
@@ -55,9 +56,5 @@ class XmlElementReader {
   Diagnostics& diagnostics_;
   std::string label_;
 };
-
-/// The known name closest to `name` (case-insensitive edit distance <= 2, or `name` with a
-/// Klamp't `k` prefix), or "" when none is close.
-std::string SuggestName(const std::string& name, const std::vector<std::string>& known);
 
 }  // namespace lamina::core
