@@ -141,6 +141,11 @@ void WorldWriter::WriteTerrain(const TerrainDesc& terrain) {
 
 void WorldWriter::WriteObject(const RigidObjectDesc& object, int index) {
   Attributes attributes{{"name", object.name}};
+  if (!IsRotation(object.pose.linear())) {
+    files_.errors.push_back("objects[" + std::to_string(index) +
+                            "].transform: the rotation is not a rotation matrix, which world XML "
+                            "(rotateMoment) cannot hold");
+  }
   const Attributes pose = PoseAttributes(object.pose);
   attributes.insert(attributes.end(), pose.begin(), pose.end());
   Element("rigidObject", attributes, false);
@@ -188,8 +193,9 @@ void WorldWriter::WriteRobot(const RobotDesc& robot, std::set<std::string>* used
   Attributes attributes{{"name", robot.name}, {"file", relative}};
   // as held (a config of the wrong size is written too, and the reader reports it)
   if (robot.config.size() > 0) attributes.emplace_back("config", FormatCountedVector(robot.config));
-  // Lamina's attribute, only when a robot starts moving
-  if (!robot.velocity.isZero(0.0)) {
+  // Lamina's attribute, only when a robot starts moving (or holds a velocity of another size,
+  // which the reader then reports)
+  if (!robot.velocity.isZero(0.0) || (robot.velocity.size() > 0 && robot.velocity.size() != robot.dof())) {
     attributes.emplace_back("velocity", FormatCountedVector(robot.velocity));
   }
   Element("robot", attributes, false);
