@@ -195,7 +195,8 @@ void WorldWriter::WriteRobot(const RobotDesc& robot, std::set<std::string>* used
   if (robot.config.size() > 0) attributes.emplace_back("config", FormatCountedVector(robot.config));
   // Lamina's attribute, only when a robot starts moving (or holds a velocity of another size,
   // which the reader then reports)
-  if (!robot.velocity.isZero(0.0) || (robot.velocity.size() > 0 && robot.velocity.size() != robot.dof())) {
+  if (!robot.velocity.isZero(0.0) ||
+      (robot.velocity.size() > 0 && robot.velocity.size() != robot.dof())) {
     attributes.emplace_back("velocity", FormatCountedVector(robot.velocity));
   }
   Element("robot", attributes, false);

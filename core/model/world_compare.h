@@ -15,8 +15,8 @@ namespace lamina::core {
 
 /// Every difference between `a` and `b`, one line each ("objects[1].mass: 1 vs 2", a row's
 /// value in FormatParamValue); empty when they describe the same world. Numbers are equal when
-/// |x - y| <= tolerance (or both the same infinity). Geometry compares file path, kind, margin, Matrix() and, for primitives,
-/// the shape. Source paths and the world name are not compared.
+/// |x - y| <= tolerance (or both the same infinity). Geometry compares file path, kind, margin,
+/// Matrix() and, for primitives, the shape. Source paths and the world name are not compared.
 std::vector<std::string> CompareWorlds(const WorldDesc& a, const WorldDesc& b,
                                        double tolerance = 0.0);
 /// The same for two robots, with `prefix` before each field name ("robot.links[2].mass").
