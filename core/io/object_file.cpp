@@ -13,13 +13,13 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
-
 #include "core/geometry/mass_properties.h"
 #include "core/io/geometry_file.h"
+#include "core/io/param_text.h"
 #include "core/io/paths.h"
 #include "core/io/text_statements.h"
 #include "core/io/xml_element_reader.h"
+#include "core/model/params.h"
 
 namespace lamina::core {
 
@@ -88,6 +88,16 @@ class KeyValueFile {
                                              std::initializer_list<int> counts,
                                              bool allow_infinite) const;
 
+  // The values after `key` (one of `counts` of them) as a value of row `spec` with `size`
+  // components, checked against the table: "'key' <rule>, got '<values>'" when it refuses.
+  // `expand` turns the numbers as written into the row's layout (an inertia's 3 diagonal values).
+  std::optional<ParamValue> Param(const std::string& key, const ParamSpec& spec,
+                                  std::initializer_list<int> counts, int size,
+                                  ParamValue (*expand)(const ParamValue&) = nullptr) const;
+  // Checks a value of row `spec` assembled from several keys; reported at the first of them.
+  bool CheckAssembled(const ParamSpec& spec, const ParamValue& value,
+                      std::initializer_list<const char*> keys) const;
+
   // Reports "'key' must be <requirement>, got '<value>'" for the first value failing `ok`.
   template <typename Predicate>
   bool Check(const std::string& key, const std::vector<double>& values, Predicate ok,
@@ -140,7 +150,7 @@ std::optional<std::vector<double>> KeyValueFile::Numbers(const std::string& key,
     const std::string& text = statement->tokens[i].text;
     double value = 0.0;
     if (!ParseDouble(text, &value)) {
-      Error(*statement, "'" + text + "' is not a number");
+      Error(*statement, "'" + text + "' in '" + key + "' is not a number");
       return std::nullopt;
     }
     if (!allow_infinite && std::isinf(value)) {
@@ -158,11 +168,47 @@ std::optional<std::vector<double>> KeyValueFile::Numbers(const std::string& key,
   return values;
 }
 
+std::optional<ParamValue> KeyValueFile::Param(const std::string& key, const ParamSpec& spec,
+                                              std::initializer_list<int> counts, int size,
+                                              ParamValue (*expand)(const ParamValue&)) const {
+  const auto numbers = Numbers(key, counts, true);
+  if (!numbers) return std::nullopt;
+  const ParamValue value = expand ? expand(*numbers) : *numbers;
+  if (ParamAccepts(spec, value, size)) return value;
+  const Statement& statement = *Find(key);
+  std::string text;
+  for (size_t i = 1; i < statement.tokens.size(); ++i) {
+    text += (i > 1 ? " " : "") + statement.tokens[i].text;
+  }
+  Error(statement, "'" + key + "' " + ParamRefusal(spec, text));
+  return std::nullopt;
+}
+
+bool KeyValueFile::CheckAssembled(const ParamSpec& spec, const ParamValue& value,
+                                  std::initializer_list<const char*> keys) const {
+  if (ParamAccepts(spec, value, static_cast<int>(value.size()))) return true;
+  std::string names;
+  const Statement* first = nullptr;
+  for (const char* key : keys) {
+    if (!Find(key)) continue;
+    names += (first ? "', '" : "") + std::string(key);
+    if (!first) first = Find(key);
+  }
+  if (first) {
+    Error(*first, "'" + names + "' (" + std::string(spec.key) + ") " +
+                      ParamRefusal(spec, ParamWords(spec, value)));
+  }
+  return false;
+}
+
+// an `.obj` inertia of 3 values is the diagonal
+ParamValue InertiaLayout(const ParamValue& values) {
+  if (values.size() != 3) return values;
+  return {values[0], 0, 0, 0, values[1], 0, 0, 0, values[2]};
+}
+
 bool IsPositive(double value) {
   return value > 0.0;
-}
-bool IsNonNegative(double value) {
-  return value >= 0.0;
 }
 bool IsFraction(double value) {
   return value >= 0.0 && value <= 1.0;
@@ -216,84 +262,61 @@ void ApplyTransformKey(const KeyValueFile& file, Pose* pose) {
     parsed.linear() = rotation;
     parsed.translation() = Vec3(v[3], v[7], v[11]);
   }
-  if (!IsRotation(parsed.linear())) {
-    file.Error(statement, "'T' rotation is not orthonormal with determinant 1");
-    return;
-  }
   *pose = parsed;
 }
 
 // `T`, then `position` (replaces the translation), `velocity` and `angularVelocity`.
 // Klamp't keeps the velocities in the model but never copies them into the simulation; Lamina
 // uses them as the object's initial velocity (a deliberate fix, see klampt-internals §9.16).
+// Both are checked as the table's `transform` and `velocity` rows once assembled.
 void ApplyPoseAndVelocity(const KeyValueFile& file, RigidObjectDesc* out) {
-  ApplyTransformKey(file, &out->pose);
+  Pose pose = out->pose;
+  ApplyTransformKey(file, &pose);
   if (const auto position = file.Numbers("position", {3}, false)) {
-    out->pose.translation() = Vec3((*position)[0], (*position)[1], (*position)[2]);
+    pose.translation() = Vec3((*position)[0], (*position)[1], (*position)[2]);
   }
+  if (file.CheckAssembled(*FindParam("transform", ElementKind::kObject), PoseToValue(pose),
+                          {"T", "position"})) {
+    out->pose = pose;
+  }
+  Twist twist = out->initial_velocity;
   if (const auto linear = file.Numbers("velocity", {3}, false)) {
-    out->initial_velocity.linear = Vec3((*linear)[0], (*linear)[1], (*linear)[2]);
+    twist.linear = Vec3((*linear)[0], (*linear)[1], (*linear)[2]);
   }
   if (const auto angular = file.Numbers("angularVelocity", {3}, false)) {
-    out->initial_velocity.angular = Vec3((*angular)[0], (*angular)[1], (*angular)[2]);
+    twist.angular = Vec3((*angular)[0], (*angular)[1], (*angular)[2]);
+  }
+  if (file.CheckAssembled(*FindParam("velocity", ElementKind::kObject), TwistToValue(twist),
+                          {"velocity", "angularVelocity"})) {
+    out->initial_velocity = twist;
   }
 }
 
-// A symmetric positive semi-definite 3x3 matrix, or an error naming 'inertia'.
-bool CheckInertia(const KeyValueFile& file, const Mat3& inertia) {
-  const Statement& statement = *file.Find("inertia");
-  const double scale = std::max(1.0, inertia.cwiseAbs().maxCoeff());
-  if ((inertia - inertia.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale) {
-    file.Error(statement, "'inertia' must be a symmetric matrix");
-    return false;
-  }
-  const Eigen::SelfAdjointEigenSolver<Mat3> solver(inertia, Eigen::EigenvaluesOnly);
-  if (solver.eigenvalues().minCoeff() < -1e-12 * scale) {
-    file.Error(statement, "'inertia' must be positive semi-definite, smallest eigenvalue is '" +
-                              FormatDouble(solver.eigenvalues().minCoeff()) + "'");
-    return false;
-  }
-  return true;
-}
-
-// `mass`, `com` and `inertia` (3 diagonal values or 9 row-major). True when `com` was given.
+// `mass`, `com` and `inertia` (3 diagonal values or 9 row-major), checked as the table's rows.
+// True when `com` was given.
 bool ApplyMassKeys(const KeyValueFile& file, RigidObjectDesc* out) {
-  if (const auto mass = file.Numbers("mass", {1}, false)) {
-    if (file.Check("mass", *mass, IsNonNegative, ">= 0")) out->mass = (*mass)[0];
-  }
-  const auto com = file.Numbers("com", {3}, false);
+  const auto row = [](const char* key) { return *FindParam(key, ElementKind::kObject); };
+  if (const auto mass = file.Param("mass", row("mass"), {1}, 1)) out->mass = (*mass)[0];
+  const auto com = file.Param("com", row("com"), {3}, 3);
   if (com) out->com = Vec3((*com)[0], (*com)[1], (*com)[2]);
-  if (const auto values = file.Numbers("inertia", {3, 9}, false)) {
-    const std::vector<double>& v = *values;
-    Mat3 inertia = Mat3::Zero();
-    if (v.size() == 3) {
-      inertia.diagonal() = Vec3(v[0], v[1], v[2]);
-    } else {
-      inertia << v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8];
-    }
-    if (CheckInertia(file, inertia)) out->inertia = inertia;
+  if (const auto inertia = file.Param("inertia", row("inertia"), {3, 9}, 9, InertiaLayout)) {
+    out->inertia = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(inertia->data());
   }
   return com.has_value();
 }
 
-// `kFriction`, `kRestitution`, `kStiffness`, `kDamping`.
-void ApplySurfaceKeys(const KeyValueFile& file, SurfaceDesc* surface) {
-  if (const auto friction = file.Numbers("kFriction", {1}, true)) {
-    if (file.Check("kFriction", *friction, IsNonNegative, ">= 0"))
-      surface->friction = (*friction)[0];
-  }
-  if (const auto restitution = file.Numbers("kRestitution", {1}, false)) {
-    if (file.Check("kRestitution", *restitution, IsFraction, "in [0, 1]")) {
-      surface->restitution = (*restitution)[0];
+// `kFriction`, `kRestitution`, `kStiffness`, `kDamping`: the table's surface rows, set through
+// them on the object lent to a world of its own (the rows address elements of a world).
+void ApplySurfaceKeys(const KeyValueFile& file, RigidObjectDesc* out) {
+  WorldDesc lent;
+  lent.objects.push_back(std::move(*out));
+  for (const ParamSpec* spec : SurfaceRows()) {
+    const std::string key(spec->key);
+    if (const auto value = file.Param(key, *spec, {1}, 1)) {
+      spec->set(&lent, ElementIndex::Object(0), *value);
     }
   }
-  if (const auto stiffness = file.Numbers("kStiffness", {1}, true)) {
-    if (file.Check("kStiffness", *stiffness, IsPositive, "> 0"))
-      surface->stiffness = (*stiffness)[0];
-  }
-  if (const auto damping = file.Numbers("kDamping", {1}, true)) {
-    if (file.Check("kDamping", *damping, IsNonNegative, ">= 0")) surface->damping = (*damping)[0];
-  }
+  *out = std::move(lent.objects.front());
 }
 
 // Inertia about `point` from the inertia about the centre of mass (parallel-axis theorem).
@@ -336,7 +359,7 @@ void ParseKlamptObject(const std::string& text, const std::string& path, LoadCon
   ApplyGeometryPlacement(file, &out->geometry);
   ApplyPoseAndVelocity(file, out);
   const bool has_com = ApplyMassKeys(file, out);
-  ApplySurfaceKeys(file, &out->sim.surface);
+  ApplySurfaceKeys(file, out);
   ApplyAutoMass(file, has_com, has_geometry, out);
 }
 
@@ -372,7 +395,13 @@ void ApplyTerrainFriction(const KeyValueFile& file, TerrainDesc* out) {
   const int given = static_cast<int>(statement->tokens.size()) - 1;
   const bool per_triangle = given > 1 && given == out->geometry.triangle_count();
   const auto values = file.Numbers(key, {per_triangle ? given : 1}, true);
-  if (!values || !file.Check(key, *values, IsNonNegative, ">= 0")) return;
+  if (!values) return;
+  const ParamSpec& spec = *FindParam("kFriction", ElementKind::kTerrain);
+  for (size_t i = 0; i < values->size(); ++i) {
+    if (ParamAccepts(spec, {(*values)[i]}, 1)) continue;
+    file.Error(*statement, "'" + key + "' " + ParamRefusal(spec, statement->tokens[i + 1].text));
+    return;
+  }
   const bool uniform =
       std::all_of(values->begin(), values->end(), [&](double f) { return f == values->front(); });
   if (!uniform) {

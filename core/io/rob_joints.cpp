@@ -104,8 +104,9 @@ bool CheckDriver(const RobBuild& b, const DriverStatement& statement,
   return true;
 }
 
-// one per-driver vector: checked against the driver count, then copied when it fits
-void ApplyDriverVector(RobBuild& b, const NumberList& list, int driver_count,
+// one per-driver vector (the table's row `key`): checked against the driver count and the
+// row, then copied when it fits
+void ApplyDriverVector(RobBuild& b, const NumberList& list, int driver_count, std::string_view key,
                        double DriverDesc::*field) {
   if (list.empty()) return;
   if (list.size() != driver_count) {
@@ -114,13 +115,35 @@ void ApplyDriverVector(RobBuild& b, const NumberList& list, int driver_count,
     return;
   }
   for (int i = 0; i < list.size(); ++i) {
-    if (list.values[i] < 0.0) {
-      b.Error(list.lines[i], "'" + list.keyword + "' values must be >= 0, got '" +
-                                 FormatDouble(list.values[i]) + "'");
-    }
+    b.CheckRow(list.lines[i], "'" + list.keyword + "' of driver " + std::to_string(i), key,
+               ElementKind::kDriver, {list.values[i]});
   }
   if (static_cast<int>(b.robot.drivers.size()) != driver_count) return;  // already reported
   for (int i = 0; i < driver_count; ++i) b.robot.drivers[i].*field = list.values[i];
+}
+
+// A driver's velocity and torque limits as the table's rows: an affine driver's from its own
+// statement, the others' copied from their link (velmin/velmax, +-torquemax).
+void CheckDriverLimits(const RobBuild& b, const DriverStatement& statement, int index) {
+  const DriverDesc& driver = b.robot.drivers[index];
+  const std::string of_driver = " of driver " + std::to_string(index);
+  const RobStatements& s = b.statements;
+  const int link = driver.links.front();
+  const bool affine = driver.type == DriverType::kAffine;
+  const auto line = [&](std::initializer_list<const NumberList*> lists) {
+    for (const NumberList* list : lists) {
+      if (!list->empty()) return list->lines[link];
+    }
+    return statement.line;
+  };
+  const std::string velocity_from = affine ? " ('driver affine' vmin vmax)" : " (velmin, velmax)";
+  b.CheckRow(affine ? statement.line : line({&s.velocity_min, &s.velocity_max}),
+             "velocityLimits" + of_driver + velocity_from, "velocityLimits", ElementKind::kDriver,
+             {driver.velocity_min, driver.velocity_max});
+  const std::string torque_from = affine ? " ('driver affine' tmin tmax)" : " (+-torquemax)";
+  b.CheckRow(affine ? statement.line : line({&s.torque_max}),
+             "torqueLimits" + of_driver + torque_from, "torqueLimits", ElementKind::kDriver,
+             {driver.torque_min, driver.torque_max});
 }
 
 }  // namespace
@@ -175,6 +198,7 @@ void BuildDrivers(RobBuild& build) {
     if (driver.type != DriverType::kAffine) CopyLinkLimits(first, &driver);
     driver.name = first.name;
     build.robot.drivers.push_back(driver);
+    CheckDriverLimits(build, statement, static_cast<int>(build.robot.drivers.size()) - 1);
   }
   const int driver_count = static_cast<int>(drivers.size());
   if (!s.driver_names.empty()) {
@@ -188,11 +212,12 @@ void BuildDrivers(RobBuild& build) {
       }
     }
   }
-  ApplyDriverVector(build, s.servo_p, driver_count, &DriverDesc::servo_p);
-  ApplyDriverVector(build, s.servo_i, driver_count, &DriverDesc::servo_i);
-  ApplyDriverVector(build, s.servo_d, driver_count, &DriverDesc::servo_d);
-  ApplyDriverVector(build, s.dry_friction, driver_count, &DriverDesc::dry_friction);
-  ApplyDriverVector(build, s.viscous_friction, driver_count, &DriverDesc::viscous_friction);
+  ApplyDriverVector(build, s.servo_p, driver_count, "servoP", &DriverDesc::servo_p);
+  ApplyDriverVector(build, s.servo_i, driver_count, "servoI", &DriverDesc::servo_i);
+  ApplyDriverVector(build, s.servo_d, driver_count, "servoD", &DriverDesc::servo_d);
+  ApplyDriverVector(build, s.dry_friction, driver_count, "dryFriction", &DriverDesc::dry_friction);
+  ApplyDriverVector(build, s.viscous_friction, driver_count, "viscousFriction",
+                    &DriverDesc::viscous_friction);
 }
 
 }  // namespace lamina::core::rob

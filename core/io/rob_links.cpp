@@ -4,9 +4,8 @@
 #include <cmath>
 #include <map>
 
-#include <Eigen/Eigenvalues>
-
 #include "core/io/geometry_file.h"
+#include "core/io/param_text.h"
 #include "core/io/paths.h"
 #include "core/io/rob_statements.h"
 #include "core/io/text_statements.h"
@@ -99,6 +98,11 @@ Vec3 Triple(const NumberList& list, int i) {
   return {list.values[3 * i], list.values[3 * i + 1], list.values[3 * i + 2]};
 }
 
+// entry i of a list with `group` numbers per entry
+ParamValue Values(const NumberList& list, int i, int group) {
+  return ParamValue(list.values.begin() + group * i, list.values.begin() + group * (i + 1));
+}
+
 void BuildTree(RobBuild& b) {
   const RobStatements& s = b.statements;
   for (int i = 0; i < b.link_count; ++i) {
@@ -154,6 +158,14 @@ void BuildFrames(RobBuild& b) {
   }
 }
 
+// the line of value `i` of the first non-empty list, or 0
+int LineOf(std::initializer_list<const NumberList*> lists, int i) {
+  for (const NumberList* list : lists) {
+    if (!list->empty()) return list->lines[i];
+  }
+  return 0;
+}
+
 void BuildLimits(RobBuild& b) {
   const RobStatements& s = b.statements;
   const auto set = [](const NumberList& list, int i, bool revolute, double* field) {
@@ -162,36 +174,26 @@ void BuildLimits(RobBuild& b) {
   for (int i = 0; i < b.link_count; ++i) {
     LinkDesc& link = b.robot.links[i];
     const bool revolute = link.axis_type == LinkJointAxis::kRevolute;
+    const std::string of_link = " of link " + std::to_string(i);
     set(s.q, i, revolute, &link.q_initial);
-    set(s.q_min, i, revolute, &link.q_min);
-    set(s.q_max, i, revolute, &link.q_max);
+    if (!s.q.empty()) {
+      b.CheckRow(s.q.lines[i], "'q'" + of_link + " (the initial config)", "config",
+                 ElementKind::kRobot, {link.q_initial});
+    }
+    double q_min = link.q_min, q_max = link.q_max;
+    set(s.q_min, i, revolute, &q_min);
+    set(s.q_max, i, revolute, &q_max);
+    if (b.CheckRow(LineOf({&s.q_min, &s.q_max}, i), "jointLimits" + of_link + " (qmin, qmax)",
+                   "jointLimits", ElementKind::kLink, {q_min, q_max})) {
+      link.q_min = q_min;
+      link.q_max = q_max;
+    }
     set(s.velocity_max, i, revolute, &link.velocity_max);
     link.velocity_min = -link.velocity_max;
     set(s.velocity_min, i, revolute, &link.velocity_min);
     set(s.acceleration_max, i, revolute, &link.acceleration_max);
     set(s.torque_max, i, revolute, &link.torque_max);
     set(s.power_max, i, revolute, &link.power_max);
-    if (link.q_min > link.q_max) {
-      b.Error(s.q_min.empty() ? s.q_max.lines[i] : s.q_min.lines[i],
-              "qmin of link " + std::to_string(i) + " (" + FormatDouble(link.q_min) +
-                  ") is greater than qmax (" + FormatDouble(link.q_max) + ")");
-    }
-  }
-}
-
-void CheckInertia(const RobBuild& b, int link, int line) {
-  const Mat3& inertia = b.robot.links[link].inertia;
-  const double size = inertia.cwiseAbs().maxCoeff();
-  if ((inertia - inertia.transpose()).cwiseAbs().maxCoeff() > 1e-9 + 1e-6 * size) {
-    b.Error(line, "inertia of link " + std::to_string(link) + " is not symmetric");
-    return;
-  }
-  const Eigen::SelfAdjointEigenSolver<Mat3> solver(0.5 * (inertia + inertia.transpose()),
-                                                   Eigen::EigenvaluesOnly);
-  const double smallest = solver.eigenvalues().minCoeff();
-  if (smallest < -(1e-12 + 1e-9 * size)) {
-    b.Error(line, "inertia of link " + std::to_string(link) + " has a negative principal moment (" +
-                      FormatDouble(smallest) + ")");
   }
 }
 
@@ -203,24 +205,40 @@ void BuildMass(RobBuild& b) {
   }
   for (int i = 0; i < b.link_count; ++i) {
     LinkDesc& link = b.robot.links[i];
-    if (!s.mass.empty()) {
+    const std::string of_link = " of link " + std::to_string(i);
+    if (!s.mass.empty() && b.CheckRow(s.mass.lines[i], "mass" + of_link, "mass", ElementKind::kLink,
+                                      {s.mass.values[i]})) {
       link.mass = s.mass.values[i];
-      if (link.mass < 0.0) {
-        b.Error(s.mass.lines[i], "mass must be >= 0, got '" + FormatDouble(link.mass) + "'");
-      }
     }
-    if (!s.com.empty()) link.com = Triple(s.com, i);
+    if (!s.com.empty() && b.CheckRow(s.com.lines[3 * i], "com" + of_link, "com", ElementKind::kLink,
+                                     Values(s.com, i, 3))) {
+      link.com = Triple(s.com, i);
+    }
+    ParamValue inertia;
+    int line = 0;
     if (!s.inertia.empty()) {
-      for (int k = 0; k < 9; ++k) link.inertia(k / 3, k % 3) = s.inertia.values[9 * i + k];
-      CheckInertia(b, i, s.inertia.lines[9 * i]);
+      inertia = Values(s.inertia, i, 9);
+      line = s.inertia.lines[9 * i];
     } else if (!s.inertia_diag.empty()) {
-      link.inertia = Triple(s.inertia_diag, i).asDiagonal();
-      CheckInertia(b, i, s.inertia_diag.lines[3 * i]);
+      const Vec3 diagonal = Triple(s.inertia_diag, i);
+      inertia = {diagonal.x(), 0, 0, 0, diagonal.y(), 0, 0, 0, diagonal.z()};
+      line = s.inertia_diag.lines[3 * i];
+    }
+    if (!inertia.empty() &&
+        b.CheckRow(line, "inertia" + of_link, "inertia", ElementKind::kLink, inertia)) {
+      for (int k = 0; k < 9; ++k) link.inertia(k / 3, k % 3) = inertia[k];
     }
   }
 }
 
 }  // namespace
+
+bool RobBuild::CheckRow(int line, const std::string& what, std::string_view key, ElementKind kind,
+                        const ParamValue& value) const {
+  const std::optional<std::string> refusal = RefuseRow(key, kind, value);
+  if (refusal) Error(line, what + " " + *refusal);
+  return !refusal;
+}
 
 int VoteLinkCount(const RobStatements& s, const std::string& path, Diagnostics& diagnostics) {
   const int n = Vote(s);

@@ -71,7 +71,8 @@ class PartReader {
     for (size_t i = first; i < first + count; ++i) {
       double value = 0.0;
       if (!ParseDouble(tokens()[i].text, &value)) {
-        Error(tokens()[i].line, "'" + tokens()[i].text + "' is not a number");
+        Error(tokens()[i].line,
+              "'" + tokens()[i].text + "' in '" + tokens()[0].text + "' is not a number");
         ok = false;
       }
       values->push_back(value);

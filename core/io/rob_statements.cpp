@@ -91,7 +91,8 @@ class StatementReader {
   void Error(int line, std::string message) {
     diagnostics_.Error({path_, line, 0}, std::move(message));
   }
-  bool Number(const Token& token, double* value);
+  // `keyword` names the statement in the message ("'nan' in 'servoP' is not a number")
+  bool Number(const Token& token, const std::string& keyword, double* value);
   bool Integer(const Token& token, int* value);
   // the values of tokens [first, end) as numbers; false (after reporting) on a bad one
   bool Numbers(const Statement& statement, size_t first, std::vector<double>* values);
@@ -220,9 +221,9 @@ void StatementReader::Read(const Statement& statement) {
   Error(first.line, message);
 }
 
-bool StatementReader::Number(const Token& token, double* value) {
+bool StatementReader::Number(const Token& token, const std::string& keyword, double* value) {
   if (ParseDouble(token.text, value)) return true;
-  Error(token.line, "'" + token.text + "' is not a number");
+  Error(token.line, "'" + token.text + "' in '" + keyword + "' is not a number");
   return false;
 }
 
@@ -237,7 +238,7 @@ bool StatementReader::Numbers(const Statement& statement, size_t first,
   bool ok = true;
   for (size_t i = first; i < statement.tokens.size(); ++i) {
     double value = 0.0;
-    ok = Number(statement.tokens[i], &value) && ok;
+    ok = Number(statement.tokens[i], statement.tokens.front().text, &value) && ok;
     values->push_back(value);
   }
   return ok;
@@ -287,7 +288,8 @@ void StatementReader::ReadNumbers(const Statement& statement, const NumberKeywor
     const Token& token = statement.tokens[i];
     double value = 0.0;
     int integer = 0;
-    if (keyword.integers ? Integer(token, &integer) : Number(token, &value)) {
+    const std::string& name = statement.tokens.front().text;
+    if (keyword.integers ? Integer(token, &integer) : Number(token, name, &value)) {
       if (keyword.integers) value = integer;
     }
     // a bad value keeps its place (as 0) so that it does not also cause a count error

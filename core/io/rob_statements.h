@@ -13,6 +13,7 @@
 #include "core/io/load_context.h"
 #include "core/io/text_statements.h"
 #include "core/math_types.h"
+#include "core/model/params.h"
 #include "core/model/world_desc.h"
 
 namespace lamina::core::rob {
@@ -134,6 +135,11 @@ struct RobBuild {
   void Warning(int line, std::string message) const {
     context.diagnostics.Warning(At(line), std::move(message));
   }
+  /// Checks `value` against the table's row `key` for elements of `kind` (one component of a
+  /// per-link vector counts as the whole when the row is a kVector); a refusal is reported at
+  /// `line` as "<what> <rule>, got '<value>'". True when accepted.
+  bool CheckRow(int line, const std::string& what, std::string_view key, ElementKind kind,
+                const ParamValue& value) const;
 };
 
 /// Decides the link count by Klamp't's voting rule and checks every per-link vector against

@@ -3,6 +3,7 @@
 // no defaults left to the reader) so that ParseRob gives back the same description.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -10,6 +11,8 @@
 #include "core/io/paths.h"
 #include "core/io/robot_file.h"
 #include "core/io/text_statements.h"
+#include "core/model/element.h"
+#include "core/model/params.h"
 
 namespace lamina::core {
 
@@ -47,12 +50,23 @@ std::string PerLink(const RobotDesc& robot, const std::string& keyword,
   return line + "\n";
 }
 
-std::string PerDriver(const RobotDesc& robot, const std::string& keyword,
-                      double DriverDesc::*field) {
+// a per-driver line of the table's row `spec` (its key is the `.rob` keyword) for the drivers
+// of the one robot of `world` (the rows address drivers of a world)
+std::string PerDriver(const WorldDesc& world, const ParamSpec& spec) {
   std::vector<double> values;
-  for (const DriverDesc& driver : robot.drivers) values.push_back(driver.*field);
-  return keyword + " " + Numbers(values) + "\n";
+  for (int i = 0; i < static_cast<int>(world.robots.front().drivers.size()); ++i) {
+    values.push_back(spec.get(world, ElementIndex::Driver(0, i)).front());
+  }
+  return std::string(spec.key) + " " + Numbers(values) + "\n";
 }
+
+// The limits a link's `velmin`, `velmax` and `torquemax` carry. A normal, translation or
+// rotation driver copies them from its (first) link when the file is read, so they hold that
+// driver's own limits (the table's rows velocityLimits and torqueLimits, which an edit may have
+// changed); other links keep theirs.
+struct LinkLimits {
+  double velocity_min, velocity_max, torque_max;
+};
 
 bool IsUniform(const Vec3& scale) {
   return scale.x() == scale.y() && scale.y() == scale.z();
@@ -68,8 +82,8 @@ const GeometryDesc* FirstGeometry(const LinkDesc& link) {
 
 class RobWriter {
  public:
-  RobWriter(const RobotDesc& robot, const std::string& rob_dir)
-      : robot_(robot), rob_dir_(rob_dir) {}
+  RobWriter(const RobotDesc& robot, const std::string& rob_dir, std::vector<std::string>* errors)
+      : robot_(robot), rob_dir_(rob_dir), errors_(errors) {}
 
   std::string Write() {
     WriteKinematics();
@@ -95,10 +109,12 @@ class RobWriter {
   void WriteProperties();
   // the file name of a geometry relative to the .rob, "" (with a note) when it has none
   std::string FileOf(const GeometryDesc& geometry, int link);
+  std::vector<LinkLimits> LimitsOfLinks();
 
   const RobotDesc& robot_;
   const std::string& rob_dir_;
-  std::string notes_;  // comments at the top about what could not be written
+  std::vector<std::string>* errors_;  // what a .rob cannot hold
+  std::string notes_;                 // comments at the top about what could not be written
   std::string out_;
 };
 
@@ -130,17 +146,46 @@ void RobWriter::WriteKinematics() {
       true);
 }
 
+std::vector<LinkLimits> RobWriter::LimitsOfLinks() {
+  std::vector<LinkLimits> limits;
+  for (const LinkDesc& link : robot_.links) {
+    limits.push_back({link.velocity_min, link.velocity_max, link.torque_max});
+  }
+  for (size_t i = 0; i < robot_.drivers.size(); ++i) {
+    const DriverDesc& driver = robot_.drivers[i];
+    if (driver.type == DriverType::kAffine || driver.links.empty()) continue;
+    const int link = driver.links.front();
+    if (link < 0 || link >= robot_.dof()) continue;
+    limits[link] = {driver.velocity_min, driver.velocity_max, driver.torque_max};
+    const bool symmetric = driver.torque_min == -driver.torque_max ||
+                           std::isnan(driver.torque_min) || std::isnan(driver.torque_max);
+    if (!symmetric && errors_) {
+      errors_->push_back("drivers[" + std::to_string(i) + "].torqueLimits " +
+                         FormatDouble(driver.torque_min) + "," + FormatDouble(driver.torque_max) +
+                         " cannot be saved: a .rob gives a non-affine driver the limits "
+                         "+-torquemax of its link");
+    }
+  }
+  return limits;
+}
+
 void RobWriter::WriteLimits() {
   const auto scalar = [&](const char* keyword, double LinkDesc::*field) {
     out_ += PerLink(robot_, keyword, [field](const LinkDesc& l) { return FormatDouble(l.*field); });
   };
+  const std::vector<LinkLimits> limits = LimitsOfLinks();
+  const auto limit = [&](const char* keyword, double LinkLimits::*field) {
+    out_ += PerLink(robot_, keyword, [&](const LinkDesc& l) {
+      return FormatDouble(limits[&l - robot_.links.data()].*field);
+    });
+  };
   scalar("q", &LinkDesc::q_initial);
   scalar("qmin", &LinkDesc::q_min);
   scalar("qmax", &LinkDesc::q_max);
-  scalar("velmin", &LinkDesc::velocity_min);
-  scalar("velmax", &LinkDesc::velocity_max);
+  limit("velmin", &LinkLimits::velocity_min);
+  limit("velmax", &LinkLimits::velocity_max);
   scalar("accmax", &LinkDesc::acceleration_max);
-  scalar("torquemax", &LinkDesc::torque_max);
+  limit("torquemax", &LinkLimits::torque_max);
   scalar("powermax", &LinkDesc::power_max);
 }
 
@@ -263,11 +308,13 @@ void RobWriter::WriteDrivers() {
     names += Quote(driver.name);
   }
   out_ += names + "\n";
-  out_ += PerDriver(robot_, "servoP", &DriverDesc::servo_p);
-  out_ += PerDriver(robot_, "servoI", &DriverDesc::servo_i);
-  out_ += PerDriver(robot_, "servoD", &DriverDesc::servo_d);
-  out_ += PerDriver(robot_, "dryFriction", &DriverDesc::dry_friction);
-  out_ += PerDriver(robot_, "viscousFriction", &DriverDesc::viscous_friction);
+  // one line per single-number driver row (the gains and the friction); the range rows are in
+  // the `driver affine` lines or in the links' velmin/velmax/torquemax
+  WorldDesc world;
+  world.robots.push_back(robot_);
+  for (const ParamSpec* spec : ParamsOf(ElementKind::kDriver)) {
+    if (spec->type == ParamType::kReal) out_ += PerDriver(world, *spec);
+  }
 }
 
 void RobWriter::WriteCollisionPairs() {
@@ -299,7 +346,12 @@ void RobWriter::WriteProperties() {
 }  // namespace
 
 std::string WriteRob(const RobotDesc& robot, const std::string& rob_dir) {
-  return RobWriter(robot, rob_dir).Write();
+  return RobWriter(robot, rob_dir, nullptr).Write();
+}
+
+std::string WriteRob(const RobotDesc& robot, const std::string& rob_dir,
+                     std::vector<std::string>* errors) {
+  return RobWriter(robot, rob_dir, errors).Write();
 }
 
 }  // namespace lamina::core

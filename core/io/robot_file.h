@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/io/load_context.h"
 #include "core/model/world_desc.h"
@@ -26,6 +27,12 @@ bool ParseUrdf(const std::string& text, const std::string& path, LoadContext& co
 
 /// `.rob` text that ParseRob turns back into an identical RobotDesc (name, config and velocity
 /// aside). Mesh paths are written relative to directory `rob_dir`.
+/// The limits of a normal, translation or rotation driver are written as its link's velmin,
+/// velmax and torquemax (from which the reader copies them).
 std::string WriteRob(const RobotDesc& robot, const std::string& rob_dir);
+/// The same, adding to `errors` what the file cannot hold ("drivers[2].torqueLimits -3,5 cannot
+/// be saved: ..."; a `.rob` gives such a driver symmetric torque limits).
+std::string WriteRob(const RobotDesc& robot, const std::string& rob_dir,
+                     std::vector<std::string>* errors);
 
 }  // namespace lamina::core

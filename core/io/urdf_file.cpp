@@ -14,6 +14,7 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include "core/io/geometry_file.h"
+#include "core/io/param_text.h"
 #include "core/io/paths.h"
 #include "core/io/rob_statements.h"
 #include "core/io/robot_file.h"
@@ -120,6 +121,15 @@ class UrdfConverter {
   void Error(int line, const std::string& message) const {
     context_.diagnostics.Error({path_, line, 0}, message);
   }
+  // the table's row `key` of `kind` checks `value`; a refusal is reported at `line`
+  bool CheckRow(int line, const std::string& what, std::string_view key, ElementKind kind,
+                const ParamValue& value) const {
+    const std::optional<std::string> refusal = RefuseRow(key, kind, value);
+    if (refusal) Error(line, what + " " + *refusal);
+    return !refusal;
+  }
+  void CheckJointLimits(const urdf::Joint& joint, const LinkDesc& link) const;
+  void CheckDriver(const DriverDesc& driver, const std::string& link_name, int joint_line) const;
   const KlamptLinkSettings* Settings(const std::string& name) const {
     const auto found = extras_.links.find(name);
     return found == extras_.links.end() ? nullptr : &found->second;
@@ -174,10 +184,12 @@ void UrdfConverter::SetMass(const urdf::Link& link, LinkDesc* out) const {
     // the tensor is given in the inertial frame; rotate it into the link frame
     const Mat3 rotation = ToPose(inertial.origin).linear();
     out->inertia = rotation * tensor * rotation.transpose();
-    if (out->mass < 0.0) {
-      Error(xml_.LinkLine(link.name),
-            "mass of link '" + link.name + "' must be >= 0, got '" + FormatDouble(out->mass) + "'");
-    }
+    const int line = xml_.LinkLine(link.name);
+    const std::string of_link = " of link '" + link.name + "'";
+    CheckRow(line, "mass" + of_link, "mass", ElementKind::kLink, {out->mass});
+    CheckRow(line, "inertia" + of_link + " (<inertia>)", "inertia", ElementKind::kLink,
+             {inertial.ixx, inertial.ixy, inertial.ixz, inertial.ixy, inertial.iyy, inertial.iyz,
+              inertial.ixz, inertial.iyz, inertial.izz});
   } else {
     out->mass = extras_.default_mass.value_or(0.0);
     out->inertia = extras_.default_inertia.value_or(Mat3::Zero());
@@ -320,10 +332,39 @@ int UrdfConverter::AddJointLinks(const urdf::Link& link, const urdf::Joint& join
     out.velocity_min = out.velocity_max = 0.0;
     out.acceleration_max = 0.0;
   }
+  if (joint.limits && robot_joint.type == JointType::kNormal) CheckJointLimits(joint, out);
   robot_joint.link = AddLink(std::move(out));
   robot_.joints.push_back(robot_joint);
   if (robot_joint.type != JointType::kWeld) AddDriver(robot_joint.link, joint, link.name);
   return robot_joint.link;
+}
+
+// <limit lower upper velocity effort> as the rows jointLimits, velocityLimits and torqueLimits
+void UrdfConverter::CheckJointLimits(const urdf::Joint& joint, const LinkDesc& link) const {
+  const int line = xml_.JointLine(joint.name);
+  const std::string of_joint = " of joint '" + joint.name + "'";
+  CheckRow(line, "jointLimits" + of_joint + " (<limit lower upper>)", "jointLimits",
+           ElementKind::kLink, {link.q_min, link.q_max});
+  CheckRow(line, "velocityLimits" + of_joint + " (<limit velocity>)", "velocityLimits",
+           ElementKind::kDriver, {link.velocity_min, link.velocity_max});
+  CheckRow(line, "torqueLimits" + of_joint + " (<limit effort>)", "torqueLimits",
+           ElementKind::kDriver, {-link.torque_max, link.torque_max});
+}
+
+// gains (Klamp't's <klampt><link servoP ...>) and friction (<dynamics>) as the driver rows
+void UrdfConverter::CheckDriver(const DriverDesc& driver, const std::string& link_name,
+                                int joint_line) const {
+  const KlamptLinkSettings* settings = Settings(link_name);
+  const int line = settings ? settings->line : joint_line;
+  const std::string of = " of link '" + link_name + "'";
+  const std::pair<std::string_view, double> rows[] = {{"servoP", driver.servo_p},
+                                                      {"servoI", driver.servo_i},
+                                                      {"servoD", driver.servo_d},
+                                                      {"dryFriction", driver.dry_friction},
+                                                      {"viscousFriction", driver.viscous_friction}};
+  for (const auto& [key, value] : rows) {
+    CheckRow(line, "'" + std::string(key) + "'" + of, key, ElementKind::kDriver, {value});
+  }
 }
 
 void UrdfConverter::AddDriver(int index, const urdf::Joint& joint, const std::string& link_name) {
@@ -345,6 +386,7 @@ void UrdfConverter::AddDriver(int index, const urdf::Joint& joint, const std::st
     driver.dry_friction = settings->dry_friction.value_or(driver.dry_friction);
     driver.viscous_friction = settings->viscous_friction.value_or(driver.viscous_friction);
   }
+  CheckDriver(driver, link_name, xml_.JointLine(joint.name));
   robot_.drivers.push_back(std::move(driver));
 }
 

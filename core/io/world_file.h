@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Klamp't world XML: loading (`<world>` with `<robot>`, `<rigidObject>`, `<terrain>` and the
 // `<simulation>` block) and saving so that load -> save -> load gives the same WorldDesc.
+// Every tunable is read, checked and written as a row of the parameter table
+// (core/model/params.h). Lamina's additions to Klamp't's format: the `<globals>` attributes of
+// Lamina's settings rows (written only when they differ from SimSettings{}) and `<robot
+// velocity="N ...">` (the initial joint rates, written only when not zero).
 #pragma once
 
 #include <string>

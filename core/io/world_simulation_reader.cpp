@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "core/io/world_simulation_reader.h"
 
+#include <utility>
+#include <vector>
+
+#include "core/io/param_text.h"
+
 namespace lamina::core {
 
 namespace {
@@ -29,26 +34,24 @@ int FindBody(const XmlElementReader& reader, const std::vector<Body>& bodies, co
   return -1;
 }
 
-void ReadGeometryParams(const XMLElement& element, const std::string& path,
-                        Diagnostics& diagnostics, BodySimParams* params) {
-  const XmlElementReader reader(element, path, diagnostics);
-  reader.WarnUnknownAttributes(
-      {"padding", "preshrink", "kRestitution", "kFriction", "kStiffness", "kDamping"});
-  if (const auto padding = reader.Number("padding", false)) {
-    if (*padding < 0) {
-      reader.Error("padding", "must be >= 0, got '" + *reader.String("padding") + "'");
-    } else {
-      params->padding = *padding;
+using RowValues = std::vector<std::pair<const ParamSpec*, ParamValue>>;
+
+// the attributes of `rows` that the element has and the table accepts (sizes as on `element`)
+RowValues ReadRows(const XmlElementReader& reader, const std::vector<const ParamSpec*>& rows,
+                   const WorldDesc& world, const ElementIndex& element) {
+  RowValues values;
+  for (const ParamSpec* spec : rows) {
+    if (auto value = reader.Param(*spec, ParamSize(*spec, world, element))) {
+      values.emplace_back(spec, std::move(*value));
     }
   }
-  if (const auto preshrink = reader.Integer("preshrink")) {
-    if (*preshrink < 0 || *preshrink > 2) {
-      reader.Error("preshrink", "must be 0, 1 or 2, got '" + *reader.String("preshrink") + "'");
-    } else {
-      params->preshrink = static_cast<Preshrink>(*preshrink);
-    }
-  }
-  ReadSurfaceAttributes(reader, &params->surface);
+  return values;
+}
+
+std::vector<std::string> KeysOf(const std::vector<const ParamSpec*>& rows) {
+  std::vector<std::string> keys;
+  for (const ParamSpec* spec : rows) keys.emplace_back(spec->key);
+  return keys;
 }
 
 class SimulationReader {
@@ -61,6 +64,9 @@ class SimulationReader {
  private:
   XmlElementReader Reader(const XMLElement& e) const { return {e, path_, diagnostics_}; }
   void ReadGlobals(const XMLElement& element);
+  // `<geometry>` children of a body reference, applied to each of `elements`
+  void ReadGeometryChildren(const XMLElement& element, const std::vector<ElementIndex>& elements);
+  void ReadVelocity(const XMLElement& element, int object);
   void ReadTerrainRef(const XMLElement& element);
   void ReadObjectRef(const XMLElement& element);
   void ReadRobotRef(const XMLElement& element);
@@ -96,46 +102,40 @@ void SimulationReader::Read(const XMLElement& block) {
 
 void SimulationReader::ReadGlobals(const XMLElement& element) {
   const XmlElementReader reader = Reader(element);
-  reader.WarnUnknownAttributes({"timestep", "gravity", "ERP", "CFM", "maxContacts", "boundaryLayer",
-                                "adaptiveTimeStepping", "rigidObjectCollisions",
-                                "robotSelfCollisions", "robotRobotCollisions"});
-  SimSettings& s = world_->settings;
-  if (const auto timestep = reader.Number("timestep", false)) {
-    if (*timestep <= 0) {
-      reader.Error("timestep", "must be > 0, got '" + *reader.String("timestep") + "'");
-    } else {
-      s.timestep = *timestep;
-    }
-  }
-  if (const auto gravity = reader.Vector3("gravity")) s.gravity = *gravity;
-  if (const auto erp = reader.Number("ERP", false)) {
-    if (*erp < 0 || *erp > 1) {
-      reader.Error("ERP", "must be in [0, 1], got '" + *reader.String("ERP") + "'");
-    } else {
-      s.erp = *erp;
-    }
-  }
-  if (const auto cfm = reader.Number("CFM", false)) {
-    if (*cfm < 0) {
-      reader.Error("CFM", "must be >= 0, got '" + *reader.String("CFM") + "'");
-    } else {
-      s.cfm = *cfm;
-    }
-  }
-  if (const auto max_contacts = reader.Integer("maxContacts")) {
-    if (*max_contacts < 1) {
-      reader.Error("maxContacts", "must be >= 1, got '" + *reader.String("maxContacts") + "'");
-    } else {
-      s.max_contacts = *max_contacts;
-    }
-  }
+  const std::vector<const ParamSpec*> rows = ParamsOf(ElementKind::kSettings);
+  std::vector<std::string> known = KeysOf(rows);
+  known.emplace_back("boundaryLayer");
+  reader.WarnUnknownAttributes(known);
   if (reader.Has("boundaryLayer")) {
     reader.Warning("'boundaryLayer' has no effect (as in Klamp't); set 'padding' per body");
   }
-  if (const auto v = reader.Boolean("adaptiveTimeStepping")) s.adaptive_time_stepping = *v;
-  if (const auto v = reader.Boolean("rigidObjectCollisions")) s.rigid_object_collisions = *v;
-  if (const auto v = reader.Boolean("robotSelfCollisions")) s.robot_self_collisions = *v;
-  if (const auto v = reader.Boolean("robotRobotCollisions")) s.robot_robot_collisions = *v;
+  ReadParamAttributes(reader, rows, world_, ElementIndex::Settings());
+}
+
+void SimulationReader::ReadGeometryChildren(const XMLElement& element,
+                                            const std::vector<ElementIndex>& elements) {
+  const std::vector<const ParamSpec*> rows = BodyGeometryRows();
+  for (const XMLElement* g = element.FirstChildElement("geometry"); g;
+       g = g->NextSiblingElement("geometry")) {
+    const XmlElementReader reader = Reader(*g);
+    reader.WarnUnknownAttributes(KeysOf(rows));
+    if (elements.empty()) continue;
+    for (const auto& [spec, value] : ReadRows(reader, rows, *world_, elements.front())) {
+      for (const ElementIndex& body : elements) spec->set(world_, body, value);
+    }
+  }
+}
+
+void SimulationReader::ReadVelocity(const XMLElement& element, int object) {
+  const XmlElementReader velocity = Reader(element);
+  velocity.WarnUnknownAttributes({"linear", "angular"});
+  const ParamSpec& spec = *FindParam("velocity", ElementKind::kObject);
+  const ElementIndex index = ElementIndex::Object(object);
+  Twist twist = ValueToTwist(spec.get(*world_, index));
+  if (const auto linear = velocity.Vector3("linear")) twist.linear = *linear;
+  if (const auto angular = velocity.Vector3("angular")) twist.angular = *angular;
+  const ParamValue value = TwistToValue(twist);
+  if (velocity.CheckAssembled(spec, value, 6, "linear, angular")) spec.set(world_, index, value);
 }
 
 void SimulationReader::WarnUnknownChildren(const XMLElement& element,
@@ -153,10 +153,7 @@ void SimulationReader::ReadTerrainRef(const XMLElement& element) {
   WarnUnknownChildren(element, {"geometry"});
   const int index = FindBody(reader, world_->terrains, "terrain");
   if (index < 0) return;
-  for (const XMLElement* g = element.FirstChildElement("geometry"); g;
-       g = g->NextSiblingElement("geometry")) {
-    ReadGeometryParams(*g, path_, diagnostics_, &world_->terrains[index].sim);
-  }
+  ReadGeometryChildren(element, {ElementIndex::Terrain(index)});
 }
 
 void SimulationReader::ReadObjectRef(const XMLElement& element) {
@@ -165,19 +162,8 @@ void SimulationReader::ReadObjectRef(const XMLElement& element) {
   WarnUnknownChildren(element, {"geometry", "velocity"});
   const int index = FindBody(reader, world_->objects, "object");
   if (index < 0) return;
-  RigidObjectDesc& object = world_->objects[index];
-  for (const XMLElement* g = element.FirstChildElement("geometry"); g;
-       g = g->NextSiblingElement("geometry")) {
-    ReadGeometryParams(*g, path_, diagnostics_, &object.sim);
-  }
-  if (const XMLElement* v = element.FirstChildElement("velocity")) {
-    const XmlElementReader velocity = Reader(*v);
-    velocity.WarnUnknownAttributes({"linear", "angular"});
-    if (const auto linear = velocity.Vector3("linear")) object.initial_velocity.linear = *linear;
-    if (const auto angular = velocity.Vector3("angular")) {
-      object.initial_velocity.angular = *angular;
-    }
-  }
+  ReadGeometryChildren(element, {ElementIndex::Object(index)});
+  if (const XMLElement* v = element.FirstChildElement("velocity")) ReadVelocity(*v, index);
 }
 
 void SimulationReader::ReadRobotRef(const XMLElement& element) {
@@ -204,13 +190,11 @@ void SimulationReader::ReadRobotRef(const XMLElement& element) {
       return;
     }
   }
-  for (const XMLElement* g = element.FirstChildElement("geometry"); g;
-       g = g->NextSiblingElement("geometry")) {
-    for (int link = 0; link < robot.dof(); ++link) {
-      if (body >= 0 && link != body) continue;
-      ReadGeometryParams(*g, path_, diagnostics_, &robot.links[link].sim);
-    }
+  std::vector<ElementIndex> links;
+  for (int link = 0; link < robot.dof(); ++link) {
+    if (body < 0 || link == body) links.push_back(ElementIndex::Link(index, link));
   }
+  ReadGeometryChildren(element, links);
   for (const char* property : {"controller", "sensors"}) {
     if (const XMLElement* e = element.FirstChildElement(property)) {
       tinyxml2::XMLPrinter printer(nullptr, true);
@@ -222,35 +206,10 @@ void SimulationReader::ReadRobotRef(const XMLElement& element) {
 
 }  // namespace
 
-void ReadSurfaceAttributes(const XmlElementReader& reader, SurfaceDesc* surface) {
-  if (const auto e = reader.Number("kRestitution", false)) {
-    if (*e < 0 || *e > 1) {
-      reader.Error("kRestitution",
-                   "must be in [0, 1], got '" + *reader.String("kRestitution") + "'");
-    } else {
-      surface->restitution = *e;
-    }
-  }
-  if (const auto mu = reader.Number("kFriction")) {
-    if (*mu < 0) {
-      reader.Error("kFriction", "must be >= 0, got '" + *reader.String("kFriction") + "'");
-    } else {
-      surface->friction = *mu;
-    }
-  }
-  if (const auto k = reader.Number("kStiffness")) {
-    if (*k <= 0) {
-      reader.Error("kStiffness", "must be > 0, got '" + *reader.String("kStiffness") + "'");
-    } else {
-      surface->stiffness = *k;
-    }
-  }
-  if (const auto c = reader.Number("kDamping")) {
-    if (*c < 0) {
-      reader.Error("kDamping", "must be >= 0, got '" + *reader.String("kDamping") + "'");
-    } else {
-      surface->damping = *c;
-    }
+void ReadParamAttributes(const XmlElementReader& reader, const std::vector<const ParamSpec*>& rows,
+                         WorldDesc* world, const ElementIndex& element) {
+  for (const auto& [spec, value] : ReadRows(reader, rows, *world, element)) {
+    spec->set(world, element, value);
   }
 }
 

@@ -1,14 +1,18 @@
 // SPDX-License-Identifier: MIT
 // The `<simulation>` block of a world file: `<globals>` and per-body `<terrain|object|robot>`
-// parameters (padding, preshrink, surface, initial velocity).
+// parameters (padding, preshrink, surface, initial velocity). Every tunable is a row of the
+// parameter table (core/model/params.h): its attribute is the row's key, its rule the row's.
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <tinyxml2.h>
 
 #include "core/diagnostics.h"
 #include "core/io/xml_element_reader.h"
+#include "core/model/element.h"
+#include "core/model/params.h"
 #include "core/model/world_desc.h"
 
 namespace lamina::core {
@@ -18,7 +22,10 @@ namespace lamina::core {
 void ReadSimulationBlock(const tinyxml2::XMLElement& element, const std::string& path,
                          Diagnostics& diagnostics, WorldDesc* world);
 
-/// Reads kRestitution, kFriction, kStiffness and kDamping, checking their ranges.
-void ReadSurfaceAttributes(const XmlElementReader& reader, SurfaceDesc* surface);
+/// Reads the attribute of each row in `rows` (named by the row's key) that the element has,
+/// checks it against the table and sets it on `element` of `world`; refusals are reported and
+/// leave the element's value as it was.
+void ReadParamAttributes(const XmlElementReader& reader, const std::vector<const ParamSpec*>& rows,
+                         WorldDesc* world, const ElementIndex& element);
 
 }  // namespace lamina::core

@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: MIT
 // Reading Klamp't world XML into a WorldDesc: `<robot>`, `<rigidObject>`, `<terrain>` and
 // `<display>` here, the `<simulation>` block in world_simulation_reader.cpp.
+#include <optional>
+#include <utility>
+#include <vector>
+
 #include <tinyxml2.h>
 
 #include "core/geometry/mass_properties.h"
 #include "core/io/geometry_file.h"
 #include "core/io/object_file.h"
+#include "core/io/param_text.h"
 #include "core/io/paths.h"
 #include "core/io/robot_file.h"
 #include "core/io/trajectory_file.h"
@@ -13,6 +18,7 @@
 #include "core/io/world_simulation_reader.h"
 #include "core/io/world_xml_transform.h"
 #include "core/io/xml_element_reader.h"
+#include "core/model/params.h"
 
 namespace lamina::core {
 
@@ -22,6 +28,16 @@ using tinyxml2::XMLElement;
 
 // Klamp't's default `automassSurfaceFraction` for world XML objects
 constexpr double kDefaultSurfaceFraction = 1.0;
+
+// Reads `rows` from the element onto `object`, which is not in the world yet: the table's rows
+// address elements of a world, so it is lent to a world of its own meanwhile.
+void ReadObjectParams(const XmlElementReader& reader, const std::vector<const ParamSpec*>& rows,
+                      RigidObjectDesc* object) {
+  WorldDesc lent;
+  lent.objects.push_back(std::move(*object));
+  ReadParamAttributes(reader, rows, &lent, ElementIndex::Object(0));
+  *object = std::move(lent.objects.front());
+}
 
 DisplayAttributes ReadDisplay(const XMLElement& element) {
   DisplayAttributes display;
@@ -45,6 +61,7 @@ class WorldReader {
   void ReadRobot(const XMLElement& element);
   void ReadRobotChildren(const XMLElement& element, RobotDesc* robot);
   void ReadRobotConfig(const XmlElementReader& reader, RobotDesc* robot);
+  void ReadRobotVelocity(const XmlElementReader& reader, RobotDesc* robot);
   void ReadObject(const XMLElement& element);
   void ReadObjectGeometry(const XMLElement& element, RigidObjectDesc* object);
   void ReadObjectPhysics(const XMLElement& element, RigidObjectDesc* object);
@@ -81,8 +98,9 @@ void WorldReader::ReadWorld(const XMLElement& root) {
 
 void WorldReader::ReadRobot(const XMLElement& element) {
   const XmlElementReader reader = Reader(element);
-  reader.WarnUnknownAttributes({"name", "file", "config", "configfile", "translation", "position",
-                                "rotateRPY", "rotateMoment", "rotateX", "rotateY", "rotateZ"});
+  reader.WarnUnknownAttributes({"name", "file", "config", "configfile", "velocity", "translation",
+                                "position", "rotateRPY", "rotateMoment", "rotateX", "rotateY",
+                                "rotateZ"});
   const auto file = reader.String("file");
   if (!file) {
     reader.Error("missing attribute 'file'");
@@ -92,6 +110,7 @@ void WorldReader::ReadRobot(const XMLElement& element) {
   if (!LoadRobotFile(ResolvePath(dir_, *file), reader.location(), context_, &robot)) return;
   robot.name = reader.String("name").value_or("Robot");
   ReadRobotConfig(reader, &robot);
+  ReadRobotVelocity(reader, &robot);
   Pose pose;
   if (ReadPose(reader, &pose)) {
     for (LinkDesc& link : robot.links) {
@@ -113,7 +132,27 @@ void WorldReader::ReadRobotConfig(const XmlElementReader& reader, RobotDesc* rob
                  robot->name + "' has " + std::to_string(robot->dof()) + " links");
     return;
   }
-  robot->config = *config;
+  const ParamValue value(config->data(), config->data() + config->size());
+  const char* from = reader.Has("configfile") ? "configfile" : "config";
+  if (reader.CheckAssembled(*FindParam("config", ElementKind::kRobot), value, robot->dof(), from)) {
+    robot->config = *config;
+  }
+}
+
+// Lamina's `velocity="N v1 ... vN"`: the initial joint rates (Klamp't has no attribute for them)
+void WorldReader::ReadRobotVelocity(const XmlElementReader& reader, RobotDesc* robot) {
+  const std::optional<VecX> velocity = reader.CountedVector("velocity");
+  if (!velocity) return;
+  if (velocity->size() != robot->dof()) {
+    reader.Error("velocity", "has " + std::to_string(velocity->size()) + " values but robot '" +
+                                 robot->name + "' has " + std::to_string(robot->dof()) + " links");
+    return;
+  }
+  const ParamValue value(velocity->data(), velocity->data() + velocity->size());
+  if (reader.CheckAssembled(*FindParam("velocity", ElementKind::kRobot), value, robot->dof(),
+                            "velocity")) {
+    robot->velocity = *velocity;
+  }
 }
 
 void WorldReader::ReadRobotChildren(const XMLElement& element, RobotDesc* robot) {
@@ -156,7 +195,11 @@ void WorldReader::ReadObject(const XMLElement& element) {
     return;
   }
   Pose pose;
-  if (ReadPose(reader, &pose)) object.pose = pose;
+  if (ReadPose(reader, &pose) &&
+      reader.CheckAssembled(*FindParam("transform", ElementKind::kObject), PoseToValue(pose), 12,
+                            "the transform attributes")) {
+    object.pose = pose;
+  }
   if (const XMLElement* physics = element.FirstChildElement("physics")) {
     ReadObjectPhysics(*physics, &object);
   }
@@ -204,18 +247,11 @@ void WorldReader::ReadObjectPhysics(const XMLElement& element, RigidObjectDesc* 
   const XmlElementReader reader = Reader(element);
   reader.WarnUnknownAttributes({"mass", "com", "inertia", "automass", "automassSurfaceFraction",
                                 "kRestitution", "kFriction", "kStiffness", "kDamping"});
-  if (const auto mass = reader.Number("mass", false)) {
-    if (*mass < 0) {
-      reader.Error("mass", "must be >= 0, got '" + *reader.String("mass") + "'");
-    } else {
-      object->mass = *mass;
-    }
+  std::vector<const ParamSpec*> mass_rows;
+  for (const char* key : {"mass", "com", "inertia"}) {
+    mass_rows.push_back(FindParam(key, ElementKind::kObject));
   }
-  if (const auto com = reader.Vector3("com")) object->com = *com;
-  if (const auto inertia = reader.Numbers("inertia", 9)) {
-    object->inertia =
-        Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(inertia->data());
-  }
+  ReadObjectParams(reader, mass_rows, object);
   double fraction = kDefaultSurfaceFraction;
   if (const auto value = reader.Number("automassSurfaceFraction", false)) {
     if (*value < 0 || *value > 1) {
@@ -234,7 +270,7 @@ void WorldReader::ReadObjectPhysics(const XMLElement& element, RigidObjectDesc* 
       reader.Error("automass: cannot compute mass properties from degenerate geometry");
     }
   }
-  ReadSurfaceAttributes(reader, &object->sim.surface);
+  ReadObjectParams(reader, SurfaceRows(), object);
 }
 
 void WorldReader::ReadTerrain(const XMLElement& element) {
@@ -253,13 +289,11 @@ void WorldReader::ReadTerrain(const XMLElement& element) {
       reader.String("name").value_or("Terrain" + std::to_string(world_->terrains.size()));
   ApplyGeometryTransform(reader, &terrain.geometry);
   if (const auto margin = reader.Number("margin", false)) terrain.geometry.margin = *margin;
-  if (const auto friction = reader.Number("kFriction")) {
-    if (*friction < 0) {
-      reader.Error("kFriction", "must be >= 0, got '" + *reader.String("kFriction") + "'");
-    } else {
-      terrain.sim.surface.friction = *friction;
-    }
-  }
+  WorldDesc lent;  // the terrain in a world of its own, where the table's rows address it
+  lent.terrains.push_back(std::move(terrain));
+  ReadParamAttributes(reader, {FindParam("kFriction", ElementKind::kTerrain)}, &lent,
+                      ElementIndex::Terrain(0));
+  terrain = std::move(lent.terrains.front());
   for (const XMLElement* e = element.FirstChildElement(); e; e = e->NextSiblingElement()) {
     if (std::string(e->Name()) == "display") {
       terrain.display = ReadDisplay(*e);

@@ -9,26 +9,20 @@
 #include <tinyxml2.h>
 
 #include "core/io/geometry_file.h"
+#include "core/io/param_text.h"
 #include "core/io/paths.h"
 #include "core/io/robot_file.h"
 #include "core/io/text_statements.h"
 #include "core/io/world_file.h"
 #include "core/io/world_xml_transform.h"
+#include "core/model/element.h"
+#include "core/model/params.h"
 
 namespace lamina::core {
 
 namespace {
 
 using Attributes = std::vector<std::pair<std::string, std::string>>;
-
-std::string Format3(const Vec3& v) {
-  return FormatDoubles(v.data(), 3);
-}
-
-std::string FormatMatrixRowMajor(const Mat3& m) {
-  const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> row_major = m;
-  return FormatDoubles(row_major.data(), 9);
-}
 
 std::string FormatCountedVector(const VecX& v) {
   return std::to_string(v.size()) + (v.size() ? "  " + FormatDoubles(v.data(), v.size()) : "");
@@ -60,14 +54,16 @@ class WorldWriter {
   }
   void WriteDisplay(const DisplayAttributes& display, const std::string& link = "");
   void WriteTerrain(const TerrainDesc& terrain);
-  void WriteObject(const RigidObjectDesc& object);
+  void WriteObject(const RigidObjectDesc& object, int index);
   void WriteRobot(const RobotDesc& robot, std::set<std::string>* used_names);
   RobotDesc WithPrimitiveFiles(const RobotDesc& robot, const std::string& rob_path);
   void WriteSimulation();
-  void WriteBodyParams(const char* kind, int index, const BodySimParams& params,
-                       const std::string& body = "");
+  void WriteBodyParams(const char* kind, const ElementIndex& element, const std::string& body = "");
   Attributes GeometryAttributes(const char* file_key, const GeometryDesc& geometry);
-  Attributes SurfaceAttributes(const SurfaceDesc& surface);
+  // each row's key and value on `element`, in ParamWords
+  Attributes RowAttributes(const std::vector<const ParamSpec*>& rows,
+                           const ElementIndex& element) const;
+  Attributes GlobalsAttributes() const;
 
   const WorldDesc& world_;
   std::string dir_;
@@ -80,7 +76,9 @@ WorldFileSet WorldWriter::Write() {
   printer_.PushDeclaration("xml version=\"1.0\" encoding=\"UTF-8\"");
   Element("world", {}, false);
   for (const TerrainDesc& terrain : world_.terrains) WriteTerrain(terrain);
-  for (const RigidObjectDesc& object : world_.objects) WriteObject(object);
+  for (size_t i = 0; i < world_.objects.size(); ++i) {
+    WriteObject(world_.objects[i], static_cast<int>(i));
+  }
   std::set<std::string> used_names;
   for (const RobotDesc& robot : world_.robots) WriteRobot(robot, &used_names);
   WriteSimulation();
@@ -109,11 +107,27 @@ Attributes WorldWriter::GeometryAttributes(const char* file_key, const GeometryD
   return attributes;
 }
 
-Attributes WorldWriter::SurfaceAttributes(const SurfaceDesc& surface) {
-  return {{"kRestitution", FormatDouble(surface.restitution)},
-          {"kFriction", FormatDouble(surface.friction)},
-          {"kStiffness", FormatDouble(surface.stiffness)},
-          {"kDamping", FormatDouble(surface.damping)}};
+Attributes WorldWriter::RowAttributes(const std::vector<const ParamSpec*>& rows,
+                                      const ElementIndex& element) const {
+  Attributes attributes;
+  for (const ParamSpec* spec : rows) {
+    attributes.emplace_back(spec->key, ParamWords(*spec, spec->get(world_, element)));
+  }
+  return attributes;
+}
+
+// Klamp't's rows always; Lamina's only when they differ from SimSettings{}, so that a saved
+// world stays a Klamp't world unless it uses Lamina's settings
+Attributes WorldWriter::GlobalsAttributes() const {
+  const WorldDesc defaults;
+  std::vector<const ParamSpec*> rows;
+  for (const ParamSpec* spec : ParamsOf(ElementKind::kSettings)) {
+    const ElementIndex settings = ElementIndex::Settings();
+    if (spec->klampt || spec->get(world_, settings) != spec->get(defaults, settings)) {
+      rows.push_back(spec);
+    }
+  }
+  return RowAttributes(rows, ElementIndex::Settings());
 }
 
 void WorldWriter::WriteTerrain(const TerrainDesc& terrain) {
@@ -125,18 +139,23 @@ void WorldWriter::WriteTerrain(const TerrainDesc& terrain) {
   printer_.CloseElement();
 }
 
-void WorldWriter::WriteObject(const RigidObjectDesc& object) {
+void WorldWriter::WriteObject(const RigidObjectDesc& object, int index) {
   Attributes attributes{{"name", object.name}};
+  if (!IsRotation(object.pose.linear())) {
+    files_.errors.push_back("objects[" + std::to_string(index) +
+                            "].transform: the rotation is not a rotation matrix, which world XML "
+                            "(rotateMoment) cannot hold");
+  }
   const Attributes pose = PoseAttributes(object.pose);
   attributes.insert(attributes.end(), pose.begin(), pose.end());
   Element("rigidObject", attributes, false);
   Element("geometry", GeometryAttributes("mesh", object.geometry));
-  Attributes physics{{"mass", FormatDouble(object.mass)},
-                     {"com", Format3(object.com)},
-                     {"inertia", FormatMatrixRowMajor(object.inertia)}};
-  const Attributes surface = SurfaceAttributes(object.sim.surface);
-  physics.insert(physics.end(), surface.begin(), surface.end());
-  Element("physics", physics);
+  std::vector<const ParamSpec*> rows;
+  for (const char* key : {"mass", "com", "inertia"}) {
+    rows.push_back(FindParam(key, ElementKind::kObject));
+  }
+  for (const ParamSpec* spec : SurfaceRows()) rows.push_back(spec);
+  Element("physics", RowAttributes(rows, ElementIndex::Object(index)));
   WriteDisplay(object.display);
   printer_.CloseElement();
 }
@@ -166,50 +185,47 @@ RobotDesc WorldWriter::WithPrimitiveFiles(const RobotDesc& robot, const std::str
 void WorldWriter::WriteRobot(const RobotDesc& robot, std::set<std::string>* used_names) {
   const std::string relative = robots_dir_name_ + "/" + RobotFileName(robot.name, used_names);
   const std::string rob_path = ResolvePath(dir_, relative);
+  std::vector<std::string> errors;
   files_.robot_files.emplace_back(
-      rob_path, WriteRob(WithPrimitiveFiles(robot, rob_path), DirectoryOf(rob_path)));
+      rob_path, WriteRob(WithPrimitiveFiles(robot, rob_path), DirectoryOf(rob_path), &errors));
+  const std::string path = "robots[" + std::to_string(files_.robot_files.size() - 1) + "].";
+  for (const std::string& error : errors) files_.errors.push_back(path + error);
   Attributes attributes{{"name", robot.name}, {"file", relative}};
-  if (robot.config.size() == robot.dof()) {
-    attributes.emplace_back("config", FormatCountedVector(robot.config));
+  // as held (a config of the wrong size is written too, and the reader reports it)
+  if (robot.config.size() > 0) attributes.emplace_back("config", FormatCountedVector(robot.config));
+  // Lamina's attribute, only when a robot starts moving (or holds a velocity of another size,
+  // which the reader then reports)
+  if (!robot.velocity.isZero(0.0) ||
+      (robot.velocity.size() > 0 && robot.velocity.size() != robot.dof())) {
+    attributes.emplace_back("velocity", FormatCountedVector(robot.velocity));
   }
   Element("robot", attributes, false);
   for (const auto& [link, display] : robot.link_display) WriteDisplay(display, link);
   printer_.CloseElement();
 }
 
-void WorldWriter::WriteBodyParams(const char* kind, int index, const BodySimParams& params,
+void WorldWriter::WriteBodyParams(const char* kind, const ElementIndex& element,
                                   const std::string& body) {
-  Attributes reference{{"index", std::to_string(index)}};
+  Attributes reference{{"index", std::to_string(element.index)}};
   if (!body.empty()) reference.emplace_back("body", body);
   Element(kind, reference, false);
-  Attributes geometry{{"padding", FormatDouble(params.padding)},
-                      {"preshrink", std::to_string(static_cast<int>(params.preshrink))}};
-  const Attributes surface = SurfaceAttributes(params.surface);
-  geometry.insert(geometry.end(), surface.begin(), surface.end());
-  Element("geometry", geometry);
+  Element("geometry", RowAttributes(BodyGeometryRows(), element));
 }
 
 void WorldWriter::WriteSimulation() {
-  const SimSettings& s = world_.settings;
   Element("simulation", {}, false);
-  Element("globals", {{"timestep", FormatDouble(s.timestep)},
-                      {"gravity", Format3(s.gravity)},
-                      {"ERP", FormatDouble(s.erp)},
-                      {"CFM", FormatDouble(s.cfm)},
-                      {"maxContacts", std::to_string(s.max_contacts)},
-                      {"adaptiveTimeStepping", s.adaptive_time_stepping ? "1" : "0"},
-                      {"rigidObjectCollisions", s.rigid_object_collisions ? "1" : "0"},
-                      {"robotSelfCollisions", s.robot_self_collisions ? "1" : "0"},
-                      {"robotRobotCollisions", s.robot_robot_collisions ? "1" : "0"}});
+  Element("globals", GlobalsAttributes());
   for (size_t i = 0; i < world_.terrains.size(); ++i) {
-    WriteBodyParams("terrain", static_cast<int>(i), world_.terrains[i].sim);
+    WriteBodyParams("terrain", ElementIndex::Terrain(static_cast<int>(i)));
     printer_.CloseElement();
   }
+  const ParamSpec& velocity = *FindParam("velocity", ElementKind::kObject);
   for (size_t i = 0; i < world_.objects.size(); ++i) {
-    const RigidObjectDesc& object = world_.objects[i];
-    WriteBodyParams("object", static_cast<int>(i), object.sim);
-    Element("velocity", {{"linear", Format3(object.initial_velocity.linear)},
-                         {"angular", Format3(object.initial_velocity.angular)}});
+    const ElementIndex object = ElementIndex::Object(static_cast<int>(i));
+    WriteBodyParams("object", object);
+    const ParamValue twist = velocity.get(world_, object);  // angular, then linear
+    Element("velocity", {{"linear", FormatDoubles(twist.data() + 3, 3)},
+                         {"angular", FormatDoubles(twist.data(), 3)}});
     printer_.CloseElement();
   }
   for (size_t r = 0; r < world_.robots.size(); ++r) {
@@ -219,7 +235,7 @@ void WorldWriter::WriteSimulation() {
                     [&](const LinkDesc& l) { return l.sim == robot.links.front().sim; });
     for (int link = 0; link < robot.dof(); ++link) {
       if (uniform && link > 0) break;
-      WriteBodyParams("robot", static_cast<int>(r), robot.links[link].sim,
+      WriteBodyParams("robot", ElementIndex::Link(static_cast<int>(r), link),
                       uniform ? "-1" : std::to_string(link));
       printer_.CloseElement();
     }

@@ -3,21 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
+#include "core/io/param_text.h"
 #include "core/io/text_statements.h"
 
 namespace lamina::core {
 
 namespace {
-
-std::vector<std::string> SplitWhitespace(const std::string& text) {
-  std::istringstream in(text);
-  std::vector<std::string> words;
-  std::string word;
-  while (in >> word) words.push_back(word);
-  return words;
-}
 
 std::string MakeLabel(const tinyxml2::XMLElement& element) {
   // appended piece by piece: GCC 12 at -O3 flags `"<" + std::string` with a false -Wrestrict
@@ -53,7 +45,7 @@ std::optional<std::vector<double>> XmlElementReader::AllNumbers(const char* name
   const char* value = element_.Attribute(name);
   if (!value) return std::nullopt;
   std::vector<double> numbers;
-  for (const std::string& word : SplitWhitespace(value)) {
+  for (const std::string& word : SplitWords(value)) {
     double number = 0.0;
     if (!ParseDouble(word, &number)) {
       Error(name, "has '" + word + "', which is not a number");
@@ -104,7 +96,7 @@ std::optional<Vec3> XmlElementReader::Vector3(const char* name) const {
 std::optional<int> XmlElementReader::Integer(const char* name) const {
   const char* value = element_.Attribute(name);
   if (!value) return std::nullopt;
-  const std::vector<std::string> words = SplitWhitespace(value);
+  const std::vector<std::string> words = SplitWords(value);
   int number = 0;
   if (words.size() != 1 || !ParseInt(words[0], &number)) {
     Error(name, "expects an integer, got '" + std::string(value) + "'");
@@ -138,6 +130,38 @@ std::optional<VecX> XmlElementReader::CountedVector(const char* name) const {
   return vector;
 }
 
+std::optional<ParamValue> XmlElementReader::Param(const ParamSpec& spec, int size,
+                                                  const char* name) const {
+  const std::string attribute = name ? std::string(name) : std::string(spec.key);
+  const char* text = element_.Attribute(attribute.c_str());
+  if (!text) return std::nullopt;
+  std::string bad_word;
+  const auto value = ParamFromWords(spec, SplitWords(text), &bad_word);
+  const bool named = spec.type == ParamType::kBool || spec.type == ParamType::kChoice;
+  if (!value && !named) {
+    Error(attribute.c_str(), "has '" + bad_word + "', which is not a number");
+    return std::nullopt;
+  }
+  if (value && static_cast<int>(value->size()) != size) {
+    const std::string count = size == 1 ? "1 number" : std::to_string(size) + " numbers";
+    Error(attribute.c_str(), "expects " + count + ", got '" + text + "'");
+    return std::nullopt;
+  }
+  if (!value || !ParamAccepts(spec, *value, size)) {
+    Error(attribute.c_str(), ParamRefusal(spec, text));
+    return std::nullopt;
+  }
+  return value;
+}
+
+bool XmlElementReader::CheckAssembled(const ParamSpec& spec, const ParamValue& value, int size,
+                                      const std::string& from) const {
+  if (ParamAccepts(spec, value, size)) return true;
+  Error("'" + std::string(spec.key) + "' (from " + from + ") " +
+        ParamRefusal(spec, ParamWords(spec, value)));
+  return false;
+}
+
 void XmlElementReader::Error(const char* name, const std::string& message) const {
   diagnostics_.Error(location(), label_ + ": attribute '" + name + "' " + message);
 }
@@ -151,7 +175,10 @@ void XmlElementReader::Warning(const std::string& message) const {
 }
 
 void XmlElementReader::WarnUnknownAttributes(std::initializer_list<const char*> known) const {
-  const std::vector<std::string> names(known.begin(), known.end());
+  WarnUnknownAttributes(std::vector<std::string>(known.begin(), known.end()));
+}
+
+void XmlElementReader::WarnUnknownAttributes(const std::vector<std::string>& names) const {
   for (const tinyxml2::XMLAttribute* attribute = element_.FirstAttribute(); attribute;
        attribute = attribute->Next()) {
     const std::string name = attribute->Name();

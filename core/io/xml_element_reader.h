@@ -13,6 +13,7 @@
 
 #include "core/diagnostics.h"
 #include "core/math_types.h"
+#include "core/model/params.h"
 #include "core/suggest.h"  // SuggestName, used with the readers
 
 namespace lamina::core {
@@ -40,6 +41,17 @@ class XmlElementReader {
   /// A Klamp't vector "N v1 ... vN": the count must match the values that follow.
   std::optional<VecX> CountedVector(const char* name) const;
 
+  /// Attribute `name` (the row's key when null) as a value of table row `spec` with `size`
+  /// components, checked with ParamAccepts. nullopt when absent or refused; a refusal is
+  /// reported as "attribute 'kRestitution' must be in [0, 1], got '1.5'".
+  std::optional<ParamValue> Param(const ParamSpec& spec, int size,
+                                  const char* name = nullptr) const;
+  /// Checks a value of row `spec` assembled from attributes `from` (a pose from position and
+  /// rotateRPY, ...); a refusal is reported as "'transform' (from position, rotateRPY) must be
+  /// ..., got '...'".
+  bool CheckAssembled(const ParamSpec& spec, const ParamValue& value, int size,
+                      const std::string& from) const;
+
   /// Reports an error about attribute `name` of this element.
   void Error(const char* name, const std::string& message) const;
   void Error(const std::string& message) const;
@@ -47,6 +59,7 @@ class XmlElementReader {
 
   /// Warns about every attribute not in `known`, suggesting the closest known name.
   void WarnUnknownAttributes(std::initializer_list<const char*> known) const;
+  void WarnUnknownAttributes(const std::vector<std::string>& known) const;
 
  private:
   std::optional<std::vector<double>> AllNumbers(const char* name) const;

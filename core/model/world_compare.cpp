@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "core/model/element.h"
+#include "core/model/params.h"
 #include "core/number_text.h"
 
 namespace lamina::core {
@@ -49,14 +51,35 @@ class Comparer {
   void Add(const std::string& field, const std::string& a, const std::string& b) {
     differences_.push_back(field + ": " + a + " vs " + b);
   }
+  // one row's values: "objects[1].kFriction: 0.5 vs 0.8", components compared as numbers
+  void Row(const std::string& field, const ParamSpec& spec, const ParamValue& a,
+           const ParamValue& b) {
+    if (a.size() != b.size()) {
+      Integer(field + ".size", static_cast<long>(a.size()), static_cast<long>(b.size()));
+      return;
+    }
+    const size_t before = differences_.size();
+    for (size_t i = 0; i < a.size(); ++i) Number(field, a[i], b[i]);
+    if (differences_.size() == before) return;
+    differences_.resize(before);
+    Add(field, FormatParamValue(spec, a), FormatParamValue(spec, b));
+  }
+  // every row of elements of `element.kind` on `element` of the two worlds, named
+  // `prefix.key` (prefix: the element's access path, or what CompareRobots was given)
+  void Rows(const std::string& prefix, const WorldDesc& a, const WorldDesc& b,
+            const ElementIndex& element) {
+    for (const ParamSpec* spec : ParamsOf(element.kind)) {
+      Row(prefix + "." + std::string(spec->key), *spec, spec->get(a, element),
+          spec->get(b, element));
+    }
+  }
 
   void Geometry(const std::string& f, const GeometryDesc& a, const GeometryDesc& b);
-  void Sim(const std::string& f, const BodySimParams& a, const BodySimParams& b);
   void Link(const std::string& f, const LinkDesc& a, const LinkDesc& b);
   void Driver(const std::string& f, const DriverDesc& a, const DriverDesc& b);
-  void Robot(const std::string& f, const RobotDesc& a, const RobotDesc& b);
+  // a robot of each world at index `r`, named `f`
+  void Robot(const std::string& f, const WorldDesc& a, const WorldDesc& b, int r);
   void Object(const std::string& f, const RigidObjectDesc& a, const RigidObjectDesc& b);
-  void Settings(const SimSettings& a, const SimSettings& b);
 
   std::vector<std::string> differences_;
 
@@ -93,38 +116,23 @@ void Comparer::Geometry(const std::string& f, const GeometryDesc& a, const Geome
   }
 }
 
-void Comparer::Sim(const std::string& f, const BodySimParams& a, const BodySimParams& b) {
-  Number(f + ".padding", a.padding, b.padding);
-  Integer(f + ".preshrink", static_cast<int>(a.preshrink), static_cast<int>(b.preshrink));
-  Number(f + ".kRestitution", a.surface.restitution, b.surface.restitution);
-  Number(f + ".kFriction", a.surface.friction, b.surface.friction);
-  Number(f + ".kStiffness", a.surface.stiffness, b.surface.stiffness);
-  Number(f + ".kDamping", a.surface.damping, b.surface.damping);
-}
-
 void Comparer::Link(const std::string& f, const LinkDesc& a, const LinkDesc& b) {
   Text(f + ".name", a.name, b.name);
   Integer(f + ".parent", a.parent, b.parent);
   Integer(f + ".axis_type", static_cast<int>(a.axis_type), static_cast<int>(b.axis_type));
   Matrix(f + ".axis", a.axis, b.axis);
   Matrix(f + ".parent_transform", a.parent_transform.matrix(), b.parent_transform.matrix());
-  Number(f + ".q_min", a.q_min, b.q_min);
-  Number(f + ".q_max", a.q_max, b.q_max);
   Number(f + ".q_initial", a.q_initial, b.q_initial);
   Number(f + ".velocity_min", a.velocity_min, b.velocity_min);
   Number(f + ".velocity_max", a.velocity_max, b.velocity_max);
   Number(f + ".acceleration_max", a.acceleration_max, b.acceleration_max);
   Number(f + ".torque_max", a.torque_max, b.torque_max);
   Number(f + ".power_max", a.power_max, b.power_max);
-  Number(f + ".mass", a.mass, b.mass);
-  Matrix(f + ".com", a.com, b.com);
-  Matrix(f + ".inertia", a.inertia, b.inertia);
   if (Count(f + ".geometry", a.geometry.size(), b.geometry.size())) {
     for (size_t i = 0; i < a.geometry.size(); ++i) {
       Geometry(f + ".geometry[" + std::to_string(i) + "]", a.geometry[i], b.geometry[i]);
     }
   }
-  Sim(f + ".sim", a.sim, b.sim);
 }
 
 void Comparer::Driver(const std::string& f, const DriverDesc& a, const DriverDesc& b) {
@@ -148,17 +156,8 @@ void Comparer::Driver(const std::string& f, const DriverDesc& a, const DriverDes
   }
   Number(f + ".q_min", a.q_min, b.q_min);
   Number(f + ".q_max", a.q_max, b.q_max);
-  Number(f + ".velocity_min", a.velocity_min, b.velocity_min);
-  Number(f + ".velocity_max", a.velocity_max, b.velocity_max);
-  Number(f + ".torque_min", a.torque_min, b.torque_min);
-  Number(f + ".torque_max", a.torque_max, b.torque_max);
   Number(f + ".acceleration_min", a.acceleration_min, b.acceleration_min);
   Number(f + ".acceleration_max", a.acceleration_max, b.acceleration_max);
-  Number(f + ".servo_p", a.servo_p, b.servo_p);
-  Number(f + ".servo_i", a.servo_i, b.servo_i);
-  Number(f + ".servo_d", a.servo_d, b.servo_d);
-  Number(f + ".dry_friction", a.dry_friction, b.dry_friction);
-  Number(f + ".viscous_friction", a.viscous_friction, b.viscous_friction);
 }
 
 std::string PairsText(const std::vector<std::pair<int, int>>& pairs) {
@@ -174,10 +173,14 @@ std::string PairsText(const std::vector<std::pair<int, int>>& pairs) {
   return text;
 }
 
-void Comparer::Robot(const std::string& f, const RobotDesc& a, const RobotDesc& b) {
+void Comparer::Robot(const std::string& f, const WorldDesc& wa, const WorldDesc& wb, int r) {
+  const RobotDesc& a = wa.robots[r];
+  const RobotDesc& b = wb.robots[r];
   if (Count(f + ".links", a.links.size(), b.links.size())) {
     for (size_t i = 0; i < a.links.size(); ++i) {
-      Link(f + ".links[" + std::to_string(i) + "]", a.links[i], b.links[i]);
+      const std::string g = f + ".links[" + std::to_string(i) + "]";
+      Link(g, a.links[i], b.links[i]);
+      Rows(g, wa, wb, ElementIndex::Link(r, static_cast<int>(i)));
     }
   }
   if (Count(f + ".joints", a.joints.size(), b.joints.size())) {
@@ -190,7 +193,9 @@ void Comparer::Robot(const std::string& f, const RobotDesc& a, const RobotDesc& 
   }
   if (Count(f + ".drivers", a.drivers.size(), b.drivers.size())) {
     for (size_t i = 0; i < a.drivers.size(); ++i) {
-      Driver(f + ".drivers[" + std::to_string(i) + "]", a.drivers[i], b.drivers[i]);
+      const std::string g = f + ".drivers[" + std::to_string(i) + "]";
+      Driver(g, a.drivers[i], b.drivers[i]);
+      Rows(g, wa, wb, ElementIndex::Driver(r, static_cast<int>(i)));
     }
   }
   Exact(f + ".self_collision", a.self_collision, b.self_collision, PairsText(a.self_collision),
@@ -199,44 +204,28 @@ void Comparer::Robot(const std::string& f, const RobotDesc& a, const RobotDesc& 
         PairsText(a.no_self_collision), PairsText(b.no_self_collision));
   Exact(f + ".properties", a.properties, b.properties, std::to_string(a.properties.size()),
         std::to_string(b.properties.size()));
-  Matrix(f + ".config", a.config, b.config);
-  Matrix(f + ".velocity", a.velocity, b.velocity);
+  if (a.links.size() == b.links.size()) Rows(f, wa, wb, ElementIndex::Robot(r));
   Exact(f + ".link_display", a.link_display, b.link_display, std::to_string(a.link_display.size()),
         std::to_string(b.link_display.size()));
 }
 
 void Comparer::Object(const std::string& f, const RigidObjectDesc& a, const RigidObjectDesc& b) {
   Text(f + ".name", a.name, b.name);
-  Matrix(f + ".pose", a.pose.matrix(), b.pose.matrix());
   Geometry(f + ".geometry", a.geometry, b.geometry);
-  Number(f + ".mass", a.mass, b.mass);
-  Matrix(f + ".com", a.com, b.com);
-  Matrix(f + ".inertia", a.inertia, b.inertia);
-  Sim(f + ".sim", a.sim, b.sim);
-  Matrix(f + ".initial_velocity.linear", a.initial_velocity.linear, b.initial_velocity.linear);
-  Matrix(f + ".initial_velocity.angular", a.initial_velocity.angular, b.initial_velocity.angular);
   Exact(f + ".display", a.display, b.display, std::to_string(a.display.size()),
         std::to_string(b.display.size()));
-}
-
-void Comparer::Settings(const SimSettings& a, const SimSettings& b) {
-  Number("settings.timestep", a.timestep, b.timestep);
-  Matrix("settings.gravity", a.gravity, b.gravity);
-  Number("settings.erp", a.erp, b.erp);
-  Number("settings.cfm", a.cfm, b.cfm);
-  Integer("settings.max_contacts", a.max_contacts, b.max_contacts);
-  Integer("settings.adaptive_time_stepping", a.adaptive_time_stepping, b.adaptive_time_stepping);
-  Integer("settings.rigid_object_collisions", a.rigid_object_collisions, b.rigid_object_collisions);
-  Integer("settings.robot_self_collisions", a.robot_self_collisions, b.robot_self_collisions);
-  Integer("settings.robot_robot_collisions", a.robot_robot_collisions, b.robot_robot_collisions);
 }
 
 }  // namespace
 
 std::vector<std::string> CompareRobots(const RobotDesc& a, const RobotDesc& b, double tolerance,
                                        const std::string& prefix) {
+  // the rows address robots of a world: each robot is compared as robot 0 of a world of its own
+  WorldDesc wa, wb;
+  wa.robots.push_back(a);
+  wb.robots.push_back(b);
   Comparer comparer(tolerance);
-  comparer.Robot(prefix, a, b);
+  comparer.Robot(prefix, wa, wb, 0);
   return comparer.differences_;
 }
 
@@ -247,7 +236,7 @@ std::vector<std::string> CompareWorlds(const WorldDesc& a, const WorldDesc& b, d
       const std::string f = "terrains[" + std::to_string(i) + "]";
       c.Text(f + ".name", a.terrains[i].name, b.terrains[i].name);
       c.Geometry(f + ".geometry", a.terrains[i].geometry, b.terrains[i].geometry);
-      c.Sim(f + ".sim", a.terrains[i].sim, b.terrains[i].sim);
+      c.Rows(f, a, b, ElementIndex::Terrain(static_cast<int>(i)));
       c.Exact(f + ".display", a.terrains[i].display, b.terrains[i].display,
               std::to_string(a.terrains[i].display.size()),
               std::to_string(b.terrains[i].display.size()));
@@ -255,17 +244,19 @@ std::vector<std::string> CompareWorlds(const WorldDesc& a, const WorldDesc& b, d
   }
   if (c.Count("objects", a.objects.size(), b.objects.size())) {
     for (size_t i = 0; i < a.objects.size(); ++i) {
-      c.Object("objects[" + std::to_string(i) + "]", a.objects[i], b.objects[i]);
+      const std::string f = "objects[" + std::to_string(i) + "]";
+      c.Object(f, a.objects[i], b.objects[i]);
+      c.Rows(f, a, b, ElementIndex::Object(static_cast<int>(i)));
     }
   }
   if (c.Count("robots", a.robots.size(), b.robots.size())) {
     for (size_t i = 0; i < a.robots.size(); ++i) {
       const std::string f = "robots[" + std::to_string(i) + "]";
       c.Text(f + ".name", a.robots[i].name, b.robots[i].name);
-      c.Robot(f, a.robots[i], b.robots[i]);
+      c.Robot(f, a, b, static_cast<int>(i));
     }
   }
-  c.Settings(a.settings, b.settings);
+  c.Rows("settings", a, b, ElementIndex::Settings());
   c.Exact("preserved_simulation_xml", a.preserved_simulation_xml, b.preserved_simulation_xml,
           std::to_string(a.preserved_simulation_xml.size()),
           std::to_string(b.preserved_simulation_xml.size()));

@@ -9,6 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/model/element.h"
+#include "core/model/params.h"
+
 namespace lamina::core {
 
 namespace {
@@ -24,13 +27,45 @@ ordered_json Vector(const Vec3& v) {
   return ordered_json::array({v.x(), v.y(), v.z()});
 }
 
-ordered_json SimParamsJson(const BodySimParams& params) {
-  return {{"padding", params.padding},
-          {"preshrink", PreshrinkName(params.preshrink)},
-          {"kRestitution", Number(params.surface.restitution)},
-          {"kFriction", Number(params.surface.friction)},
-          {"kStiffness", Number(params.surface.stiffness)},
-          {"kDamping", Number(params.surface.damping)}};
+// a row's value: a bool, a choice's name, an integer, a number or an array of numbers
+ordered_json RowJson(const ParamSpec& spec, const ParamValue& value) {
+  if (value.size() != 1 || spec.type == ParamType::kVector) {
+    ordered_json array = ordered_json::array();
+    for (double x : value) array.push_back(Number(x));
+    return array;
+  }
+  switch (spec.type) {
+    case ParamType::kBool:
+      return value[0] != 0.0;
+    case ParamType::kChoice:
+      return FormatParamValue(spec, value);
+    case ParamType::kInteger:
+      return static_cast<long long>(value[0]);
+    default:
+      return Number(value[0]);
+  }
+}
+
+// the rows in `rows` of `element`, keyed by the row key
+ordered_json RowsJson(const WorldDesc& world, const ElementIndex& element,
+                      const std::vector<const ParamSpec*>& rows) {
+  ordered_json out = ordered_json::object();
+  for (const ParamSpec* spec : rows)
+    out[std::string(spec->key)] = RowJson(*spec, spec->get(world, element));
+  return out;
+}
+
+bool IsBodyRow(const ParamSpec* spec) {
+  return spec->AppliesTo(ElementKind::kTerrain);
+}
+
+// the rows of elements of `kind` that are (or are not) a body's padding and surface rows
+std::vector<const ParamSpec*> Rows(ElementKind kind, bool body) {
+  std::vector<const ParamSpec*> rows;
+  for (const ParamSpec* spec : ParamsOf(kind)) {
+    if (IsBodyRow(spec) == body) rows.push_back(spec);
+  }
+  return rows;
 }
 
 ordered_json TerrainJson(const WorldDesc& world, int index) {
@@ -39,23 +74,45 @@ ordered_json TerrainJson(const WorldDesc& world, int index) {
           {"name", terrain.name},
           {"file", terrain.geometry.path},
           {"triangles", terrain.geometry.triangle_count()},
-          {"simulation", SimParamsJson(terrain.sim)}};
+          {"simulation",
+           RowsJson(world, ElementIndex::Terrain(index), Rows(ElementKind::kTerrain, true))}};
 }
 
 ordered_json ObjectJson(const WorldDesc& world, int index) {
   const RigidObjectDesc& object = world.objects[index];
-  return {{"id", world.ObjectId(index)},
-          {"name", object.name},
-          {"file", object.geometry.path},
-          {"triangles", object.geometry.triangle_count()},
-          {"mass", object.mass},
-          {"com", Vector(object.com)},
-          {"inertia_diagonal", Vector(object.inertia.diagonal())},
-          {"position", Vector(object.pose.translation())},
-          {"simulation", SimParamsJson(object.sim)},
-          {"initial_velocity",
-           {{"linear", Vector(object.initial_velocity.linear)},
-            {"angular", Vector(object.initial_velocity.angular)}}}};
+  const ElementIndex element = ElementIndex::Object(index);
+  ordered_json out = {{"id", world.ObjectId(index)},
+                      {"name", object.name},
+                      {"file", object.geometry.path},
+                      {"triangles", object.geometry.triangle_count()},
+                      {"position", Vector(object.pose.translation())}};
+  out.update(RowsJson(world, element, Rows(ElementKind::kObject, false)));
+  out["simulation"] = RowsJson(world, element, Rows(ElementKind::kObject, true));
+  return out;
+}
+
+ordered_json LinksJson(const WorldDesc& world, int index) {
+  const RobotDesc& robot = world.robots[index];
+  ordered_json links = ordered_json::array();
+  for (int i = 0; i < robot.dof(); ++i) {
+    const ElementIndex element = ElementIndex::Link(index, i);
+    ordered_json link = {{"name", robot.links[i].name}, {"parent", robot.links[i].parent}};
+    link.update(RowsJson(world, element, Rows(ElementKind::kLink, false)));
+    link["simulation"] = RowsJson(world, element, Rows(ElementKind::kLink, true));
+    links.push_back(link);
+  }
+  return links;
+}
+
+ordered_json DriversJson(const WorldDesc& world, int index) {
+  const RobotDesc& robot = world.robots[index];
+  ordered_json drivers = ordered_json::array();
+  for (int i = 0; i < static_cast<int>(robot.drivers.size()); ++i) {
+    ordered_json driver = {{"name", robot.drivers[i].name}};
+    driver.update(RowsJson(world, ElementIndex::Driver(index, i), ParamsOf(ElementKind::kDriver)));
+    drivers.push_back(driver);
+  }
+  return drivers;
 }
 
 ordered_json RobotJson(const WorldDesc& world, int index) {
@@ -64,37 +121,21 @@ ordered_json RobotJson(const WorldDesc& world, int index) {
   for (const JointDesc& joint : robot.joints) ++joint_counts[JointTypeName(joint.type)];
   int links_with_geometry = 0;
   for (const LinkDesc& link : robot.links) links_with_geometry += link.has_geometry() ? 1 : 0;
-  ordered_json links = ordered_json::array();
-  for (const LinkDesc& link : robot.links) {
-    links.push_back({{"name", link.name},
-                     {"parent", link.parent},
-                     {"mass", link.mass},
-                     {"simulation", SimParamsJson(link.sim)}});
-  }
-  return {{"id", world.RobotId(index)},
-          {"name", robot.name},
-          {"file", robot.source_path},
-          {"dofs", robot.dof()},
-          {"links", robot.dof()},
-          {"links_with_geometry", links_with_geometry},
-          {"drivers", robot.drivers.size()},
-          {"joints", joint_counts},
-          {"total_mass", robot.TotalMass()},
-          {"triangles", RobotTriangleCount(robot)},
-          {"self_collision_pairs", robot.SelfCollisionPairs().size()},
-          {"link_details", links}};
-}
-
-ordered_json SettingsJson(const SimSettings& s) {
-  return {{"timestep", s.timestep},
-          {"gravity", Vector(s.gravity)},
-          {"ERP", s.erp},
-          {"CFM", s.cfm},
-          {"maxContacts", s.max_contacts},
-          {"adaptiveTimeStepping", s.adaptive_time_stepping},
-          {"rigidObjectCollisions", s.rigid_object_collisions},
-          {"robotSelfCollisions", s.robot_self_collisions},
-          {"robotRobotCollisions", s.robot_robot_collisions}};
+  ordered_json out = {{"id", world.RobotId(index)},
+                      {"name", robot.name},
+                      {"file", robot.source_path},
+                      {"dofs", robot.dof()},
+                      {"links", robot.dof()},
+                      {"links_with_geometry", links_with_geometry},
+                      {"drivers", robot.drivers.size()},
+                      {"joints", joint_counts},
+                      {"total_mass", robot.TotalMass()},
+                      {"triangles", RobotTriangleCount(robot)},
+                      {"self_collision_pairs", robot.SelfCollisionPairs().size()}};
+  out.update(RowsJson(world, ElementIndex::Robot(index), ParamsOf(ElementKind::kRobot)));
+  out["link_details"] = LinksJson(world, index);
+  out["driver_details"] = DriversJson(world, index);
+  return out;
 }
 
 // six significant digits for people; the JSON keeps full precision
@@ -105,11 +146,44 @@ std::string Text(double value) {
   return buffer;
 }
 
-std::string SimParamsText(const BodySimParams& p) {
-  return "padding " + Text(p.padding) + " m, preshrink " + PreshrinkName(p.preshrink) +
-         ", kRestitution " + Text(p.surface.restitution) + ", kFriction " +
-         Text(p.surface.friction) + ", kStiffness " + Text(p.surface.stiffness) + ", kDamping " +
-         Text(p.surface.damping);
+// "key value unit": numbers with Text, several as "(a, b, c)", bools and choices by name
+std::string RowText(const ParamSpec& spec, const ParamValue& value) {
+  std::string text = std::string(spec.key) + " ";
+  if (spec.type == ParamType::kBool || spec.type == ParamType::kChoice) {
+    return text + FormatParamValue(spec, value);
+  }
+  for (size_t i = 0; i < value.size(); ++i) {
+    text += (i == 0 ? (value.size() > 1 ? "(" : "") : ", ") + Text(value[i]);
+  }
+  if (value.size() > 1) text += ")";
+  return spec.unit.empty() ? text : text + " " + std::string(spec.unit);
+}
+
+std::string RowsText(const WorldDesc& world, const ElementIndex& element,
+                     const std::vector<const ParamSpec*>& rows) {
+  std::string text;
+  for (const ParamSpec* spec : rows) {
+    text += (text.empty() ? "" : ", ") + RowText(*spec, spec->get(world, element));
+  }
+  return text;
+}
+
+std::string RobotText(const WorldDesc& world, int index) {
+  const RobotDesc& r = world.robots[index];
+  std::ostringstream out;
+  out << "robot " << world.RobotId(index) << " '" << r.name << "': " << r.dof() << " DOFs ("
+      << r.dof() << " links), " << r.drivers.size() << " drivers, total mass "
+      << Text(r.TotalMass()) << " kg, " << RobotTriangleCount(r) << " triangles\n";
+  if (r.dof() > 0) {
+    out << "  link 0: "
+        << RowsText(world, ElementIndex::Link(index, 0), Rows(ElementKind::kLink, true)) << "\n";
+  }
+  for (int i = 0; i < static_cast<int>(r.drivers.size()); ++i) {
+    out << "  driver " << i << " '" << r.drivers[i].name
+        << "': " << RowsText(world, ElementIndex::Driver(index, i), ParamsOf(ElementKind::kDriver))
+        << "\n";
+  }
+  return out.str();
 }
 
 }  // namespace
@@ -136,7 +210,7 @@ std::string WorldSummaryJson(const WorldDesc& world) {
   for (int i = 0; i < static_cast<int>(world.robots.size()); ++i) {
     out["robots"].push_back(RobotJson(world, i));
   }
-  out["simulation"] = SettingsJson(world.settings);
+  out["simulation"] = RowsJson(world, ElementIndex::Settings(), ParamsOf(ElementKind::kSettings));
   return out.dump(2) + "\n";
 }
 
@@ -146,30 +220,20 @@ std::string WorldSummaryText(const WorldDesc& world) {
   for (int i = 0; i < static_cast<int>(world.terrains.size()); ++i) {
     const TerrainDesc& t = world.terrains[i];
     out << "terrain " << world.TerrainId(i) << " '" << t.name
-        << "': " << t.geometry.triangle_count() << " triangles\n  " << SimParamsText(t.sim) << "\n";
+        << "': " << t.geometry.triangle_count() << " triangles\n  "
+        << RowsText(world, ElementIndex::Terrain(i), Rows(ElementKind::kTerrain, true)) << "\n";
   }
   for (int i = 0; i < static_cast<int>(world.objects.size()); ++i) {
     const RigidObjectDesc& o = world.objects[i];
     const Vec3 p = o.pose.translation();
     out << "object " << world.ObjectId(i) << " '" << o.name << "': mass " << Text(o.mass) << " kg, "
         << o.geometry.triangle_count() << " triangles, at (" << Text(p.x()) << ", " << Text(p.y())
-        << ", " << Text(p.z()) << ")\n  " << SimParamsText(o.sim) << "\n";
+        << ", " << Text(p.z()) << ")\n  "
+        << RowsText(world, ElementIndex::Object(i), Rows(ElementKind::kObject, true)) << "\n";
   }
-  for (int i = 0; i < static_cast<int>(world.robots.size()); ++i) {
-    const RobotDesc& r = world.robots[i];
-    out << "robot " << world.RobotId(i) << " '" << r.name << "': " << r.dof() << " DOFs ("
-        << r.dof() << " links), " << r.drivers.size() << " drivers, total mass "
-        << Text(r.TotalMass()) << " kg, " << RobotTriangleCount(r) << " triangles\n";
-    if (r.dof() > 0) out << "  link 0: " << SimParamsText(r.links[0].sim) << "\n";
-  }
-  const SimSettings& s = world.settings;
-  out << "simulation: timestep " << Text(s.timestep) << " s, gravity (" << Text(s.gravity.x())
-      << ", " << Text(s.gravity.y()) << ", " << Text(s.gravity.z()) << "), ERP " << Text(s.erp)
-      << ", CFM " << Text(s.cfm) << ", maxContacts " << s.max_contacts << ", adaptive "
-      << (s.adaptive_time_stepping ? "on" : "off") << ", object collisions "
-      << (s.rigid_object_collisions ? "on" : "off") << ", self collisions "
-      << (s.robot_self_collisions ? "on" : "off") << ", robot-robot collisions "
-      << (s.robot_robot_collisions ? "on" : "off") << "\n";
+  for (int i = 0; i < static_cast<int>(world.robots.size()); ++i) out << RobotText(world, i);
+  out << "simulation: "
+      << RowsText(world, ElementIndex::Settings(), ParamsOf(ElementKind::kSettings)) << "\n";
   return out.str();
 }
 

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 // What `lamina-headless info` prints: every terrain, object and robot with its counts, mass
-// and the simulation parameters in force, as text or as JSON.
+// and the simulation parameters in force, as text or as JSON. The tunables are the parameter
+// table's rows (core/model/params.h), keyed by the row key: the settings, each body's padding
+// and surface, objects' mass properties and initial conditions, links' mass properties and
+// joint limits, drivers' gains, limits and friction.
 #pragma once
 
 #include <string>

@@ -343,15 +343,16 @@ TEST(RigidObjectFileErrorsTest, EveryBadValueIsReportedInOneRun) {
   EXPECT_FALSE(load.ok);
   EXPECT_THAT(load.Errors(),
               ElementsAre(path + ":2: error: 'geomscale' expects 1 or 3 values, got 2",
-                          path + ":3: error: 'T' rotation is not orthonormal with determinant 1",
+                          path + ":3: error: 'T' (transform) must be 12 finite numbers: a rotation "
+                                 "(column-major) and a translation, got '1 0 0 0 1 0 0 0 2 0 0 0'",
                           path + ":13: error: 'velocity' must be finite, got 'inf'",
                           path + ":4: error: 'mass' must be >= 0, got '-2'",
-                          path + ":5: error: 'nan' is not a number",
+                          path + ":5: error: 'nan' in 'com' is not a number",
                           path + ":6: error: 'inertia' expects 3 or 9 values, got 4",
-                          path + ":7: error: 'kFriction' must be >= 0, got '-1'",
                           path + ":8: error: 'kRestitution' must be in [0, 1], got '1.5'",
-                          path + ":9: error: 'kStiffness' must be > 0, got '0'",
-                          path + ":10: error: 'kDamping' must be >= 0, got '-3'",
+                          path + ":7: error: 'kFriction' must be >= 0 (inf allowed), got '-1'",
+                          path + ":9: error: 'kStiffness' must be > 0 (inf allowed), got '0'",
+                          path + ":10: error: 'kDamping' must be >= 0 (inf allowed), got '-3'",
                           path + ":11: error: 'autoMass' must be in [0, 1], got '2'"));
   EXPECT_THAT(load.Warnings(), ElementsAre(path + ":12: warning: unknown key 'colour' ignored"));
   // bad values leave the defaults in place
@@ -376,11 +377,12 @@ TEST(RigidObjectFileErrorsTest, BadInertiaAndScale) {
   const std::string asymmetric =
       WriteScratchFile("asymmetric.obj", mesh + "inertia 1 0.5 0  0 1 0  0 0 1\n");
   EXPECT_THAT(ObjectLoad(asymmetric).Errors(),
-              ElementsAre(asymmetric + ":2: error: 'inertia' must be a symmetric matrix"));
+              ElementsAre(asymmetric + ":2: error: 'inertia' must be a symmetric positive "
+                                       "semi-definite 3x3 matrix, got '1 0.5 0 0 1 0 0 0 1'"));
   const std::string indefinite = WriteScratchFile("indefinite.obj", mesh + "inertia 1 -2 1\n");
   EXPECT_THAT(ObjectLoad(indefinite).Errors(),
-              ElementsAre(indefinite + ":2: error: 'inertia' must be positive semi-definite, "
-                                       "smallest eigenvalue is '-2'"));
+              ElementsAre(indefinite + ":2: error: 'inertia' must be a symmetric positive "
+                                       "semi-definite 3x3 matrix, got '1 -2 1'"));
   const std::string zero_scale = WriteScratchFile("zero_scale.obj", mesh + "geomscale 1 0 1\n");
   EXPECT_THAT(ObjectLoad(zero_scale).Errors(),
               ElementsAre(zero_scale + ":2: error: 'geomscale' must be > 0, got '0'"));

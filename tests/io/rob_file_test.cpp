@@ -486,9 +486,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"UnknownKeyword",
                 "qmaxx 1 1\n",
                 {"4: error: unknown keyword 'qmaxx' (did you mean 'qmax'?)"}},
-        BadCase{"BadNumber", "mass 1 abc\n", {"4: error: 'abc' is not a number"}},
-        BadCase{"NaN", "mass nan 1\n", {"4: error: 'nan' is not a number"}},
-        BadCase{"NegativeMass", "mass 1 -2\n", {"4: error: mass must be >= 0, got '-2'"}},
+        BadCase{"BadNumber", "mass 1 abc\n", {"4: error: 'abc' in 'mass' is not a number"}},
+        BadCase{"NaN", "mass nan 1\n", {"4: error: 'nan' in 'mass' is not a number"}},
+        BadCase{"NegativeMass", "mass 1 -2\n", {"4: error: mass of link 1 must be >= 0, got '-2'"}},
         BadCase{"WrongLength",
                 "qmin 0 0 0\n",
                 {"4: error: 'qmin' expects 2 values (one per link), got 3"}},
@@ -521,20 +521,27 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"LinkInTwoJoints",
                 "joint normal 0\njoint normal 1\njoint weld 1\n",
                 {"6: error: link 1 is already part of the joint on line 5"}},
-        BadCase{"InertiaNotSymmetric",
-                "inertia 1 2 0 0 1 0 0 0 1  1 0 0 0 1 0 0 0 1\n",
-                {"4: error: inertia of link 0 is not symmetric"}},
-        BadCase{"InertiaNegativeMoment",
-                "inertiadiag 1 -1 1  1 1 1\n",
-                {"4: error: inertia of link 0 has a negative principal moment (-1)"}},
-        BadCase{"QminAboveQmax",
-                "qmin 1 0\nqmax 0 0\n",
-                {"4: error: qmin of link 0 (1) is greater than qmax (0)"}},
+        BadCase{
+            "InertiaNotSymmetric",
+            "inertia 1 2 0 0 1 0 0 0 1  1 0 0 0 1 0 0 0 1\n",
+            {"4: error: inertia of link 0 must be a symmetric positive semi-definite 3x3 matrix, "
+             "got '1 2 0 0 1 0 0 0 1'"}},
+        BadCase{
+            "InertiaNegativeMoment",
+            "inertiadiag 1 -1 1  1 1 1\n",
+            {"4: error: inertia of link 0 must be a symmetric positive semi-definite 3x3 matrix, "
+             "got '1 0 0 0 -1 0 0 0 1'"}},
+        BadCase{
+            "QminAboveQmax",
+            "qmin 1 0\nqmax 0 0\n",
+            {"4: error: jointLimits of link 0 (qmin, qmax) must be 2 numbers min <= max (inf and "
+             "-inf allowed), got '1 0'"}},
         BadCase{"ServoCount",
                 "servoP 1 2 3\n",
                 {"4: error: 'servoP' expects 2 values (one per driver), got 3"}},
-        BadCase{
-            "ServoNegative", "servoP 1 -5\n", {"4: error: 'servoP' values must be >= 0, got '-5'"}},
+        BadCase{"ServoNegative",
+                "servoP 1 -5\n",
+                {"4: error: 'servoP' of driver 1 must be >= 0, got '-5'"}},
         BadCase{"DriverNamesCount",
                 "drivers \"x\"\n",
                 {"4: error: 'drivers' expects 2 names (one per driver), got 1"}},
@@ -598,9 +605,9 @@ TEST(RobFile, ReportsEveryProblemOfAFileInOneRun) {
   auto loaded = Load(path);
   EXPECT_FALSE(loaded->ok);
   EXPECT_THAT(loaded->diagnostics.Messages(Severity::kError),
-              ElementsAre(path + ":6: error: 'fast' is not a number",
+              ElementsAre(path + ":6: error: 'fast' in 'velmax' is not a number",
                           path + ":9: error: unknown keyword 'velmaks' (did you mean 'velmax'?)",
-                          path + ":7: error: mass must be >= 0, got '-1'",
+                          path + ":7: error: mass of link 1 must be >= 0, got '-1'",
                           path + ":10: error: 'joint' link 3 is out of range (robot has 3 links)",
                           path + ":14: error: 'servoD' expects 2 values (one per driver), got 1"));
 }

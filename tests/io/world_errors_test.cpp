@@ -87,9 +87,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadWorld{"restitution_range",
                  ObjectWith("", "<physics kRestitution=\"1.5\"/>"),
                  {"4: error: <physics>: attribute 'kRestitution' must be in [0, 1], got '1.5'"}},
-        BadWorld{"negative_friction",
-                 ObjectWith("", "<physics kFriction=\"-0.1\"/>"),
-                 {"4: error: <physics>: attribute 'kFriction' must be >= 0, got '-0.1'"}},
+        BadWorld{
+            "negative_friction",
+            ObjectWith("", "<physics kFriction=\"-0.1\"/>"),
+            {"4: error: <physics>: attribute 'kFriction' must be >= 0 (inf allowed), got '-0.1'"}},
         BadWorld{"zero_scale",
                  "<world>\n  <terrain file=\"" + WorldsPath("klampt/terrains/cube.off") +
                      "\" scale=\"0\"/>\n</world>\n",
@@ -108,14 +109,17 @@ INSTANTIATE_TEST_SUITE_P(
                  "<world>\n  <terrain file=\"" + WorldsPath("klampt/terrains/cube.off") +
                      "\"/>\n  <simulation>\n    <terrain index=\"0\"><geometry preshrink=\"3\"/>"
                      "</terrain>\n  </simulation>\n</world>\n",
-                 {"4: error: <geometry>: attribute 'preshrink' must be 0, 1 or 2, got '3'"}},
-        BadWorld{"bad_timestep",
-                 "<world>\n  <simulation>\n    <globals timestep=\"-0.001\" maxContacts=\"0\" "
-                 "adaptiveTimeStepping=\"maybe\"/>\n  </simulation>\n</world>\n",
-                 {"3: error: <globals>: attribute 'timestep' must be > 0, got '-0.001'",
-                  "3: error: <globals>: attribute 'maxContacts' must be >= 1, got '0'",
-                  "3: error: <globals>: attribute 'adaptiveTimeStepping' expects 0 or 1, got "
-                  "'maybe'"}},
+                 {"4: error: <geometry>: attribute 'preshrink' must be none, copy or in-place, got "
+                  "'3'"}},
+        BadWorld{
+            "bad_timestep",
+            "<world>\n  <simulation>\n    <globals timestep=\"-0.001\" maxContacts=\"0\" "
+            "adaptiveTimeStepping=\"maybe\"/>\n  </simulation>\n</world>\n",
+            {"3: error: <globals>: attribute 'timestep' must be > 0, got '-0.001'",
+             "3: error: <globals>: attribute 'maxContacts' must be a whole number in [1, 1e+06], "
+             "got '0'",
+             "3: error: <globals>: attribute 'adaptiveTimeStepping' must be true or false (1 "
+             "or 0), got 'maybe'"}},
         BadWorld{"config_size",
                  "<world>\n  <robot name=\"arm\" file=\"" +
                      WorldsPath("klampt/robots/planar3R.rob") +
