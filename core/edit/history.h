@@ -78,6 +78,9 @@ class History {
   bool CanRedo() const { return !redo_.empty(); }
   int undo_count() const { return static_cast<int>(undo_.size()); }
   int redo_count() const { return static_cast<int>(redo_.size()); }
+  /// The entries, oldest first (Undo applies undo_stack().back(), Redo redo_stack().back()).
+  const std::vector<HistoryEntry>& undo_stack() const { return undo_; }
+  const std::vector<HistoryEntry>& redo_stack() const { return redo_; }
   /// Label of the entry Undo / Redo would apply ("" when none).
   std::string UndoLabel() const { return undo_.empty() ? "" : undo_.back().label; }
   std::string RedoLabel() const { return redo_.empty() ? "" : redo_.back().label; }
