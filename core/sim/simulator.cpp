@@ -1191,6 +1191,12 @@ void Simulator::EnableContactFeedback(int a, int b) {
   feedback_.insert(at, entry);
 }
 
+std::vector<std::pair<int, int>> Simulator::ContactFeedbackPairs() const {
+  std::vector<std::pair<int, int>> pairs;
+  for (const ContactFeedbackRecord& r : feedback_) pairs.emplace_back(r.first, r.second);
+  return pairs;
+}
+
 void Simulator::EnableContactFeedbackAll() {
   for (int a = 0; a < body_count(); ++a) {
     if (!bodies_[a].geometry) continue;
