@@ -12,7 +12,9 @@
 // a new revision. The Make* functions build edits from the document's current values.
 //
 // Unlike MuJoCo's mjSpec edits (which change the spec in place and need mj_recompile), an edit
-// here is data: History keeps it, LiveWorld carries it into a running simulation.
+// here is data: History keeps it, LiveWorld carries it into a running simulation. Klamp't has no
+// edit layer (its GUIs set values on the world or the simulator directly). Values are in the
+// table's units (SI; poses and twists in Klamp't's component order, see ParamType).
 #pragma once
 
 #include <optional>

@@ -12,7 +12,8 @@
 // The edits reach their target through EditTarget: a document alone (the Do/Undo/Redo taking
 // a WorldDocument), or LiveWorld, which also carries them into a running simulation and keeps
 // simulation states with each entry (HistoryEntry::record). ImGui's IsItemActivated /
-// IsItemDeactivatedAfterEdit are the natural BeginGroup / EndGroup of a widget.
+// IsItemDeactivatedAfterEdit are the natural BeginGroup / EndGroup of a widget. Klamp't's GUIs
+// have no undo; MuJoCo Studio keeps whole spec copies per step (this keeps edits and inverses).
 #pragma once
 
 #include <any>

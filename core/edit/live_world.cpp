@@ -120,29 +120,31 @@ bool LiveWorld::ApplyStructural(const Edit& edit, std::string* error) {
   return true;
 }
 
-// a new simulation of the document that takes over the old one's state (see the header)
+// a new simulation of the document that takes over the old one's state (see the header); the
+// old one stays until the new one is complete
 void LiveWorld::RebuildSimulator(const WorldLayout& old_layout) {
-  auto simulator = std::make_unique<Simulator>(document_.desc());
-  std::swap(simulator, simulator_);
-  Simulator& old = *simulator;
+  auto fresh = std::make_unique<Simulator>(document_.desc());
+  Simulator& old = *simulator_;
   const WorldLayout layout = LayoutOf(document_.desc());
   const std::vector<int> id_map = MapWorldIds(old_layout, layout);
-  simulator_->SetSolver(old.solver());
-  simulator_->SetSleeping(old.sleeping());
-  CarryBodyFlags(&old, id_map);
+  fresh->SetSolver(old.solver());
+  fresh->SetSleeping(old.sleeping());
+  CarryBodyFlags(&old, id_map, fresh.get());
   for (const auto& [a, b] : CarryPairs(id_map, old.ContactFeedbackPairs())) {
-    simulator_->EnableContactFeedback(a, b);
+    fresh->EnableContactFeedback(a, b);
   }
-  if (old.halted()) return;
-  simulator_->SetState(CarryState(old_layout, old.GetState(), layout, simulator_->GetState()));
+  if (!old.halted()) {
+    fresh->SetState(CarryState(old_layout, old.GetState(), layout, fresh->GetState()));
+  }
+  simulator_ = std::move(fresh);
 }
 
 // which bodies were disabled or kinematic (SimBody::Enable, EnableDynamics)
-void LiveWorld::CarryBodyFlags(Simulator* old, const std::vector<int>& id_map) {
+void LiveWorld::CarryBodyFlags(Simulator* old, const std::vector<int>& id_map, Simulator* fresh) {
   for (int id = 0; id < old->body_count() && id < static_cast<int>(id_map.size()); ++id) {
     if (id_map[id] < 0) continue;
     SimBody was = old->body(id);
-    SimBody now = simulator_->body(id_map[id]);
+    SimBody now = fresh->body(id_map[id]);
     if (!was.enabled()) now.Enable(false);
     if (now.dynamics_enabled() && !was.dynamics_enabled()) now.EnableDynamics(false);
   }

@@ -32,6 +32,8 @@
 //
 // Saving saves the document: gains and friction edited live through ParamEdit are in it (the
 // simulator's controllers read the drivers of its own description, RobotController::ViewOf).
+// Klamp't's SimTest edits the simulator and saves robot files from it; here the simulator is
+// never the source of what is saved.
 #pragma once
 
 #include <memory>
@@ -107,7 +109,7 @@ class LiveWorld {
   bool SetInitialState(const InitialState& state, std::string* error);
   bool ApplyStructural(const Edit& edit, std::string* error);
   void RebuildSimulator(const WorldLayout& old_layout);
-  void CarryBodyFlags(Simulator* old, const std::vector<int>& id_map);
+  void CarryBodyFlags(Simulator* old, const std::vector<int>& id_map, Simulator* fresh);
   void TakeBack(const Edit& edit, Revision revision);
   void BeginStep(HistoryEntry& entry, HistoryStep step);
   void EndStep(HistoryEntry& entry, HistoryStep step);
