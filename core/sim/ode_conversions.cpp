@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "core/sim/ode_conversions.h"
 
+#include <algorithm>
+
 namespace lamina::core {
 
 Vec3 ToVec3(const dReal* v) {
@@ -24,6 +26,11 @@ void WriteBodyState(dBodyID body, const BodyState& state) {
   const dQuaternion q = {state.orientation.w(), state.orientation.x(), state.orientation.y(),
                          state.orientation.z()};
   dBodySetQuaternion(body, q);
+  // dBodySetQuaternion normalizes, which can change the last bit of a quaternion a step left
+  // normalized: write ODE's own q exactly and derive its rotation as a step does (dQtoR)
+  dReal* stored = const_cast<dReal*>(dBodyGetQuaternion(body));
+  std::copy(q, q + 4, stored);
+  dQtoR(stored, const_cast<dReal*>(dBodyGetRotation(body)));
   dBodySetLinearVel(body, state.linear_velocity.x(), state.linear_velocity.y(),
                     state.linear_velocity.z());
   dBodySetAngularVel(body, state.angular_velocity.x(), state.angular_velocity.y(),

@@ -17,6 +17,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/contact/collision_geometry.h"
@@ -253,6 +254,8 @@ class Simulator {
   void EnableContactFeedbackAll();
   void EnableContactFeedback(int a, int b);
   const FeedbackRecorder& feedback() const { return feedback_; }
+  /// The pairs (first < second) whose feedback is recorded, sorted.
+  std::vector<std::pair<int, int>> ContactFeedbackPairs() const;
   /// Contacts acted between a and b in the last sub-step.
   bool InContact(int a, int b = -1) const;
   /// During the last Simulate call: some sub-step had contact / had none / interpenetrated.

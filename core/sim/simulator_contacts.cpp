@@ -66,6 +66,12 @@ void Simulator::EnableContactFeedback(int a, int b) {
   feedback_.Enable(a, b);
 }
 
+std::vector<std::pair<int, int>> Simulator::ContactFeedbackPairs() const {
+  std::vector<std::pair<int, int>> pairs;
+  for (const ContactFeedbackRecord& r : feedback_.records()) pairs.emplace_back(r.first, r.second);
+  return pairs;
+}
+
 void Simulator::EnableContactFeedbackAll() {
   for (int a = 0; a < body_count(); ++a) {
     if (!bodies_[a].geometry) continue;
