@@ -145,6 +145,7 @@ void LiveWorld::CarryBodyFlags(Simulator* old, const std::vector<int>& id_map, S
     if (id_map[id] < 0) continue;
     SimBody was = old->body(id);
     SimBody now = fresh->body(id_map[id]);
+    if (!was.valid() || !now.valid()) continue;  // a robot's own id is not a body
     if (!was.enabled()) now.Enable(false);
     if (now.dynamics_enabled() && !was.dynamics_enabled()) now.EnableDynamics(false);
   }
