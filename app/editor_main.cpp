@@ -66,6 +66,10 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({1, 2, 4}));
   app.add_flag("--fxaa", options.fxaa,
                "FXAA instead of multisampling (about as cheap as --msaa 1 on software GL)");
+  app.add_option("--set", options.sets,
+                 "PATH=VALUE: set what an access path names in the world before it opens, e.g. "
+                 "'objects[box].kFriction=0.1' (repeatable; docs/access-paths.md)")
+      ->allow_extra_args(false);
   app.add_option("--bench-frames", options.bench_frames,
                  "time this many frames (vsync off) and print the median frame times")
       ->check(CLI::NonNegativeNumber);

@@ -217,33 +217,31 @@ bool SendMotionFile(const std::string& path, lamina::core::Simulator* simulator)
   return true;
 }
 
-// simulates for the duration, writing the log when asked; false when the log cannot be written
+// simulates for the duration in one call, writing the log from a step observer when asked (its
+// writing is left out of the wall time); false when the log cannot be written
 bool Advance(const RunOptions& options, Simulator* simulator, lamina::core::RunTiming* timing) {
   std::ofstream log;
+  std::optional<lamina::core::SimLogWriter> writer;
   if (!options.log.empty()) {
     log.open(options.log);
     if (!log) {
       std::cerr << "lamina-headless: cannot write " << options.log << "\n";
       return false;
     }
-    log << lamina::core::SimLogHeader(*simulator) << lamina::core::SimLogRow(*simulator);
+    writer.emplace(&log, *simulator, kLogInterval);
   }
+  const int observer = writer ? simulator->AddStepObserver([&](const lamina::core::StepEvent& e) {
+    (*writer)(e);
+  })
+                              : -1;
   const auto start = std::chrono::steady_clock::now();
-  if (!log.is_open()) {
-    simulator->Simulate(options.duration);
-    timing->wall_time =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return true;
-  }
-  // log rows are written outside the timed simulation
-  for (double t = 0.0; t < options.duration - 1e-12; t += kLogInterval) {
-    const auto chunk_start = std::chrono::steady_clock::now();
-    const double dt = std::min(kLogInterval, options.duration - t);
-    const bool ok = simulator->Simulate(dt) != lamina::core::StepStatus::kError;
-    timing->wall_time +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - chunk_start).count();
-    log << lamina::core::SimLogRow(*simulator);
-    if (!ok) break;
+  simulator->Simulate(options.duration);
+  timing->wall_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  simulator->RemoveStepObserver(observer);
+  if (writer) {
+    timing->wall_time -= writer->seconds_spent();
+    writer->Finish(*simulator);
   }
   return true;
 }

@@ -203,10 +203,22 @@ ParamValue GetJointLimits(const WorldDesc& world, const ElementIndex& element) {
   return {link.q_min, link.q_max};
 }
 
+// A non-affine driver's limits are its link's (a .rob copies qmin/qmax, velmin/velmax and
+// ±torquemax of the link into it): the two setters below keep both copies equal.
+bool FollowsLink(const DriverDesc& driver) {
+  return driver.type != DriverType::kAffine && !driver.links.empty();
+}
+
 void SetJointLimits(WorldDesc* world, const ElementIndex& element, const ParamValue& value) {
-  LinkDesc& link = world->robots[element.index].links[element.sub];
+  RobotDesc& robot = world->robots[element.index];
+  LinkDesc& link = robot.links[element.sub];
   link.q_min = value[0];
   link.q_max = value[1];
+  for (DriverDesc& driver : robot.drivers) {
+    if (!FollowsLink(driver) || driver.links.front() != element.sub) continue;
+    driver.q_min = value[0];
+    driver.q_max = value[1];
+  }
 }
 
 DriverDesc& Driver(WorldDesc* world, const ElementIndex& element) {
@@ -233,6 +245,29 @@ template <auto Min, auto Max>
 void SetDriverRange(WorldDesc* world, const ElementIndex& element, const ParamValue& value) {
   Driver(world, element).*Min = value[0];
   Driver(world, element).*Max = value[1];
+}
+
+LinkDesc* FollowedLink(WorldDesc* world, const ElementIndex& element) {
+  const DriverDesc& driver = Driver(world, element);
+  if (!FollowsLink(driver)) return nullptr;
+  const int link = driver.links.front();
+  std::vector<LinkDesc>& links = world->robots[element.index].links;
+  return link >= 0 && link < static_cast<int>(links.size()) ? &links[link] : nullptr;
+}
+
+void SetVelocityLimits(WorldDesc* world, const ElementIndex& element, const ParamValue& value) {
+  SetDriverRange<&DriverDesc::velocity_min, &DriverDesc::velocity_max>(world, element, value);
+  if (LinkDesc* link = FollowedLink(world, element)) {
+    link->velocity_min = value[0];
+    link->velocity_max = value[1];
+  }
+}
+
+void SetTorqueLimits(WorldDesc* world, const ElementIndex& element, const ParamValue& value) {
+  SetDriverRange<&DriverDesc::torque_min, &DriverDesc::torque_max>(world, element, value);
+  if (LinkDesc* link = FollowedLink(world, element)) {
+    link->torque_max = std::max(-value[0], value[1]);
+  }
 }
 
 // ---- the rows -----------------------------------------------------------------------------
@@ -381,12 +416,10 @@ const ParamSpec kParams[] = {
      SetDriver<&DriverDesc::servo_d>},
     {"torqueLimits", "torque limits", "N·m or N", kDriver, T::kRange, kNoMin, kNoMax, false, true,
      false, A::kLive, true, "the driver's effort is clamped into [min, max]", kNoChoices,
-     GetDriverRange<&DriverDesc::torque_min, &DriverDesc::torque_max>,
-     SetDriverRange<&DriverDesc::torque_min, &DriverDesc::torque_max>},
+     GetDriverRange<&DriverDesc::torque_min, &DriverDesc::torque_max>, SetTorqueLimits},
     {"velocityLimits", "velocity limits", "rad/s or m/s", kDriver, T::kRange, kNoMin, kNoMax, false,
      true, false, A::kLive, true, "the driver's rate range", kNoChoices,
-     GetDriverRange<&DriverDesc::velocity_min, &DriverDesc::velocity_max>,
-     SetDriverRange<&DriverDesc::velocity_min, &DriverDesc::velocity_max>},
+     GetDriverRange<&DriverDesc::velocity_min, &DriverDesc::velocity_max>, SetVelocityLimits},
     {"dryFriction", "dry friction", "N·m or N", kDriver, T::kReal, 0, kNoMax, false, false, true,
      A::kLive, true, "Coulomb friction of the driven joint", kNoChoices,
      GetDriver<&DriverDesc::dry_friction>, SetDriver<&DriverDesc::dry_friction>},

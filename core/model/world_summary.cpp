@@ -196,6 +196,10 @@ int RobotTriangleCount(const RobotDesc& robot) {
   return triangles;
 }
 
+std::string ParamsJson(const WorldDesc& world, const ElementIndex& element) {
+  return RowsJson(world, element, ParamsOf(element.kind)).dump();
+}
+
 std::string WorldSummaryJson(const WorldDesc& world) {
   ordered_json out = {{"name", world.name}, {"file", world.source_path}};
   out["terrains"] = ordered_json::array();

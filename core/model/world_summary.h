@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include "core/model/element.h"
 #include "core/model/world_desc.h"
 
 namespace lamina::core {
@@ -16,6 +17,10 @@ namespace lamina::core {
 std::string WorldSummaryText(const WorldDesc& world);
 /// The same facts as a JSON document (infinite values as the strings "inf" / "-inf").
 std::string WorldSummaryJson(const WorldDesc& world);
+
+/// Every table row of `element` as a JSON object keyed by row key (the form `info --json` uses;
+/// `run --json` reports the settings with it).
+std::string ParamsJson(const WorldDesc& world, const ElementIndex& element);
 
 /// Triangles of all of a robot's link geometry.
 int RobotTriangleCount(const RobotDesc& robot);

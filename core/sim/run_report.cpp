@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/model/world_summary.h"
+
 namespace lamina::core {
 
 namespace {
@@ -46,6 +48,7 @@ std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
       {"status", StepStatusName(stats.worst_status)},
       {"rollbacks", stats.rollbacks},
       {"instability_corrections", stats.instability_corrections},
+      {"unreliable_steps", stats.unreliable_steps},
       {"max_penetration", stats.max_penetration},
       {"max_contacts", stats.max_contacts_in_step},
       {"mean_contacts",
@@ -53,6 +56,8 @@ std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
       {"time_split", TimeSplit(stats.time_split)},
       {"sleeping_objects", simulator.SleepingObjectCount()}};
   if (!stats.error.empty()) out["error"] = stats.error;
+  // every settings row in force, the internal constants included (core/model/params.h)
+  out["settings"] = ordered_json::parse(ParamsJson(simulator.world(), ElementIndex::Settings()));
   ordered_json objects = ordered_json::array();
   for (int i = 0; i < simulator.object_count(); ++i) {
     const Pose pose = simulator.GetObjectPose(i);

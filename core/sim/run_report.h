@@ -13,8 +13,9 @@ struct RunTiming {
 };
 
 /// One JSON object: time, wall_time, steps, status, rollbacks, instability_corrections,
-/// max_penetration, max_contacts, real_time_factor and `objects` (name, position, quaternion
-/// [w,x,y,z], velocity, angular_velocity of every rigid object's frame).
+/// unreliable_steps, max_penetration, max_contacts, real_time_factor, `settings` (every settings
+/// row of the parameter table in force, keyed by row key) and `objects` (name, position,
+/// quaternion [w,x,y,z], velocity, angular_velocity of every rigid object's frame).
 std::string RunReportJson(const Simulator& simulator, const RunTiming& timing);
 /// The same as readable text.
 std::string RunReportText(const Simulator& simulator, const RunTiming& timing);

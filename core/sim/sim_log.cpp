@@ -2,6 +2,7 @@
 #include "core/sim/sim_log.h"
 
 #include "core/number_text.h"
+#include "core/sim/sim_timing.h"
 
 namespace lamina::core {
 
@@ -56,6 +57,30 @@ std::string SimLogRow(const Simulator& simulator) {
     row += ",";
   }
   return row + "\n";
+}
+
+SimLogWriter::SimLogWriter(std::ostream* out, const Simulator& simulator, double interval)
+    : out_(out), interval_(interval) {
+  *out_ << SimLogHeader(simulator);
+  Write(simulator);
+}
+
+void SimLogWriter::operator()(const StepEvent& event) {
+  // a mark reached within a part per million of the interval counts (accumulated step times)
+  if (event.time < next_ - 1e-6 * interval_) return;
+  Write(event.simulator);
+}
+
+void SimLogWriter::Finish(const Simulator& simulator) {
+  if (simulator.time() > last_row_) Write(simulator);
+}
+
+void SimLogWriter::Write(const Simulator& simulator) {
+  Stopwatch watch;
+  *out_ << SimLogRow(simulator);
+  last_row_ = simulator.time();
+  while (next_ <= last_row_ + 1e-6 * interval_) next_ += interval_;
+  seconds_ += watch.Lap();
 }
 
 }  // namespace lamina::core

@@ -2,11 +2,13 @@
 // `lamina-headless run`: the JSON report of a real run, the CSV log, and bad options.
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "core/model/params.h"
 #include "tests/common/test_support.h"
 
 namespace lamina {
@@ -96,11 +98,28 @@ TEST(RunCommandTest, LogFollowsKlamptColumns) {
             "block_100kg_x,block_100kg_y,block_100kg_z,block_100kg_rz,block_100kg_ry,"
             "block_100kg_rx,block_100kg_dx,block_100kg_dy,block_100kg_dz,block_100kg_wz,"
             "block_100kg_wy,block_100kg_wx,,");
-  int rows = 0;
+  std::vector<double> times;
   std::string line;
-  while (std::getline(in, line)) ++rows;
-  // the initial state and one row every 0.01 s
-  EXPECT_EQ(rows, 6);
+  while (std::getline(in, line)) times.push_back(std::stod(line.substr(0, line.find(','))));
+  // the initial state and one row every 0.01 s (written by a step observer in one run)
+  ASSERT_EQ(times.size(), 6u);
+  for (size_t i = 0; i < times.size(); ++i) EXPECT_NEAR(times[i], 0.01 * i, 1e-12);
+}
+
+TEST(RunCommandTest, JsonReportsEverySettingInForce) {
+  const CommandResult result = RunHeadless(
+      "run --duration 0.01 --json --set settings.frictionAnchorGain=0.3 " +
+      test::WorldsPath("klampt/simulation_test_worlds/heavyblocktest.xml"));
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json report = nlohmann::json::parse(result.out);
+  const nlohmann::json& settings = report.at("settings");
+  for (const core::ParamSpec* spec : core::ParamsOf(core::ElementKind::kSettings)) {
+    EXPECT_TRUE(settings.contains(std::string(spec->key))) << spec->key;
+  }
+  EXPECT_EQ(settings.at("frictionAnchorGain"), 0.3);
+  EXPECT_EQ(settings.at("solver"), "step");
+  EXPECT_EQ(settings.at("minimumAdaptiveTimeStep"), 1e-6);
+  EXPECT_EQ(report.at("unreliable_steps"), 0);
 }
 
 TEST(RunCommandTest, BadSolverIsAUsageError) {

@@ -149,29 +149,12 @@ ParamValue OtherValue(const ParamSpec& spec, const ParamValue& current) {
   return current;
 }
 
-// what else an edit changes on reload: a .rob copies a non-affine driver's limits from its link
-// (q from qmin/qmax, velocity from velmin/velmax, torque from torquemax), so the copy on the
-// other side of that link, which the edit left as it was, comes back as the file says
-std::vector<std::string> DerivedFields(const core::WorldDesc& world, const ParamSpec& spec,
-                                       const ElementIndex& element) {
-  std::vector<std::string> fields;
-  if (element.kind != ElementKind::kLink && element.kind != ElementKind::kDriver) return fields;
-  const std::string robot = "robots[" + std::to_string(element.index) + "]";
-  const std::vector<core::DriverDesc>& drivers = world.robots[element.index].drivers;
-  for (size_t d = 0; d < drivers.size(); ++d) {
-    if (drivers[d].type == core::DriverType::kAffine) continue;
-    const int link = drivers[d].links.front();
-    const std::string driver = robot + ".drivers[" + std::to_string(d) + "]";
-    const std::string of_link = robot + ".links[" + std::to_string(link) + "]";
-    if (spec.key == "jointLimits" && element.sub == link) {
-      fields.insert(fields.end(), {driver + ".q_min", driver + ".q_max"});
-    } else if (spec.key == "velocityLimits" && element.sub == static_cast<int>(d)) {
-      fields.insert(fields.end(), {of_link + ".velocity_min", of_link + ".velocity_max"});
-    } else if (spec.key == "torqueLimits" && element.sub == static_cast<int>(d)) {
-      fields.push_back(of_link + ".torque_max");
-    }
-  }
-  return fields;
+// what else an edit changes: nothing. A .rob copies a non-affine driver's limits from its link (q
+// from qmin/qmax, velocity from velmin/velmax, torque from torquemax), and the table's setters
+// keep both copies equal, so an edit of either comes back on both sides exactly as set.
+std::vector<std::string> DerivedFields(const core::WorldDesc&, const ParamSpec&,
+                                       const ElementIndex&) {
+  return {};
 }
 
 bool IsDerived(const std::string& difference, const std::vector<std::string>& fields) {

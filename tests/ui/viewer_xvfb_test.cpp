@@ -167,6 +167,23 @@ TEST(ViewerUnderXvfb, AMissingWorldIsReportedNotACrash) {
       << ReadText("missing.log");
 }
 
+TEST(ViewerUnderXvfb, SetChangesTheWorldAndARefusedSetSaysWhy) {
+  if (!HaveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const std::string world = kWorlds + "/klampt/simulation_test_worlds/bounce_test.xml";
+  EXPECT_EQ(RunUnderXvfb(kBin + "/lamina " + world +
+                             " --frames 2 --no-ui --set 'settings.gravity=0,0,-1.62'",
+                         "set.log"),
+            0)
+      << ReadText("set.log");
+  EXPECT_EQ(RunUnderXvfb(kBin + "/lamina " + world +
+                             " --frames 2 --set 'objects[0].kRestitution=1.5'",
+                         "bad_set.log"),
+            1);
+  EXPECT_NE(ReadText("bad_set.log").find("--set 'objects[0].kRestitution=1.5'"),
+            std::string::npos)
+      << ReadText("bad_set.log");
+}
+
 TEST(ViewerOptions, BadOptionsAreRejectedBeforeAnyWindowOpens) {
   EXPECT_EQ(RunCommand(kBin + "/lamina --overlay sparkles", "bad_overlay.log"), 2);
   EXPECT_NE(ReadText("bad_overlay.log").find("--overlay"), std::string::npos);

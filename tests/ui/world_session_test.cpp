@@ -127,6 +127,25 @@ TEST(WorldSession, AFailedLoadKeepsThePreviousWorldAndSaysWhy) {
   EXPECT_NE(session.load_messages().FormatAll().find("/no/such/world.xml"), std::string::npos);
 }
 
+// lamina --set: the arguments change the loaded description before its simulation is built; a
+// refused one fails the load and names the argument
+TEST(WorldSession, SetArgumentsApplyToTheDescriptionBeforeTheSimulationIsBuilt) {
+  WorldSession session;
+  ASSERT_TRUE(session.Load(kBounce, {"settings.gravity=0,0,-1.62", "objects[0].kFriction=0.25"}))
+      << session.load_messages().FormatAll();
+  EXPECT_EQ(session.description().settings.gravity, core::Vec3(0, 0, -1.62));
+  EXPECT_EQ(session.simulator()->world().objects[0].sim.surface.friction, 0.25);
+  const double z = session.poses().objects[0].translation().z();
+  session.AdvanceTime(0.1);  // free fall on the moon: g t² / 2
+  EXPECT_NEAR(z - session.poses().objects[0].translation().z(), 0.5 * 1.62 * 0.01, 1e-4);
+  EXPECT_FALSE(session.Load(kBounce, {"objects[0].kRestitution=1.5"}));
+  EXPECT_NE(session.load_messages().FormatAll().find(
+                "--set 'objects[0].kRestitution=1.5': objects[0].kRestitution must be in [0, 1]"),
+            std::string::npos)
+      << session.load_messages().FormatAll();
+  EXPECT_EQ(session.description().settings.gravity, core::Vec3(0, 0, -1.62));  // kept
+}
+
 TEST(WorldSession, NothingLoadedIsHarmless) {
   WorldSession session;
   EXPECT_FALSE(session.Load(std::string(LAMINA_WORLDS_DIR)));  // a directory

@@ -92,7 +92,7 @@ class Viewer {
   bool Start();
   void RunFrame(double wall_seconds);
   void ApplyRequests();
-  void OpenWorld(const std::string& path);
+  void OpenWorld(const std::string& path, const std::vector<std::string>& sets = {});
   double AdvanceSimulation(double wall_seconds);
   void DrawView(int width, int height);
   void HandleMouse(int width, int height);
@@ -141,7 +141,7 @@ bool Viewer::Start() {
   state_.sleep = options_.sleep;
   state_.world_files = WorldFilesUnder(options_.worlds_dir);
   state_.worlds_dir = options_.worlds_dir;
-  OpenWorld(options_.world_path);
+  OpenWorld(options_.world_path, options_.sets);
   first_world_failed_ = !session_.loaded();
   if (session_.loaded() && options_.selected_id < session_.description().IdCount()) {
     state_.selected_id = options_.selected_id;
@@ -150,8 +150,8 @@ bool Viewer::Start() {
   return true;
 }
 
-void Viewer::OpenWorld(const std::string& path) {
-  const bool ok = session_.Load(path);
+void Viewer::OpenWorld(const std::string& path, const std::vector<std::string>& sets) {
+  const bool ok = session_.Load(path, sets);
   std::cerr << session_.load_messages().FormatAll();
   if (!ok) {
     state_.message = "cannot open " + path;
@@ -160,8 +160,10 @@ void Viewer::OpenWorld(const std::string& path) {
     return;
   }
   window_.SetTitle("Lamina - " + session_.description().name);
-  session_.SetSolver(state_.solver);
-  session_.SetSleeping(state_.sleep);
+  // the panel shows the world's solver and sleeping (--sleep turns sleeping on for every world)
+  state_.solver = session_.simulator()->solver().type;
+  if (state_.sleep) session_.SetSleeping(true);
+  state_.sleep = session_.simulator()->sleeping();
   state_.open_path_input = path;
   state_.selected_id = state_.hovered_id = -1;
   state_.message = "opened " + session_.path();

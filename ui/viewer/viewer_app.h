@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/render/overlay_options.h"
 
@@ -24,6 +25,8 @@ struct ViewerOptions {
   bool show_panels = true;
   bool paused = false;
   bool sleep = false;  ///< idle objects sleep (core::Simulator::SetSleeping)
+  /// --set PATH=VALUE arguments applied to the first world's description (access paths)
+  std::vector<std::string> sets;
   /// Multisampling of the 3D view (1, 2 or 4); 0 = automatic: FXAA on software GL (llvmpipe,
   /// where 4x multisampling costs 40 ms a frame at 1280x720), 4x multisampling on a GPU.
   int samples = 0;

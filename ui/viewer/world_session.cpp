@@ -5,13 +5,32 @@
 #include <filesystem>
 
 #include "core/io/world_file.h"
+#include "core/model/access_path.h"
 
 namespace lamina::ui {
 
 WorldSession::WorldSession() = default;
 WorldSession::~WorldSession() = default;
 
-bool WorldSession::Load(const std::string& requested_path) {
+namespace {
+
+// the --set arguments on a loaded description; false with an error naming the argument
+bool ApplySets(const std::string& path, const std::vector<std::string>& sets,
+               core::Diagnostics* diagnostics, core::WorldDesc* world) {
+  for (const std::string& set : sets) {
+    std::string target, value, error;
+    if (!core::SplitAssignment(set, &target, &value, &error) ||
+        !core::SetPathText(world, target, value, &error)) {
+      diagnostics->Error({path, 0}, "--set '" + set + "': " + error);
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+bool WorldSession::Load(const std::string& requested_path, const std::vector<std::string>& sets) {
   std::error_code path_error;
   std::string path = std::filesystem::weakly_canonical(requested_path, path_error).string();
   if (path_error || path.empty()) path = requested_path;
@@ -23,7 +42,8 @@ bool WorldSession::Load(const std::string& requested_path) {
   try {
     if (!std::filesystem::is_regular_file(path)) {
       diagnostics.Error({path, 0}, "no such file");
-    } else if (core::LoadWorldFile(path, context, &world) && !diagnostics.HasErrors()) {
+    } else if (core::LoadWorldFile(path, context, &world) && !diagnostics.HasErrors() &&
+               ApplySets(path, sets, &diagnostics, &world)) {
       simulator = std::make_unique<core::Simulator>(world);
       simulator->EnableContactFeedbackAll();
     }

@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/diagnostics.h"
 #include "core/model/world_desc.h"
@@ -23,7 +24,9 @@ class WorldSession {
 
   /// Loads `path` and builds its simulation (contact feedback on, for the overlays). False when
   /// it fails; the previous world (if any) stays and `load_messages()` says why.
-  bool Load(const std::string& path);
+  /// `sets` are --set PATH=VALUE arguments applied to the loaded description first (access
+  /// paths, docs/access-paths.md); a refused one fails the load, naming it.
+  bool Load(const std::string& path, const std::vector<std::string>& sets = {});
   bool loaded() const { return simulator_ != nullptr; }
 
   /// Advances the simulation by `steps` physics steps; the simulated seconds it took.
