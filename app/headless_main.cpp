@@ -2,6 +2,7 @@
 // lamina-headless: the command-line tool (no window). Argument parsing and wiring only.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -16,6 +17,7 @@
 #include "core/io/world_file.h"
 #include "core/model/access_path.h"
 #include "core/model/world_summary.h"
+#include "core/number_text.h"
 #include "core/sim/run_report.h"
 #include "core/sim/sim_access.h"
 #include "core/sim/sim_log.h"
@@ -191,12 +193,11 @@ bool ParseSolver(const std::string& text, lamina::core::SolverSettings* solver) 
   solver->type = lamina::core::SolverType::kQuickStep;
   if (text.size() == 5) return true;
   if (text[5] != ':') return false;
-  try {
-    solver->quick_step_iterations = std::stoi(text.substr(6));
-  } catch (const std::exception&) {
-    return false;
-  }
-  return solver->quick_step_iterations > 0;
+  // the whole rest is the count, in the table's range ("quick:5x" is not 5)
+  const lamina::core::ParamSpec& iterations =
+      *lamina::core::FindParam("quickStepIterations", lamina::core::ElementKind::kSettings);
+  return lamina::core::ParseInt(text.substr(6), &solver->quick_step_iterations) &&
+         lamina::core::ParamAccepts(iterations, {double(solver->quick_step_iterations)}, 1);
 }
 
 // Klamp't SimTest sends a motion file to robot 0
@@ -230,10 +231,9 @@ bool Advance(const RunOptions& options, Simulator* simulator, lamina::core::RunT
     }
     writer.emplace(&log, *simulator, kLogInterval);
   }
-  const int observer = writer ? simulator->AddStepObserver([&](const lamina::core::StepEvent& e) {
-    (*writer)(e);
-  })
-                              : -1;
+  const int observer =
+      writer ? simulator->AddStepObserver([&](const lamina::core::StepEvent& e) { (*writer)(e); })
+             : -1;
   const auto start = std::chrono::steady_clock::now();
   simulator->Simulate(options.duration);
   timing->wall_time =
@@ -260,10 +260,14 @@ int Report(const RunOptions& options, const Simulator& simulator,
 }
 
 int RunSimulation(const RunOptions& options) {
+  if (!std::isfinite(options.duration) || !std::isfinite(options.step)) {
+    std::cerr << "lamina-headless: --duration and --dt must be finite\n";
+    return 2;
+  }
   lamina::core::SolverSettings solver;
   if (!options.solver.empty() && !ParseSolver(options.solver, &solver)) {
-    std::cerr << "lamina-headless: --solver must be step, quick or quick:N, got '" << options.solver
-              << "'\n";
+    std::cerr << "lamina-headless: --solver must be step, quick or quick:N (N in [1, 1e6]), got '"
+              << options.solver << "'\n";
     return 2;
   }
   WorldDesc world;

@@ -316,9 +316,8 @@ bool RobotController::ControlDue(double time) const {
   return next_control_time_ <= time + kControlTimeTolerance;
 }
 
-void RobotController::SetGravityCompensation(bool on, const Vec3& gravity) {
+void RobotController::SetGravityCompensation(bool on) {
   gravity_compensation_ = on;
-  gravity_ = gravity;
 }
 
 bool RobotController::Update(double time, const VecX& sensed_q, const VecX& sensed_dq) {

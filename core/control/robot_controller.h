@@ -133,9 +133,11 @@ class RobotController {
   /// ends at the first update after a motion command, as in Klamp't). Schedules the next run
   /// one period later. False on bad sizes/NaN.
   bool Update(double time, const VecX& sensed_q, const VecX& sensed_dq);
-  /// Gravity compensation feed-forward (off by default; ignored for floating-base robots).
-  void SetGravityCompensation(bool on, const Vec3& gravity = Vec3(0, 0, -9.8));
-  /// The gravity the compensation balances (the simulator keeps it equal to the world's).
+  /// Gravity compensation feed-forward (off by default; ignored for floating-base robots) for
+  /// the gravity of SetGravity.
+  void SetGravityCompensation(bool on);
+  /// The gravity the compensation balances: (0, 0, -9.8) m/s² until set; the simulator keeps it
+  /// equal to the world's.
   void SetGravity(const Vec3& gravity) { gravity_ = gravity; }
   bool gravity_compensation() const { return gravity_compensation_; }
 

@@ -114,6 +114,23 @@ bool RenameEdit::Apply(WorldDocument* document, std::string* error) const {
 
 // ---- adding, removing and moving objects ----------------------------------------------------
 
+namespace {
+
+// every table row of an object, as the readers check it: a world that saves also loads
+std::optional<std::string> CheckObjectRows(const RigidObjectDesc& object) {
+  WorldDesc alone;
+  alone.objects.push_back(object);
+  const ElementIndex element = ElementIndex::Object(0);
+  for (const ParamSpec* spec : ParamsOf(ElementKind::kObject)) {
+    if (auto problem = CheckParamOn(alone, element, *spec, spec->get(alone, element))) {
+      return problem;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 RemoveObjectEdit AddObjectEdit::Inverse() const {
   return {object, index};
 }
@@ -128,6 +145,11 @@ bool AddObjectEdit::Apply(WorldDocument* document, std::string* error) const {
   if (index < 0 || index > count) {
     return Refuse(error, "add object " + Quoted(object.name) + ": index " + std::to_string(index) +
                              " is not in [0, " + std::to_string(count) + "]");
+  }
+  if (auto problem = CheckObjectRows(object)) {
+    // "objects[0].mass must be ..." of the lone copy: the row without the copy's index
+    return Refuse(error, "add object " + Quoted(object.name) + ": " +
+                             problem->substr(problem->find('.') + 1));
   }
   std::vector<RigidObjectDesc>& objects = DocumentAccess::desc(document).objects;
   objects.insert(objects.begin() + index, object);

@@ -21,7 +21,9 @@ class LiveWorld::Target final : public EditTarget {
 LiveWorld::LiveWorld(WorldDocument document)
     : document_(std::move(document)),
       simulator_(std::make_unique<Simulator>(document_.desc())),
-      target_(std::make_unique<Target>(this)) {}
+      target_(std::make_unique<Target>(this)) {
+  AttachObservers(simulator_.get());
+}
 
 LiveWorld::~LiveWorld() = default;
 
@@ -30,9 +32,27 @@ bool LiveWorld::Load(const std::string& path, Diagnostics& diagnostics) {
   if (!loaded.Load(path, diagnostics)) return false;
   auto simulator = std::make_unique<Simulator>(loaded.desc());
   document_ = std::move(loaded);
+  AttachObservers(simulator.get());
   simulator_ = std::move(simulator);
   history_.Clear();
   return true;
+}
+
+int LiveWorld::AddStepObserver(StepObserver observer) {
+  observers_.emplace_back(next_observer_, std::move(observer));
+  return next_observer_++;
+}
+
+void LiveWorld::RemoveStepObserver(int id) {
+  std::erase_if(observers_, [id](const auto& entry) { return entry.first == id; });
+}
+
+// one observer on each simulation that calls this world's observers, so that they outlive the
+// simulations structural edits replace
+void LiveWorld::AttachObservers(Simulator* simulator) {
+  simulator->AddStepObserver([this](const StepEvent& event) {
+    for (size_t i = 0; i < observers_.size(); ++i) observers_[i].second(event);
+  });
 }
 
 bool LiveWorld::Do(const Edit& edit, std::string* error) {
@@ -134,8 +154,11 @@ void LiveWorld::RebuildSimulator(const WorldLayout& old_layout) {
     fresh->EnableContactFeedback(a, b);
   }
   if (!old.halted()) {
-    fresh->SetState(CarryState(old_layout, old.GetState(), layout, fresh->GetState()));
+    std::vector<bool> moves(fresh->body_count());
+    for (int id = 0; id < fresh->body_count(); ++id) moves[id] = fresh->BodyMoves(id);
+    fresh->SetState(CarryState(old_layout, old.GetState(), layout, moves, fresh->GetState()));
   }
+  AttachObservers(fresh.get());
   simulator_ = std::move(fresh);
 }
 
@@ -147,6 +170,8 @@ void LiveWorld::CarryBodyFlags(Simulator* old, const std::vector<int>& id_map, S
     SimBody now = fresh->body(id_map[id]);
     if (!was.valid() || !now.valid()) continue;  // a robot's own id is not a body
     if (!was.enabled()) now.Enable(false);
+    // a kinematic target ends with the old simulation: its body is dynamic again
+    if (old->HasKinematicTarget(id)) continue;
     if (now.dynamics_enabled() && !was.dynamics_enabled()) now.EnableDynamics(false);
   }
 }
@@ -176,6 +201,9 @@ void LiveWorld::BeginStep(HistoryEntry& entry, HistoryStep step) {
 void LiveWorld::EndStep(HistoryEntry& entry, HistoryStep step) {
   StateRecord& record = std::any_cast<StateRecord&>(entry.record);
   if (step == HistoryStep::kDo) {
+    // an entry that grew (a slider drag) while the simulation ran cannot be undone by restoring
+    // the state from before its first edit: that would throw the simulated time away
+    if (record.applied.usable && !AtMark(record.applied)) record.unapplied.usable = false;
     record.applied = MarkNow();
     return;
   }

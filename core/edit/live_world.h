@@ -12,10 +12,11 @@
 //  * Rename, add, remove, move: a new Simulator is built from the document and takes over the
 //    running state by uid (CarryState: time, bodies, robots with their controllers, friction
 //    anchors, sleep), plus the solver and sleeping settings of the old one, its contact-feedback
-//    pairs and which bodies were disabled or kinematic, renumbered. A new object starts at its
-//    initial pose; statistics start from zero. A simulation stopped by an error is not carried:
-//    the new one starts at the initial state. This is MuJoCo's mj_recompile, made explicit.
-//    References to simulator() do not survive a structural edit (a new object).
+//    pairs and which bodies were disabled or kinematic, renumbered, and this world's step
+//    observers. A new object starts at its initial pose; statistics start from zero; a drag, a
+//    kinematic target (its body is dynamic again) and held wrenches end. A simulation stopped by an
+//    error is not carried: the new one starts at the initial state. This is MuJoCo's mj_recompile,
+//    made explicit. References to simulator() do not survive a structural edit (a new object).
 //
 // Exact undo. Every history entry keeps the simulation state (SimState and step count) on each
 // side of it: just before it was applied and just after. Undoing an entry while the simulation
@@ -82,6 +83,12 @@ class LiveWorld {
   void BeginGroup(std::string label) { history_.BeginGroup(std::move(label)); }
   void EndGroup() { history_.EndGroup(); }
 
+  /// `observer` is called after every accepted step of the running simulation, whichever it is:
+  /// it stays across the new simulations that structural edits and Load build (observers added
+  /// on simulator() directly do not). Not to be added or removed from inside an observer.
+  int AddStepObserver(StepObserver observer);
+  void RemoveStepObserver(int id);
+
   /// The simulation's current object poses and velocities and robot configurations and
   /// velocities, keyed by uid.
   InitialState CurrentState() const;
@@ -110,6 +117,7 @@ class LiveWorld {
   bool ApplyStructural(const Edit& edit, std::string* error);
   void RebuildSimulator(const WorldLayout& old_layout);
   void CarryBodyFlags(Simulator* old, const std::vector<int>& id_map, Simulator* fresh);
+  void AttachObservers(Simulator* simulator);
   void TakeBack(const Edit& edit, Revision revision);
   void BeginStep(HistoryEntry& entry, HistoryStep step);
   void EndStep(HistoryEntry& entry, HistoryStep step);
@@ -120,6 +128,8 @@ class LiveWorld {
   std::unique_ptr<Simulator> simulator_;
   History history_;
   std::unique_ptr<Target> target_;
+  std::vector<std::pair<int, StepObserver>> observers_;
+  int next_observer_ = 0;
   Mark pending_;                ///< the state when the current step began
   bool pending_exact_ = false;  ///< the current undo/redo restores the recorded state
 };

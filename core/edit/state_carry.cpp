@@ -50,17 +50,20 @@ int MapId(const std::vector<int>& id_map, int id) {
   return id >= 0 && id < static_cast<int>(id_map.size()) ? id_map[id] : -1;
 }
 
-std::vector<FrictionAnchor> CarryAnchors(const std::vector<int>& id_map, const WorldLayout& to,
+// the simulator orients a pair as FindPairContacts does: a is the lower id when that body moves
+// (has an ODE body), else the higher one
+std::vector<FrictionAnchor> CarryAnchors(const std::vector<int>& id_map,
+                                         const std::vector<bool>& moves,
                                          const std::vector<FrictionAnchor>& anchors) {
-  const int terrains = static_cast<int>(to.terrains.size());
   std::vector<FrictionAnchor> carried;
   for (FrictionAnchor anchor : anchors) {
     anchor.a = MapId(id_map, anchor.a);
     anchor.b = MapId(id_map, anchor.b);
     if (anchor.a < 0 || anchor.b < 0) continue;
-    // the simulator moves the lower id of a pair unless that is a (static) terrain
-    const bool flipped = anchor.b >= terrains && anchor.a > anchor.b;
-    carried.push_back(flipped ? Reversed(anchor) : anchor);
+    const int lower = std::min(anchor.a, anchor.b), upper = std::max(anchor.a, anchor.b);
+    const bool lower_moves = lower < static_cast<int>(moves.size()) && moves[lower];
+    const int moving = lower_moves ? lower : upper;
+    carried.push_back(anchor.a == moving ? anchor : Reversed(anchor));
   }
   SortAnchors(&carried);
   return carried;
@@ -101,13 +104,13 @@ std::vector<int> MapWorldIds(const WorldLayout& from, const WorldLayout& to) {
 }
 
 SimState CarryState(const WorldLayout& from, const SimState& state, const WorldLayout& to,
-                    SimState to_initial) {
+                    const std::vector<bool>& moves, SimState to_initial) {
   SimState out = std::move(to_initial);
   out.time = state.time;
   CarryByUid(from.objects, state.objects, to.objects, &out.objects);
   CarryByUid(from.objects, state.sleep, to.objects, &out.sleep);
   CarryByUid(from.robots, state.robots, to.robots, &out.robots);
-  out.anchors = CarryAnchors(MapWorldIds(from, to), to, state.anchors);
+  out.anchors = CarryAnchors(MapWorldIds(from, to), moves, state.anchors);
   return out;
 }
 

@@ -31,11 +31,12 @@ std::vector<int> MapWorldIds(const WorldLayout& from, const WorldLayout& to);
 /// The state of a simulation of `to` that continues `state` (of `from`): time; each object's
 /// body state and sleep, and each robot's bodies, joints and controller, moved to their new
 /// positions by uid; friction anchors renumbered (those of bodies that are gone dropped; a pair
-/// whose two dynamic bodies swapped order is re-expressed from the other side, as the simulator
-/// orients pairs: the lower id moves, unless it is a terrain). Elements new in `to` keep their
-/// state from `to_initial` (the new simulation's own start: initial pose and velocity, awake).
+/// whose bodies swapped order is re-expressed from the other side, as the simulator orients
+/// pairs: the lower id moves when it has an ODE body, `moves[id]` of `to`, else the higher one).
+/// Elements new in `to` keep their state from `to_initial` (the new simulation's own start:
+/// initial pose and velocity, awake).
 SimState CarryState(const WorldLayout& from, const SimState& state, const WorldLayout& to,
-                    SimState to_initial);
+                    const std::vector<bool>& moves, SimState to_initial);
 
 /// Contact-feedback pairs (world ids of `from`) renumbered for `to`; pairs of a body that is
 /// gone are dropped.

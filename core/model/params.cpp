@@ -600,11 +600,28 @@ std::optional<ParamValue> GetParam(const WorldDesc& world, const ElementIndex& e
   return spec.get(world, element);
 }
 
+std::optional<std::string> CheckParamOn(const WorldDesc& world, const ElementIndex& element,
+                                        const ParamSpec& spec, const ParamValue& value) {
+  if (auto problem = CheckParam(spec, value, ParamSize(spec, world, element))) {
+    return ElementPath(element) + "." + *problem;
+  }
+  // a non-affine driver's torque limits are ±torqueMax of its link: a .rob holds nothing else
+  if (spec.key == "torqueLimits" && element.kind == ElementKind::kDriver &&
+      world.robots[element.index].drivers[element.sub].type != DriverType::kAffine &&
+      value[0] != -value[1]) {
+    return ElementPath(element) +
+           ".torqueLimits must be -max,max for a driver that is not affine (its link's "
+           "torqueMax), got " +
+           FormatParamValue(spec, value);
+  }
+  return std::nullopt;
+}
+
 bool SetParam(WorldDesc* world, const ElementIndex& element, const ParamSpec& spec,
               const ParamValue& value, std::string* error) {
   if (!GetParam(*world, element, spec, error)) return false;
-  if (auto problem = CheckParam(spec, value, ParamSize(spec, *world, element))) {
-    if (error) *error = ElementPath(element) + "." + *problem;
+  if (auto problem = CheckParamOn(*world, element, spec, value)) {
+    if (error) *error = *problem;
     return false;
   }
   spec.set(world, element, value);

@@ -85,6 +85,10 @@ std::span<const ParamSpec> Params();
 const ParamSpec* FindParam(std::string_view key, ElementKind kind);
 /// Position of `spec` in Params() (stable within a build; undo records use it).
 int ParamId(const ParamSpec& spec);
+/// A body's padding and surface rows (they belong to terrains, objects and links alike).
+inline bool IsBodyParam(const ParamSpec& spec) {
+  return spec.AppliesTo(ElementKind::kTerrain);
+}
 /// Every row that belongs to elements of `kind`.
 std::vector<const ParamSpec*> ParamsOf(ElementKind kind);
 
@@ -105,6 +109,11 @@ std::optional<std::string> CheckParam(const ParamSpec& spec, const ParamValue& v
 /// belong to it (`error` says which, naming the path).
 std::optional<ParamValue> GetParam(const WorldDesc& world, const ElementIndex& element,
                                    const ParamSpec& spec, std::string* error = nullptr);
+/// CheckParam on `element` of `world`, plus what depends on the element: a non-affine driver's
+/// torque limits are symmetric (a .rob gives it ±torqueMax of its link). None when accepted;
+/// otherwise the message naming the path. The element must exist and have the row.
+std::optional<std::string> CheckParamOn(const WorldDesc& world, const ElementIndex& element,
+                                        const ParamSpec& spec, const ParamValue& value);
 /// Checks the element, the row and the value, then writes it; false with `error` naming the path
 /// ("objects[1].kRestitution: must be in [0, 1], got 1.5") and nothing changed otherwise.
 bool SetParam(WorldDesc* world, const ElementIndex& element, const ParamSpec& spec,

@@ -55,15 +55,11 @@ ordered_json RowsJson(const WorldDesc& world, const ElementIndex& element,
   return out;
 }
 
-bool IsBodyRow(const ParamSpec* spec) {
-  return spec->AppliesTo(ElementKind::kTerrain);
-}
-
 // the rows of elements of `kind` that are (or are not) a body's padding and surface rows
 std::vector<const ParamSpec*> Rows(ElementKind kind, bool body) {
   std::vector<const ParamSpec*> rows;
   for (const ParamSpec* spec : ParamsOf(kind)) {
-    if (IsBodyRow(spec) == body) rows.push_back(spec);
+    if (IsBodyParam(*spec) == body) rows.push_back(spec);
   }
   return rows;
 }

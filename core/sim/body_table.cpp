@@ -12,12 +12,6 @@ namespace lamina::core {
 
 namespace {
 
-void SetBodyRotation(dBodyID body, const Mat3& rotation) {
-  const Eigen::Quaterniond q(rotation);
-  const dQuaternion ode_q = {q.w(), q.x(), q.y(), q.z()};
-  dBodySetQuaternion(body, ode_q);
-}
-
 void AddForceAndTorque(dBodyID body, const Vec3& force, const Vec3& torque) {
   if (!force.isZero(0.0)) dBodyAddForce(body, force.x(), force.y(), force.z());
   if (!torque.isZero(0.0)) dBodyAddTorque(body, torque.x(), torque.y(), torque.z());
@@ -99,14 +93,18 @@ void BodyTable::ApplyForces() const {
   for (const BodyRecord& body : records_) {
     if (!body.moves_freely() || !dBodyIsEnabled(body.body)) continue;  // asleep
     AddForceAndTorque(body.body, body.force, body.torque);
-    if (!body.held.active) continue;
-    Vec3 torque = body.held.torque;
-    if (body.held.at_point) {
-      const Vec3 point = GetPose(body) * body.held.local_point;
-      torque += (point - ToVec3(dBodyGetPosition(body.body))).cross(body.held.force);
-    }
-    AddForceAndTorque(body.body, body.held.force, torque);
+    if (body.held.active) AddForceAndTorque(body.body, body.held.force, HeldTorque(body));
   }
+}
+
+Vec3 BodyTable::HeldTorque(const BodyRecord& body) const {
+  if (!body.held.active || body.body == nullptr) return Vec3::Zero();
+  Vec3 torque = body.held.torque;
+  if (body.held.at_point) {
+    const Vec3 point = GetPose(body) * body.held.local_point;
+    torque += (point - ToVec3(dBodyGetPosition(body.body))).cross(body.held.force);
+  }
+  return torque;
 }
 
 void BodyTable::ClearCallForces() {

@@ -48,6 +48,7 @@ struct BodyRecord {
   Vec3 force = Vec3::Zero();   ///< world, at the COM, for the sub-steps of the next Simulate
   Vec3 torque = Vec3::Zero();  ///< world
   HeldWrench held;             ///< lasts across Simulate calls
+  bool dragged = false;        ///< held by the mouse spring (kept awake, out of the energy check)
   Eigen::AlignedBox3d bounds;  ///< padded world bounds
   double energy = -1.0;        ///< kinetic energy after the last accepted step; < 0 unknown
 
@@ -90,6 +91,9 @@ class BodyTable {
   void ApplyForces() const;
   /// The one-call forces end (Simulate calls this at the end of every call).
   void ClearCallForces();
+  /// The torque of body's held wrench about its centre of mass (its own torque plus the moment
+  /// of a force held at a point), N·m, world.
+  Vec3 HeldTorque(const BodyRecord& body) const;
 
  private:
   std::vector<BodyRecord> records_;

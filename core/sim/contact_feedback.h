@@ -50,7 +50,7 @@ struct ContactFeedbackRecord {
 
 /// The contact feedback of a simulation: the records of the pairs that asked for it (sorted by
 /// (first, second)), and ODE's force readout of this step's contact joints, turned into the
-/// records' contacts after every accepted step. Queries never allocate.
+/// records' contacts after every accepted step. ForEach visits records without allocating.
 class FeedbackRecorder {
  public:
   bool empty() const { return records_.empty(); }

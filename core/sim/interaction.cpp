@@ -18,6 +18,16 @@ Mat3 Cross(const Vec3& r) {
 
 }  // namespace
 
+std::optional<std::string> CheckDragSpringSettings(const DragSpringSettings& settings) {
+  const auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
+  if (!positive(settings.frequency) || !positive(settings.max_force_per_weight) ||
+      !positive(settings.max_stretch) || !std::isfinite(settings.damping_ratio) ||
+      settings.damping_ratio < 0.0) {
+    return "a drag spring needs a frequency, force cap and stretch > 0 and a damping ratio >= 0";
+  }
+  return std::nullopt;
+}
+
 DragSpring MakeDragSpring(double mass, double gravity, const DragSpringSettings& settings) {
   const double omega = 2.0 * kPi * settings.frequency;
   const double g = gravity > 0.0 ? gravity : kStandardGravity;

@@ -30,6 +30,9 @@
 // stood still on its target for longer than its last move took: then it is released at rest).
 #pragma once
 
+#include <optional>
+#include <string>
+
 #include "core/math_types.h"
 #include "core/model/world_desc.h"
 #include "core/sim/ode_fwd.h"
@@ -42,6 +45,10 @@ struct DragSpringSettings {
   double max_force_per_weight = 20.0;  ///< force cap in multiples of m_eff |g| (g = 9.81 if 0)
   double max_stretch = 0.5;            ///< m: farthest the target is held from the grabbed point
 };
+
+/// None when every field is finite and positive (the damping ratio may be 0); otherwise what is
+/// wrong.
+std::optional<std::string> CheckDragSpringSettings(const DragSpringSettings& settings);
 
 /// The spring of a grab with effective mass `mass` (kg): stiffness (N/m), damping (N·s/m) and
 /// force cap (N) for gravity magnitude `gravity` (m/s²).

@@ -15,6 +15,12 @@ Mat3 ToMat3(const dReal* r) {
   return m;
 }
 
+void SetBodyRotation(dBodyID body, const Mat3& rotation) {
+  const Eigen::Quaterniond q(rotation);
+  const dQuaternion ode_q = {q.w(), q.x(), q.y(), q.z()};
+  dBodySetQuaternion(body, ode_q);
+}
+
 BodyState ReadBodyState(dBodyID body) {
   const dReal* q = dBodyGetQuaternion(body);
   return {ToVec3(dBodyGetPosition(body)), Eigen::Quaterniond(q[0], q[1], q[2], q[3]),

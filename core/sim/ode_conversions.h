@@ -13,6 +13,8 @@ namespace lamina::core {
 Vec3 ToVec3(const dReal* v);
 /// An ODE 3x4 rotation (dBodyGetRotation) as a Mat3.
 Mat3 ToMat3(const dReal* r);
+/// Sets the ODE body's orientation to `rotation` (through its quaternion, as ODE keeps it).
+void SetBodyRotation(dBodyID body, const Mat3& rotation);
 /// The body's state as ODE holds it (at its centre of mass).
 BodyState ReadBodyState(dBodyID body);
 /// Sets position, orientation and velocities exactly (bit for bit what ReadBodyState gave).

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/sim/ode_fwd.h"
+
 namespace lamina::core {
 
 namespace {
@@ -26,6 +28,14 @@ std::string FormatOdeMessage(int number, const char* format, va_list arguments) 
 void OnOdeMessage(int, const char*, va_list) {}
 
 }  // namespace
+
+void OdeWorldDeleter::operator()(dxWorld* world) const {
+  dWorldDestroy(world);
+}
+
+void OdeJointGroupDeleter::operator()(dxJointGroup* group) const {
+  dJointGroupDestroy(group);
+}
 
 void EnsureOdeInitialized() {
   static std::once_flag once;

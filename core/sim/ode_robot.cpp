@@ -26,9 +26,7 @@ constexpr double kMaxStopCorrectionSpeed = 0.5;
 constexpr double kMinimumLinkMass = 1e-3;
 
 void PlaceBody(dBodyID body, const Mat3& rotation, const Vec3& position) {
-  const Eigen::Quaterniond q(rotation);
-  const dQuaternion ode_q = {q.w(), q.x(), q.y(), q.z()};
-  dBodySetQuaternion(body, ode_q);
+  SetBodyRotation(body, rotation);
   dBodySetPosition(body, position.x(), position.y(), position.z());
 }
 

@@ -32,9 +32,9 @@ class SimLogWriter {
   void Write(const Simulator& simulator);
   std::ostream* out_;
   double interval_;
-  double next_ = 0.0;        ///< simulated time of the next row (s)
-  double last_row_ = 0.0;    ///< simulated time of the last row (s)
-  double seconds_ = 0.0;     ///< wall time spent writing (s)
+  double next_ = 0.0;      ///< simulated time of the next row (s)
+  double last_row_ = 0.0;  ///< simulated time of the last row (s)
+  double seconds_ = 0.0;   ///< wall time spent writing (s)
 };
 
 }  // namespace lamina::core

@@ -32,9 +32,11 @@ unsigned long QuickStepSeed(double time) {
 // a remainder within this fraction of a step counts as a whole step (Simulate)
 constexpr double kStepGridTolerance = 1e-6;
 
+// finite, with a unit quaternion (ODE's own are unit to rounding)
 bool IsFinite(const BodyState& body) {
   return body.com_position.allFinite() && body.orientation.coeffs().allFinite() &&
-         body.linear_velocity.allFinite() && body.angular_velocity.allFinite();
+         std::abs(body.orientation.norm() - 1.0) < 1e-6 && body.linear_velocity.allFinite() &&
+         body.angular_velocity.allFinite();
 }
 
 bool IsFinite(const SimState& state) {
@@ -54,12 +56,11 @@ Simulator::Simulator(const WorldDesc& world, const SolverSettings& solver) : Sim
 }
 
 Simulator::Simulator(const WorldDesc& world)
-    : world_(world),
-      ode_world_(nullptr, [](dxWorld* w) { dWorldDestroy(w); }),
-      contact_group_(nullptr, [](dxJointGroup* g) { dJointGroupDestroy(g); }),
-      drag_joint_(NewOdeDragJoint(), DeleteOdeDragJoint) {
+    : world_(world), drag_joint_(NewOdeDragJoint(), DeleteOdeDragJoint) {
   EnsureOdeInitialized();
   Build();
+  // made once: callers may hold references to them, and rebuilds keep their settings
+  for (RobotDesc& robot : world_.robots) controllers_.push_back(RobotController::ViewOf(&robot));
   ApplyInitialState();
 }
 
@@ -87,7 +88,6 @@ void Simulator::TearDown() {
   targets_.clear();
   drag_ = DragState{};
   robots_.clear();
-  controllers_.clear();
   robot_scratch_.clear();
   self_collision_pairs_.clear();
   bodies_.Reset(0);
@@ -100,11 +100,20 @@ void Simulator::TearDown() {
 
 // MuJoCo's mj_recompile: a new simulation of world_ in the state `state` (time, bodies, robots,
 // controllers, anchors, sleep); what is not state is kept too: statistics, observers, feedback
-// registrations, bodies disabled or kinematic, held wrenches, the drag and kinematic targets
+// registrations, the controllers and their settings, bodies disabled or kinematic, held wrenches,
+// the drag and kinematic targets
 void Simulator::RebuildWith(const SimState& state) {
-  const std::vector<BodyRecord> before(bodies_.begin(), bodies_.end());
   const std::map<int, KinematicTarget> targets = targets_;
   const DragState drag = drag_;
+  BuildKeepingFlags();
+  targets_ = targets;
+  drag_ = drag;
+  SetState(state);
+}
+
+// TearDown and Build, with every body's enabled and kinematic flags and held wrench kept
+void Simulator::BuildKeepingFlags() {
+  const std::vector<BodyRecord> before(bodies_.begin(), bodies_.end());
   TearDown();
   Build();
   for (int id = 0; id < bodies_.size() && id < static_cast<int>(before.size()); ++id) {
@@ -114,21 +123,52 @@ void Simulator::RebuildWith(const SimState& state) {
     if (body.enabled != before[id].enabled) SetBodyEnabled(id, before[id].enabled);
     if (body.body && body.dynamic != before[id].dynamic) SetBodyDynamic(id, before[id].dynamic);
   }
-  targets_ = targets;
-  drag_ = drag;
-  SetState(state);
 }
 
 void Simulator::Rebuild() {
   // a stopped simulation's bodies are garbage: it is rebuilt at the last state that was good
-  RebuildWith(halted_ ? last_good_ : GetState());
+  if (halted_) {
+    RebuildWith(last_good_);
+    return;
+  }
+  const std::vector<RobotPlacement> placements = RobotPlacements();
+  RebuildWith(GetState());
+  KeepRobotPlacements(placements);
+  if (drag_.active) RescaleDrag();
+}
+
+// every robot's configuration, velocity and link frames
+std::vector<Simulator::RobotPlacement> Simulator::RobotPlacements() const {
+  std::vector<RobotPlacement> placements;
+  for (int r = 0; r < robot_count(); ++r) {
+    RobotPlacement placement{GetRobotConfig(r), GetRobotVelocity(r), {}};
+    const int first = world_.RobotLinkId(r, 0);
+    for (int l = 0; l < robots_[r]->dof(); ++l) {
+      placement.frames.push_back(bodies_.GetPose(bodies_[first + l]));
+    }
+    placements.push_back(std::move(placement));
+  }
+  return placements;
+}
+
+// a robot whose bodies, restored after a rebuild, no longer put its links where they were (a
+// link's mass properties moved its body's centre of mass) or no longer read its configuration
+// (a joint built at another reference counts other turns) is placed again by its configuration
+void Simulator::KeepRobotPlacements(const std::vector<RobotPlacement>& placements) {
+  const std::vector<RobotPlacement> now = RobotPlacements();
+  for (int r = 0; r < robot_count() && r < static_cast<int>(placements.size()); ++r) {
+    bool moved = now[r].q != placements[r].q;
+    for (size_t l = 0; l < now[r].frames.size() && !moved; ++l) {
+      moved = !now[r].frames[l].isApprox(placements[r].frames[l], 1e-12);
+    }
+    if (!moved) continue;
+    SetRobotConfig(r, placements[r].q);
+    SetRobotVelocity(r, placements[r].dq);
+  }
 }
 
 void Simulator::Reset() {
-  if (halted_) {
-    TearDown();
-    Build();
-  }
+  if (halted_) BuildKeepingFlags();
   time_ = 0.0;
   statistics_ = SimStatistics();
   ClearInteraction();
@@ -142,8 +182,23 @@ int Simulator::AddStepObserver(StepObserver observer) {
   return next_observer_++;
 }
 
+// an observer removed while observers are called is only emptied then (DispatchStep erases it)
 void Simulator::RemoveStepObserver(int id) {
-  std::erase_if(observers_, [id](const auto& entry) { return entry.first == id; });
+  for (auto& [observer_id, observer] : observers_) {
+    if (observer_id == id) observer = nullptr;
+  }
+  if (!dispatching_) std::erase_if(observers_, [](const auto& entry) { return !entry.second; });
+}
+
+// by index: an observer may add or remove observers (one added now is called from the next step)
+void Simulator::DispatchStep(const StepEvent& event) {
+  dispatching_ = true;
+  const size_t count = observers_.size();
+  for (size_t i = 0; i < count; ++i) {
+    if (observers_[i].second) observers_[i].second(event);
+  }
+  dispatching_ = false;
+  std::erase_if(observers_, [](const auto& entry) { return !entry.second; });
 }
 
 // ---- state ------------------------------------------------------------------------------
@@ -169,7 +224,9 @@ void Simulator::CaptureBodyState(SimState* state, bool with_controllers) const {
 }
 
 void Simulator::SetState(const SimState& state) {
-  if (!IsFinite(state)) throw std::invalid_argument("SetState: the state is not finite");
+  if (!IsFinite(state)) {
+    throw std::invalid_argument("SetState: the state is not finite or has a non-unit quaternion");
+  }
   // ODE cannot be trusted after one of its errors: a stopped simulation is built anew
   if (halted_) {
     RebuildWith(state);
@@ -196,6 +253,9 @@ void Simulator::RestoreState(const SimState& state) {
 // ---- stepping ---------------------------------------------------------------------------
 
 StepStatus Simulator::Simulate(double dt) {
+  if (!std::isfinite(dt) || dt < 0.0) {
+    throw std::invalid_argument("Simulate: dt must be finite and >= 0, got " + std::to_string(dt));
+  }
   if (halted_) return StepStatus::kError;
   Stopwatch total;
   const SimTimeSplit before = statistics_.time_split;
@@ -372,7 +432,7 @@ StepStatus Simulator::AcceptStep(double step, StepProgress* progress) {
                         contacts_.pairs(),
                         feedback_};
   AccumulateStep(event, &statistics_);
-  for (const auto& [id, observer] : observers_) observer(event);
+  if (!observers_.empty()) DispatchStep(event);
   *progress = StepProgress{};
   return StatusOfStep(event.flags);
 }

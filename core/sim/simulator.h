@@ -9,8 +9,8 @@
 // stability, step_guard.h), the feedback recorder (contact_feedback.h) and sleep (sleep.h).
 // Every edit of a running simulation reaches it through one path (SetParam and the typed setters
 // built on it), and what a change of a body invalidates is decided by one rule (body_change.h).
-// Results do not depend on how Simulate is chunked: Simulate(0.01) once and Simulate(0.001) ten
-// times give bit-identical states.
+// Results do not depend on how Simulate is chunked into whole multiples of the step:
+// Simulate(0.01) once and Simulate(0.001) ten times give bit-identical states.
 #pragma once
 
 #include <map>
@@ -100,9 +100,12 @@ class Simulator {
   Simulator(const Simulator&) = delete;
   Simulator& operator=(const Simulator&) = delete;
 
-  /// Advances by `dt` seconds in sub-steps of at most the simulation step. A remainder within a
-  /// part per million of a step is taken as a whole step, so that the steps are the same however
-  /// the caller chunks its calls.
+  /// Advances by `dt` seconds (finite, >= 0; std::invalid_argument otherwise) in sub-steps of at
+  /// most the simulation step. The steps lie on the grid of whole steps: a remainder within a
+  /// part per million of a step is taken as a whole step, and one shorter than a part per million
+  /// of a step is dropped, so calls of whole multiples of the step take the same steps however
+  /// they are chunked (a call of 1.5 steps ends with a half step, and the next call's steps start
+  /// from there).
   StepStatus Simulate(double dt);
   double time() const { return time_; }
   /// Largest physics sub-step (s); throws std::invalid_argument for what the table refuses
@@ -136,11 +139,11 @@ class Simulator {
   /// The simulated world: the description it was built from with every edit since (surfaces,
   /// paddings, settings, drivers, joint limits); poses are the initial ones (see UpdateWorld).
   const WorldDesc& world() const { return world_; }
-  /// Klamp't's UpdateModel: writes the current state and every live edit into `world`, which
-  /// must have the same elements: object poses and velocities (as initial ones), robot
-  /// configurations and velocities, surfaces, paddings, drivers, joint limits, settings. An
-  /// editor never calls it on its document (runtime state enters a document only through an
-  /// explicit edit, core/edit).
+  /// Klamp't's UpdateModel: writes every row of the parameter table as the simulation has it
+  /// (every live edit) into `world`, which must have the same elements (std::invalid_argument
+  /// otherwise), and the current state as its initial conditions: object poses and velocities,
+  /// robot configurations and velocities. An editor never calls it on its document (runtime state
+  /// enters a document only through an explicit edit, core/edit).
   void UpdateWorld(WorldDesc* world) const;
 
   // ---- live edits: the rows of the parameter table (core/model/params.h) ------------------
@@ -165,12 +168,19 @@ class Simulator {
 
   // ---- step observers ---------------------------------------------------------------------
   /// `observer` is called after every accepted physics sub-step (step_observer.h); the id
-  /// removes it.
+  /// removes it. An observer may add or remove observers (an added one is called from the next
+  /// step); it must not step or edit the simulation, and an exception from it ends the Simulate
+  /// call.
   int AddStepObserver(StepObserver observer);
   void RemoveStepObserver(int id);
 
   /// Body by Klamp't world id (terrains, then objects, then robots and their links).
   SimBody body(int id) { return SimBody(this, id); }
+  /// Body `id` has an ODE body (it is dynamic or kinematic, not static); false for other ids.
+  bool BodyMoves(int id) const {
+    const BodyRecord* body = bodies_.Find(id);
+    return body != nullptr && body->body != nullptr;
+  }
   int body_count() const { return bodies_.size(); }
   /// Kinetic energy of every freely moving body (J) and potential energy of every body with mass
   /// in gravity (−Σ m g·p_com, J), at the current state.
@@ -199,8 +209,9 @@ class Simulator {
 
   // ---- interaction: the mouse spring and kinematic drags (interaction.h) -----------------
   /// Grabs body `id` (an object or robot link with an ODE body) at world point `point` with an
-  /// implicit spring towards a target (initially the point itself). False for a static or
-  /// unknown body. One grab at a time; a new one replaces the old.
+  /// implicit spring towards a target (initially the point itself). False for a static,
+  /// disabled, kinematic or unknown body; std::invalid_argument for bad settings. One grab at a
+  /// time; a new one replaces the old. The grabbed body stays awake and out of the energy check.
   bool StartDrag(int id, const Vec3& point, const DragSpringSettings& settings = {});
   /// Moves the spring's target (world). Held until the next call or EndDrag, whatever the
   /// chunking; the stretch is capped at settings.max_stretch.
@@ -213,9 +224,12 @@ class Simulator {
   /// Body `id` becomes kinematic and moves, at constant velocity, to reach the frame `target`
   /// after `duration` s of simulated time (a step if 0), then stops there; it pushes what it
   /// meets and carries what rests on it by friction (Box2D's b2Body_SetTargetTransform).
-  /// Calling it again (every frame of a mouse drag) retargets it.
-  void SetKinematicTarget(int id, const Pose& target, double duration);
-  /// The body becomes dynamic again with the velocity it last moved at (a throw works).
+  /// Calling it again (every frame of a mouse drag) retargets it. False (nothing done) for a
+  /// static or disabled body; std::invalid_argument for a pose that is not rigid.
+  bool SetKinematicTarget(int id, const Pose& target, double duration);
+  /// The body becomes dynamic again (unless it was kinematic before the first target) with the
+  /// velocity it last moved at, so a throw works; held still on its target for longer than its
+  /// last move took, it is released at rest.
   void ReleaseKinematicTarget(int id);
   bool HasKinematicTarget(int id) const { return targets_.count(id) != 0; }
 
@@ -280,6 +294,10 @@ class Simulator {
     VecX q, dq, forces;
     std::vector<ServoMotorCommand> motors;
   };
+  struct RobotPlacement {  ///< where a robot is, to place it again after a rebuild
+    VecX q, dq;
+    std::vector<Pose> frames;  ///< of its links
+  };
   struct StepProgress {  ///< what the sub-steps of one Step reported so far
     unsigned flags = 0;
     int rollbacks = 0;
@@ -292,6 +310,9 @@ class Simulator {
   void Build();
   void TearDown();
   void RebuildWith(const SimState& state);
+  void BuildKeepingFlags();
+  std::vector<RobotPlacement> RobotPlacements() const;
+  void KeepRobotPlacements(const std::vector<RobotPlacement>& placements);
   void BuildBodies();
   void BuildObject(int id, int object);
   void BuildRobot(int robot, int first_link_id);
@@ -306,6 +327,7 @@ class Simulator {
   void BuildConstraints(double step);
   StepStatus AcceptStep(double step, StepProgress* progress);
   SubStep Halt(const std::string& error);
+  void DispatchStep(const StepEvent& event);
   void DetectContacts();
   void UpdateBounds();
   bool MayCollide(const BodyRecord& a, const BodyRecord& b) const;
@@ -323,7 +345,6 @@ class Simulator {
   void CaptureRobotState(SimState* state, bool with_controllers) const;
   void RestoreRobotState(const SimState& state);
   void RestoreControllers(const SimState& state);
-  void UpdateWorldRobots(WorldDesc* world) const;
   void RobotLinksChanged(int robot, unsigned changes);
   int RequireRobot(int robot) const;
 
@@ -340,6 +361,8 @@ class Simulator {
   void AcceptInteraction(double step);
   void ClearInteraction();
   double EffectiveMassAt(int id, const Vec3& point) const;
+  void RescaleDrag();
+  std::vector<int> SharingBody(int id) const;
 
   // bodies (simulator_bodies.cpp)
   /// The one invalidation rule (body_change.h): what `changes` to body `id` make stale and wake.
@@ -363,8 +386,8 @@ class Simulator {
   WorldDesc world_;
   Diagnostics diagnostics_;
   CollisionGeometryCache geometry_cache_;
-  std::unique_ptr<dxWorld, void (*)(dxWorld*)> ode_world_;
-  std::unique_ptr<dxJointGroup, void (*)(dxJointGroup*)> contact_group_;
+  OdeWorldPtr ode_world_;
+  OdeJointGroupPtr contact_group_;
   std::unique_ptr<OdeDragJoint, void (*)(OdeDragJoint*)> drag_joint_;  ///< the spring's readout
   BodyTable bodies_;
   std::vector<std::unique_ptr<OdeRobot>> robots_;
@@ -380,6 +403,7 @@ class Simulator {
   DragState drag_;
   std::map<int, KinematicTarget> targets_;  ///< by body id
   std::vector<std::pair<int, StepObserver>> observers_;
+  bool dispatching_ = false;  ///< observers are being called
   int next_observer_ = 0;
   double time_ = 0.0;
   bool halted_ = false;  ///< an error stopped the simulation

@@ -185,12 +185,25 @@ bool Simulator::BodyEnabled(int id) const {
   return RequireBody(id).enabled;
 }
 
+// the records carried by id's ODE body: id itself, and the links welded into one body with it
+std::vector<int> Simulator::SharingBody(int id) const {
+  const BodyRecord& body = bodies_[id];
+  if (body.body == nullptr) return {id};
+  std::vector<int> ids;
+  for (int other = 0; other < bodies_.size(); ++other) {
+    if (bodies_[other].body == body.body) ids.push_back(other);
+  }
+  return ids;
+}
+
 void Simulator::SetBodyEnabled(int id, bool enabled) {
   BodyRecord& body = RequireBody(id);
   if (body.enabled == enabled) return;
-  body.enabled = enabled;
   if (body.body != nullptr) (enabled ? dBodyEnable : dBodyDisable)(body.body);
-  BodyChanged(id, enabled ? kEnabled : kDisabled);
+  for (int shared : SharingBody(id)) {
+    bodies_[shared].enabled = enabled;
+    BodyChanged(shared, enabled ? kEnabled : kDisabled);
+  }
 }
 
 bool Simulator::BodyDynamic(int id) const {
@@ -201,9 +214,11 @@ bool Simulator::BodyDynamic(int id) const {
 void Simulator::SetBodyDynamic(int id, bool dynamic) {
   BodyRecord& body = RequireBody(id);
   if (body.body == nullptr || body.dynamic == dynamic) return;
-  body.dynamic = dynamic;
   (dynamic ? dBodySetDynamic : dBodySetKinematic)(body.body);
-  BodyChanged(id, kKindChanged);
+  for (int shared : SharingBody(id)) {
+    bodies_[shared].dynamic = dynamic;
+    BodyChanged(shared, kKindChanged);
+  }
 }
 
 Pose Simulator::BodyPose(int id) const {
@@ -212,6 +227,7 @@ Pose Simulator::BodyPose(int id) const {
 
 void Simulator::SetBodyPose(int id, const Pose& pose) {
   RequireFinite(pose.matrix().allFinite(), "a body pose");
+  if (!IsRotation(pose.linear())) throw std::invalid_argument("a body pose must be rigid");
   const BodyRecord& body = RequireBody(id);
   if (body.body == nullptr) return;
   bodies_.SetPose(body, pose);
@@ -293,22 +309,64 @@ double Simulator::PotentialEnergy() const {
   return energy;
 }
 
+namespace {
+
+// every element of the simulated world, for UpdateWorld
+std::vector<ElementIndex> Elements(const WorldDesc& world) {
+  std::vector<ElementIndex> elements = {ElementIndex::Settings()};
+  for (int t = 0; t < static_cast<int>(world.terrains.size()); ++t) {
+    elements.push_back(ElementIndex::Terrain(t));
+  }
+  for (int o = 0; o < static_cast<int>(world.objects.size()); ++o) {
+    elements.push_back(ElementIndex::Object(o));
+  }
+  for (size_t r = 0; r < world.robots.size(); ++r) {
+    const int robot = static_cast<int>(r);
+    for (int l = 0; l < world.robots[r].dof(); ++l)
+      elements.push_back(ElementIndex::Link(robot, l));
+    for (size_t d = 0; d < world.robots[r].drivers.size(); ++d) {
+      elements.push_back(ElementIndex::Driver(robot, static_cast<int>(d)));
+    }
+  }
+  return elements;
+}
+
+bool SameStructure(const WorldDesc& a, const WorldDesc& b) {
+  if (a.terrains.size() != b.terrains.size() || a.objects.size() != b.objects.size() ||
+      a.robots.size() != b.robots.size()) {
+    return false;
+  }
+  for (size_t r = 0; r < a.robots.size(); ++r) {
+    if (a.robots[r].dof() != b.robots[r].dof() ||
+        a.robots[r].drivers.size() != b.robots[r].drivers.size()) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+// every row of the parameter table but the initial conditions, then the initial conditions from
+// the current state: "every live edit" by construction
 void Simulator::UpdateWorld(WorldDesc* world) const {
-  if (world->objects.size() != world_.objects.size() ||
-      world->terrains.size() != world_.terrains.size()) {
+  if (!SameStructure(*world, world_)) {
     throw std::invalid_argument("UpdateWorld: the world does not match the simulated one");
   }
-  world->settings = world_.settings;
-  for (size_t t = 0; t < world_.terrains.size(); ++t) {
-    world->terrains[t].sim = world_.terrains[t].sim;
+  for (const ElementIndex& element : Elements(world_)) {
+    for (const ParamSpec* spec : ParamsOf(element.kind)) {
+      if (spec->apply != ParamApply::kOnReset)
+        spec->set(world, element, spec->get(world_, element));
+    }
   }
   for (int i = 0; i < object_count(); ++i) {
-    RigidObjectDesc& object = world->objects[i];
-    object.sim = world_.objects[i].sim;
-    object.pose = GetObjectPose(i);
-    object.initial_velocity = GetObjectVelocity(i);
+    world->objects[i].pose = GetObjectPose(i);
+    world->objects[i].initial_velocity = GetObjectVelocity(i);
   }
-  UpdateWorldRobots(world);
+  for (int r = 0; r < robot_count(); ++r) {
+    world->robots[r].config = GetRobotConfig(r);
+    world->robots[r].velocity = GetRobotVelocity(r);
+  }
 }
 
 }  // namespace lamina::core

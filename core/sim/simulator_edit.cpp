@@ -14,11 +14,6 @@ namespace lamina::core {
 
 namespace {
 
-// padding and surface rows: every kind of body has them
-bool IsBodyRow(const ParamSpec& spec) {
-  return spec.AppliesTo(ElementKind::kTerrain);
-}
-
 // the typed setters throw what SetParam would refuse
 void SetOrThrow(Simulator* simulator, const ElementIndex& element, std::string_view key,
                 const ParamValue& value) {
@@ -59,7 +54,7 @@ bool Simulator::SetParam(const ElementIndex& element, const ParamSpec& spec,
   }
   if (element.kind == ElementKind::kSettings) {
     ApplySettingsEdit(spec);
-  } else if (IsBodyRow(spec)) {
+  } else if (IsBodyParam(spec)) {
     ApplyBodyEdit(element, spec);
   } else {
     ApplyRobotEdit(element, spec);
@@ -70,13 +65,15 @@ bool Simulator::SetParam(const ElementIndex& element, const ParamSpec& spec,
 void Simulator::ApplySettingsEdit(const ParamSpec& spec) {
   const SimSettings& s = world_.settings;
   if (spec.key == "gravity") {
-    SetGravity(s.gravity);
+    dWorldSetGravity(ode_world_.get(), s.gravity.x(), s.gravity.y(), s.gravity.z());
+    for (RobotController& controller : controllers_) controller.SetGravity(s.gravity);
+    for (int id : bodies_.object_ids()) BodyChanged(id, kForceApplied);
   } else if (spec.key == "ERP") {
     dWorldSetERP(ode_world_.get(), s.erp);
   } else if (spec.key == "CFM") {
     dWorldSetCFM(ode_world_.get(), s.cfm);
   } else if (spec.key == "sleeping") {
-    SetSleeping(s.sleeping);
+    if (!s.sleeping) sleep_.WakeAll(&bodies_);
   } else if (spec.key == "maxContacts" || spec.key == "rigidObjectCollisions" ||
              spec.key == "robotSelfCollisions" || spec.key == "robotRobotCollisions") {
     // what touches changed: contacts are found again, and what slept on them wakes
@@ -95,13 +92,26 @@ void Simulator::ApplyBodyEdit(const ElementIndex& element, const ParamSpec& spec
   }
 }
 
+// joint limits move the joint's stops; joint, velocity and torque limits (a non-affine driver's
+// are its link's) change the controller's ramp limits of the link (LinkRampLimits)
 void Simulator::ApplyRobotEdit(const ElementIndex& element, const ParamSpec& spec) {
-  if (element.kind != ElementKind::kLink || spec.key != "jointLimits") return;
-  const LinkDesc& link = world_.robots[element.index].links[element.sub];
-  robots_[element.index]->UpdateStops(element.sub);
+  const RobotDesc& robot = world_.robots[element.index];
+  int link = -1;
+  if (element.kind == ElementKind::kLink && spec.key == "jointLimits") {
+    link = element.sub;
+    robots_[element.index]->UpdateStops(link);
+  } else if (element.kind == ElementKind::kDriver &&
+             (spec.key == "velocityLimits" || spec.key == "torqueLimits")) {
+    const DriverDesc& driver = robot.drivers[element.sub];
+    if (driver.type != DriverType::kAffine && !driver.links.empty()) link = driver.links.front();
+  }
+  if (link < 0 || link >= robot.dof()) return;
+  const JointLimits derived = LinkRampLimits(robot);
   JointLimits limits = controllers_[element.index].limits();
-  limits.q_min[element.sub] = link.q_min;
-  limits.q_max[element.sub] = link.q_max;
+  limits.q_min[link] = derived.q_min[link];
+  limits.q_max[link] = derived.q_max[link];
+  limits.velocity_max[link] = derived.velocity_max[link];
+  limits.acceleration_max[link] = derived.acceleration_max[link];
   controllers_[element.index].SetLimits(limits);
 }
 
@@ -112,28 +122,22 @@ void Simulator::SetSimStep(double step) {
 }
 
 void Simulator::SetGravity(const Vec3& gravity) {
-  const ParamSpec& spec = *FindParam("gravity", ElementKind::kSettings);
-  if (auto error = CheckParam(spec, {gravity.x(), gravity.y(), gravity.z()}, 3)) {
-    throw std::invalid_argument("settings." + *error);
-  }
-  world_.settings.gravity = gravity;
-  dWorldSetGravity(ode_world_.get(), gravity.x(), gravity.y(), gravity.z());
-  for (RobotController& controller : controllers_) controller.SetGravity(gravity);
-  for (int id : bodies_.object_ids()) BodyChanged(id, kForceApplied);
+  SetOrThrow(this, ElementIndex::Settings(), "gravity", {gravity.x(), gravity.y(), gravity.z()});
 }
 
 void Simulator::SetSleeping(bool on) {
-  world_.settings.sleeping = on;
-  if (!on) sleep_.WakeAll(&bodies_);
+  SetOrThrow(this, ElementIndex::Settings(), "sleeping", {on ? 1.0 : 0.0});
 }
 
 void Simulator::SetSolver(const SolverSettings& solver) {
-  if (!(solver.quick_step_iterations >= 1)) {
-    throw std::invalid_argument("settings.quickStepIterations must be a whole number >= 1, got " +
-                                std::to_string(solver.quick_step_iterations));
+  const double iterations = solver.quick_step_iterations;
+  const ParamSpec& spec = *FindParam("quickStepIterations", ElementKind::kSettings);
+  if (auto error = CheckParam(spec, {iterations}, 1)) {
+    throw std::invalid_argument("settings." + *error);
   }
-  world_.settings.solver = solver.type;
-  world_.settings.quick_step_iterations = solver.quick_step_iterations;
+  SetOrThrow(this, ElementIndex::Settings(), "solver",
+             {solver.type == SolverType::kStep ? 0.0 : 1.0});
+  SetOrThrow(this, ElementIndex::Settings(), "quickStepIterations", {iterations});
 }
 
 void Simulator::SetBodyPadding(int id, double padding) {

@@ -55,11 +55,12 @@ double Simulator::EffectiveMassAt(int id, const Vec3& point) const {
 
 bool Simulator::StartDrag(int id, const Vec3& point, const DragSpringSettings& settings) {
   if (!point.allFinite()) throw std::invalid_argument("a drag point must be finite");
+  if (auto error = CheckDragSpringSettings(settings)) throw std::invalid_argument(*error);
   const BodyRecord* body = bodies_.Find(id);
   if (body == nullptr || body->body == nullptr || !body->enabled || !body->dynamic) return false;
   const double mass = EffectiveMassAt(id, point);
   if (!(mass > 0.0) || !std::isfinite(mass)) return false;
-  drag_ = DragState{};
+  EndDrag();
   drag_.active = true;
   drag_.body = id;
   drag_.local_point = bodies_.GetPose(*body).inverse() * point;
@@ -67,6 +68,7 @@ bool Simulator::StartDrag(int id, const Vec3& point, const DragSpringSettings& s
   drag_.effective_mass = mass;
   drag_.settings = settings;
   drag_.spring = MakeDragSpring(mass, world_.settings.gravity.norm(), settings);
+  for (int shared : SharingBody(id)) bodies_[shared].dragged = true;
   BodyChanged(id, kForceApplied);
   return true;
 }
@@ -79,7 +81,24 @@ void Simulator::SetDragTarget(const Vec3& target) {
 }
 
 void Simulator::EndDrag() {
+  if (drag_.active && drag_.body < bodies_.size()) {
+    for (int shared : SharingBody(drag_.body)) bodies_[shared].dragged = false;
+    BodyChanged(drag_.body, kForceApplied);  // what hung still on the spring falls now
+  }
   drag_ = DragState{};
+}
+
+// after a rebuild the grabbed body's mass may be another: the spring follows it
+void Simulator::RescaleDrag() {
+  const BodyRecord& body = bodies_[drag_.body];
+  const double mass = EffectiveMassAt(drag_.body, bodies_.GetPose(body) * drag_.local_point);
+  if (!(mass > 0.0) || !std::isfinite(mass)) {
+    EndDrag();
+    return;
+  }
+  drag_.effective_mass = mass;
+  drag_.spring = MakeDragSpring(mass, world_.settings.gravity.norm(), drag_.settings);
+  for (int shared : SharingBody(drag_.body)) bodies_[shared].dragged = true;
 }
 
 // the ball joint from the grabbed point to the (capped) target for a step of h, its k and c
@@ -109,12 +128,13 @@ void Simulator::AddDragJoint(double step) {
 
 // ---- kinematic targets ------------------------------------------------------------------
 
-void Simulator::SetKinematicTarget(int id, const Pose& target, double duration) {
-  if (!target.matrix().allFinite() || !std::isfinite(duration) || duration < 0.0) {
-    throw std::invalid_argument("a kinematic target needs a finite pose and duration >= 0");
+bool Simulator::SetKinematicTarget(int id, const Pose& target, double duration) {
+  if (!target.matrix().allFinite() || !IsRotation(target.linear()) || !std::isfinite(duration) ||
+      duration < 0.0) {
+    throw std::invalid_argument("a kinematic target needs a rigid pose and duration >= 0");
   }
   BodyRecord& body = RequireBody(id);
-  if (body.body == nullptr) return;
+  if (body.body == nullptr || !body.enabled) return false;
   const bool first = targets_.count(id) == 0;
   KinematicTarget& move = targets_[id];
   if (first) move.was_dynamic = body.dynamic;
@@ -127,6 +147,7 @@ void Simulator::SetKinematicTarget(int id, const Pose& target, double duration) 
   move.standing = 0.0;
   move.com_velocity = (target * body.com - now * body.com) / time;
   move.angular_velocity = RotationBetween(now.linear(), target.linear()) / time;
+  return true;
 }
 
 void Simulator::ReleaseKinematicTarget(int id) {
@@ -136,8 +157,9 @@ void Simulator::ReleaseKinematicTarget(int id) {
   targets_.erase(found);
   BodyRecord& body = RequireBody(id);
   if (move.was_dynamic) SetBodyDynamic(id, true);
-  // thrown with the velocity of its last move, unless it has stood still longer than that took
-  const bool moving = move.standing <= move.duration;
+  // thrown with the velocity of its last move, unless it has stood still longer than that took;
+  // a body that was kinematic before stays so, standing
+  const bool moving = move.was_dynamic && move.standing <= move.duration;
   const Vec3 linear = moving ? move.com_velocity : Vec3::Zero();
   const Vec3 angular = moving ? move.angular_velocity : Vec3::Zero();
   dBodySetLinearVel(body.body, linear.x(), linear.y(), linear.z());
@@ -177,7 +199,7 @@ void Simulator::ClearInteraction() {
     if (move.was_dynamic) SetBodyDynamic(id, true);
   }
   targets_.clear();
-  drag_ = DragState{};
+  EndDrag();
   ClearAppliedWrenches();
 }
 

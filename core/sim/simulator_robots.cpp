@@ -69,8 +69,6 @@ void Simulator::RobotLinksChanged(int robot, unsigned changes) {
 void Simulator::BuildRobot(int robot, int first_link_id) {
   const RobotDesc& desc = world_.robots[robot];
   robots_.push_back(std::make_unique<OdeRobot>(ode_world_.get(), desc, diagnostics_));
-  controllers_.push_back(RobotController::ViewOf(&world_.robots[robot]));
-  controllers_.back().SetGravity(world_.settings.gravity);
   robot_scratch_.emplace_back();
   self_collision_pairs_.push_back(desc.SelfCollisionPairs());
   std::sort(self_collision_pairs_.back().begin(), self_collision_pairs_.back().end());
@@ -187,26 +185,6 @@ void Simulator::RestoreRobotState(const SimState& state) {
 void Simulator::RestoreControllers(const SimState& state) {
   for (int r = 0; r < robot_count() && r < static_cast<int>(state.robots.size()); ++r) {
     controllers_[r].SetState(state.robots[r].controller);
-  }
-}
-
-void Simulator::UpdateWorldRobots(WorldDesc* world) const {
-  if (world->robots.size() != world_.robots.size()) {
-    throw std::invalid_argument("UpdateWorld: the world does not match the simulated one");
-  }
-  for (int r = 0; r < robot_count(); ++r) {
-    RobotDesc& robot = world->robots[r];
-    for (size_t l = 0; l < robot.links.size() && l < world_.robots[r].links.size(); ++l) {
-      const LinkDesc& link = world_.robots[r].links[l];
-      robot.links[l].sim = link.sim;
-      robot.links[l].q_min = link.q_min;
-      robot.links[l].q_max = link.q_max;
-    }
-    if (robot.drivers.size() == world_.robots[r].drivers.size()) {
-      robot.drivers = world_.robots[r].drivers;
-    }
-    robot.config = GetRobotConfig(r);
-    robot.velocity = GetRobotVelocity(r);
   }
 }
 

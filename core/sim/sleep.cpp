@@ -25,7 +25,7 @@ double Speed(dxBody* body) {
 }
 
 bool Pushed(const BodyRecord& body) {
-  return !body.force.isZero(0.0) || !body.torque.isZero(0.0) || body.held.active;
+  return !body.force.isZero(0.0) || !body.torque.isZero(0.0) || body.held.active || body.dragged;
 }
 
 }  // namespace

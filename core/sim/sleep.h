@@ -12,7 +12,8 @@
 //   asleep again together;
 // - no contact joint ties a sleeper to something inert (ODE would enable it through the joint);
 // - an island sleeps when all its members are ready: idle long enough, not pushed by an applied
-//   force, not touching a robot or a moving kinematic body (IslandsReady, pure);
+//   force, a held wrench or the mouse spring, not touching a robot or a moving kinematic body
+//   (IslandsReady, pure);
 // - Wake (a setter, a force or an edit reached the body) and WakeTouching (the body moved,
 //   reshaped or went away: what sleeps on it may have lost its support) come from the simulator's
 //   one change rule (body_change.h).

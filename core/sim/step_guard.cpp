@@ -93,10 +93,12 @@ std::vector<bool> StepGuard::BlownUp(const BodyTable& bodies) const {
   return blown;
 }
 
-// bodies pushed by a kinematic body may gain any energy: they are left out of the check
+// bodies pushed by a kinematic body, and the body on the mouse spring (an implicit constraint
+// driven by the user), may gain any energy: they are left out of the check
 void StepGuard::MarkPushed(const BodyTable& bodies, const std::vector<ContactPair>& before) {
   std::vector<char>& pushed = scratch_.pushed;
   pushed.assign(bodies.size(), 0);
+  for (int id = 0; id < bodies.size(); ++id) pushed[id] = bodies[id].dragged ? 1 : 0;
   for (const ContactPair& pair : before) {
     if (bodies[pair.a].body && !bodies[pair.a].dynamic) pushed[pair.b] = 1;
     if (bodies[pair.b].body && !bodies[pair.b].dynamic) pushed[pair.a] = 1;
@@ -120,7 +122,7 @@ void StepGuard::CollectSamples(BodyTable* bodies, const std::vector<ContactPair>
     if (energy_before < 0.0 || scratch_.pushed[ids[i]]) continue;
     const BodyState& start = rollback_state_.objects[i];
     const Vec3 force = body.force + body.held.force + body.mass * gravity;
-    const Vec3 torque = body.torque + body.held.torque;
+    const Vec3 torque = body.torque + bodies->HeldTorque(body);
     const double work = ExternalWorkBound(force, torque, start.linear_velocity.norm(), v.norm(),
                                           start.angular_velocity.norm(), w.norm(), step);
     scratch_.samples.push_back(

@@ -11,7 +11,8 @@
 //
 // Stability (energy_guard.h has the rules and their differences from Klamp't): the kinetic energy
 // of every freely moving rigid object is checked after each accepted step against what gravity,
-// applied forces and its contacts can supply; a body whose energy overflows a double is stopped
+// applied forces, held wrenches and its contacts can supply (a body pushed by a kinematic body
+// or held by the mouse spring is left out); a body whose energy overflows a double is stopped
 // before ODE steps (ODE would fail inside its step); a step that leaves a state non-finite is
 // undone once with the culprits stopped.
 #pragma once

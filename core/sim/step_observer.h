@@ -58,7 +58,7 @@ struct StepEvent {
   double time = 0.0;           ///< simulated time after the step (s)
   double h = 0.0;              ///< its length (s)
   unsigned flags = 0;          ///< StepFlag bits
-  int contact_joints = 0;      ///< contact joints the step was solved with
+  int contact_joints = 0;      ///< contacts of the pairs the step was solved with (as before)
   int rollbacks = 0;           ///< tentative steps undone since the previous accepted one
   int corrections = 0;         ///< bodies slowed or stopped by the stability checks
   const std::vector<ContactPair>& contacts;  ///< touching pairs after the step

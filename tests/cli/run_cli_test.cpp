@@ -107,9 +107,9 @@ TEST(RunCommandTest, LogFollowsKlamptColumns) {
 }
 
 TEST(RunCommandTest, JsonReportsEverySettingInForce) {
-  const CommandResult result = RunHeadless(
-      "run --duration 0.01 --json --set settings.frictionAnchorGain=0.3 " +
-      test::WorldsPath("klampt/simulation_test_worlds/heavyblocktest.xml"));
+  const CommandResult result =
+      RunHeadless("run --duration 0.01 --json --set settings.frictionAnchorGain=0.3 " +
+                  test::WorldsPath("klampt/simulation_test_worlds/heavyblocktest.xml"));
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json report = nlohmann::json::parse(result.out);
   const nlohmann::json& settings = report.at("settings");

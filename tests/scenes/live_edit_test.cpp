@@ -6,6 +6,7 @@
 // not depend on the Simulate chunking, held wrenches last, step observers see every accepted step,
 // and one change rule decides what a teleport invalidates (FakeSimulate like SetRobotConfig).
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -336,6 +337,98 @@ TEST(ChangeRuleTest, FakeSimulateInvalidatesLikeSetRobotConfig) {
     }
     EXPECT_EQ(link_anchors(), 0) << "fake " << fake;
   }
+}
+
+// a rebuild restores bodies at their centres of mass: a link whose centre of mass moved, or a
+// continuous joint built at another reference, is placed again by its configuration
+TEST(RebuildTest, RobotLinksStayWhereTheyWereAndContinuousJointsKeepTheirTurns) {
+  core::Simulator simulator(Pendulum("servoP 50\nservoI 0\nservoD 5\n"));  // no limits: wide
+  simulator.SetRobotConfig(0, VecX::Constant(1, 4.0));  // past a half turn from where it was built
+  const int link = simulator.world().RobotLinkId(0, 0);
+  const core::Pose frame = simulator.body(link).GetTransform();
+  std::string error;
+  ASSERT_TRUE(simulator.SetParam(ElementIndex::Robot(0), Row("config", core::ElementKind::kRobot),
+                                 {4.0}, &error));  // the next build counts turns from 4
+  ASSERT_TRUE(simulator.SetParam(ElementIndex::Link(0, 0), Row("com", core::ElementKind::kLink),
+                                 {0.0, 0.0, -0.3}, &error));  // rebuilt; the body's COM moved
+  EXPECT_NEAR(simulator.GetRobotConfig(0)[0], 4.0, 1e-12);
+  EXPECT_TRUE(simulator.body(link).GetTransform().isApprox(frame, 1e-12));
+}
+
+TEST(RebuildTest, ControllersAndTheirSettingsSurviveARebuild) {
+  core::Simulator simulator(Pendulum("servoP 50\nservoI 0\nservoD 5\n"));
+  core::RobotController& controller = simulator.controller(0);
+  controller.SetGravityCompensation(true);
+  ASSERT_TRUE(controller.SetControlPeriod(0.002));
+  std::string error;
+  ASSERT_TRUE(simulator.SetParam(ElementIndex::Link(0, 0), Row("mass", core::ElementKind::kLink),
+                                 {3.0}, &error));
+  EXPECT_EQ(&simulator.controller(0), &controller);  // references stay valid
+  EXPECT_TRUE(simulator.controller(0).gravity_compensation());
+  EXPECT_EQ(simulator.controller(0).control_period(), 0.002);
+}
+
+TEST(LiveEditTest, VelocityAndTorqueLimitsReachTheControllersRampsLive) {
+  core::Simulator simulator(Pendulum("servoP 50\nservoI 0\nservoD 5\nqMin -1\nqMax 1\n"));
+  std::string error;
+  ASSERT_TRUE(simulator.SetParam(ElementIndex::Driver(0, 0),
+                                 Row("velocityLimits", core::ElementKind::kDriver), {-0.5, 0.5},
+                                 &error));
+  EXPECT_EQ(simulator.controller(0).limits().velocity_max[0], 0.5);  // once only after Reset
+  ASSERT_TRUE(simulator.SetParam(
+      ElementIndex::Link(0, 0), Row("jointLimits", core::ElementKind::kLink), {-0.7, 0.9}, &error));
+  EXPECT_EQ(simulator.controller(0).limits().q_max[0], 0.9);
+  EXPECT_EQ(simulator.world().robots[0].drivers[0].q_max, 0.9);  // the driver's copy follows
+}
+
+TEST(LiveEditTest, UpdateWorldWritesEveryRowAndTheCurrentState) {
+  core::Simulator simulator(TwoBoxes());
+  std::string error;
+  ASSERT_TRUE(simulator.SetParam(ElementIndex::Object(1), Row("mass", core::ElementKind::kObject),
+                                 {2.5}, &error));
+  ASSERT_TRUE(simulator.SetParam(ElementIndex::Settings(),
+                                 Row("frictionAnchorGain", core::ElementKind::kSettings), {0.3},
+                                 &error));
+  simulator.Simulate(0.1);
+  core::WorldDesc world = TwoBoxes();
+  simulator.UpdateWorld(&world);
+  EXPECT_EQ(world.objects[1].mass, 2.5);
+  EXPECT_EQ(world.settings.friction_anchor_gain, 0.3);
+  EXPECT_EQ(world.objects[0].pose.translation(), simulator.GetObjectPose(0).translation());
+  core::WorldDesc other = TwoBoxes();
+  other.objects.pop_back();
+  EXPECT_THROW(simulator.UpdateWorld(&other), std::invalid_argument);
+}
+
+TEST(LiveEditTest, BadArgumentsAreRefusedWithAMessage) {
+  core::Simulator simulator(TwoBoxes());
+  EXPECT_THROW(simulator.Simulate(std::numeric_limits<double>::infinity()), std::invalid_argument);
+  EXPECT_THROW(simulator.Simulate(-1.0), std::invalid_argument);
+  EXPECT_THROW(simulator.SetSolver({core::SolverType::kQuickStep, 2000000}), std::invalid_argument);
+  core::Pose sheared = core::Pose::Identity();
+  sheared.linear()(0, 1) = 0.5;
+  EXPECT_THROW(simulator.body(1).SetTransform(sheared), std::invalid_argument);
+  core::SimState state = simulator.GetState();
+  state.objects[0].orientation.coeffs() *= 2.0;
+  EXPECT_THROW(simulator.SetState(state), std::invalid_argument);
+  core::DragSpringSettings limp;
+  limp.frequency = 0.0;
+  EXPECT_THROW(simulator.StartDrag(1, Vec3(0, 0, kSide), limp), std::invalid_argument);
+  EXPECT_FALSE(simulator.dragging());
+}
+
+TEST(StepObserverTest, AnObserverMayRemoveItselfWhileCalled) {
+  core::Simulator simulator(TwoBoxes());
+  int calls = 0, id = -1;
+  id = simulator.AddStepObserver([&](const core::StepEvent&) {
+    ++calls;
+    simulator.RemoveStepObserver(id);
+  });
+  int others = 0;
+  simulator.AddStepObserver([&](const core::StepEvent&) { ++others; });
+  simulator.Simulate(0.005);
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(others, 5);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "core/edit/state_carry.h"
@@ -335,7 +336,9 @@ TEST(StateCarryTest, WorldIdsAndStatesFollowTheirUids) {
   core::FrictionAnchor stacked{1, 3, turn, core::Vec3(0, 0, 0.1)};  // 10 on 12
   state.anchors = {on_ground, stacked, of_removed};
 
-  const SimState carried = core::CarryState(from, state, to, initial);
+  // in `to`: the terrain 0 is static, the objects 1..3 and the robot's link 5 move
+  const std::vector<bool> moves = {false, true, true, true, false, true, true};
+  const SimState carried = core::CarryState(from, state, to, moves, initial);
   EXPECT_EQ(carried.time, 2.5);
   EXPECT_TRUE(carried.objects[0] == state.objects[2]);
   EXPECT_TRUE(carried.objects[1] == initial.objects[1]);  // new: its own start
@@ -455,6 +458,55 @@ TEST(LiveWorldTest, TheCurrentStateBecomesWhatResetStartsFrom) {
   ExpectSameWorld(original, live.document().desc());
   simulator.Reset();
   EXPECT_LT((simulator.GetObjectPose(2).translation() - core::Vec3(2, 0, 0.4)).norm(), 1e-15);
+}
+
+// a slider drag is one entry; when the simulation ran during it, undo applies the old value live
+// instead of restoring the state from before the drag (which would throw the run away)
+TEST(LiveWorldTest, UndoOfAGroupThatSpannedSimulatedTimeDoesNotRewind) {
+  LiveWorld live(Fixture());
+  const core::ElementRef block = core::ElementRef::Object(live.document().desc().objects[0].uid);
+  live.BeginGroup("friction drag");
+  for (int k = 1; k <= 5; ++k) {
+    ASSERT_TRUE(live.Do(*core::MakeParamEdit(live.document(), block, "kFriction", {0.1 * k})));
+    Advance(live.simulator(), 20);
+  }
+  ASSERT_TRUE(live.Do(*core::MakeParamEdit(live.document(), block, "kFriction", {0.9})));
+  live.EndGroup();
+  const double time = live.simulator().time();
+  ASSERT_TRUE(live.Undo());
+  EXPECT_EQ(live.simulator().time(), time);  // not rewound to the start of the drag
+  EXPECT_EQ(live.document().desc().objects[0].sim.surface.friction,
+            Fixture().desc().objects[0].sim.surface.friction);
+  EXPECT_EQ(live.simulator().world().objects[0].sim.surface.friction,
+            Fixture().desc().objects[0].sim.surface.friction);
+}
+
+TEST(LiveWorldTest, ObserversOutliveStructuralEditsAndTargetsEndWithThem) {
+  LiveWorld live(Fixture());
+  int steps = 0;
+  live.AddStepObserver([&](const core::StepEvent&) { ++steps; });
+  const int block = live.simulator().world().ObjectId(0);
+  core::Pose target = live.simulator().GetObjectPose(0);
+  target.translation().z() += 0.05;
+  ASSERT_TRUE(live.simulator().SetKinematicTarget(block, target, 0.1));
+  Advance(live.simulator(), 10);
+  ASSERT_TRUE(live.Do(*core::MakeRenameEdit(
+      live.document(), core::ElementRef::Object(live.document().desc().objects[0].uid),
+      "renamed")));
+  Advance(live.simulator(), 10);
+  EXPECT_EQ(steps, 20);  // the new simulation calls the world's observers too
+  EXPECT_TRUE(live.simulator().body(block).dynamics_enabled());  // not left kinematic
+}
+
+TEST(LiveWorldTest, AnAddedObjectIsCheckedByTheTable) {
+  LiveWorld live(Fixture());
+  core::RigidObjectDesc bad = live.document().desc().objects[0];
+  bad.uid = 0;
+  bad.sim.surface.restitution = 1.5;
+  std::string error;
+  EXPECT_FALSE(live.Do(core::MakeAddObjectEdit(live.document(), bad), &error));
+  EXPECT_THAT(error, ::testing::HasSubstr("kRestitution must be in [0, 1], got 1.5"));
+  EXPECT_EQ(live.document().desc().objects.size(), Fixture().desc().objects.size());
 }
 
 }  // namespace

@@ -232,5 +232,41 @@ TEST(KinematicTargetTest, ARobotLinkFollowsItsTarget) {
   EXPECT_GT(simulator.GetRobotConfig(0)[0], -0.45);
 }
 
+// a box held still on the spring is pushed by it: it never falls asleep in the air, and it falls
+// when released
+TEST(MouseSpringTest, ABodyHeldStillStaysAwakeAndFallsWhenReleased) {
+  core::Simulator simulator(BoxOnPlane(1.0));
+  simulator.SetSleeping(true);
+  simulator.Simulate(0.1);
+  ASSERT_TRUE(simulator.StartDrag(1, Vec3(0, 0, 0.1)));
+  simulator.SetDragTarget(Vec3(0, 0, 0.4));  // and never again
+  simulator.Simulate(2.0);
+  EXPECT_FALSE(simulator.ObjectAsleep(0));
+  const double held = simulator.GetObjectPose(0).translation().z();
+  EXPECT_GT(held, 0.3);
+  simulator.EndDrag();
+  simulator.Simulate(0.2);
+  EXPECT_LT(simulator.GetObjectPose(0).translation().z(), held - 0.1);
+}
+
+TEST(KinematicTargetTest, ABodyThatWasKinematicBeforeStaysSoAndStandsOnRelease) {
+  core::WorldDesc world;
+  world.objects.push_back(test::BoxObject(0.1, 1.0, Vec3(0, 0, 1.0)));
+  core::Simulator simulator(world);
+  simulator.body(0).EnableDynamics(false);
+  Pose target = Pose::Identity();
+  target.translation() = Vec3(0.5, 0, 1.0);
+  ASSERT_TRUE(simulator.SetKinematicTarget(0, target, 0.5));
+  simulator.Simulate(0.25);
+  simulator.ReleaseKinematicTarget(0);
+  EXPECT_FALSE(simulator.body(0).dynamics_enabled());
+  EXPECT_EQ(simulator.GetObjectVelocity(0).linear, Vec3::Zero());
+  simulator.Simulate(0.25);
+  EXPECT_NEAR(simulator.GetObjectPose(0).translation().x(), 0.25, 1e-9);
+  // a disabled body takes no target
+  simulator.body(0).Enable(false);
+  EXPECT_FALSE(simulator.SetKinematicTarget(0, target, 0.5));
+}
+
 }  // namespace
 }  // namespace lamina

@@ -175,12 +175,11 @@ TEST(ViewerUnderXvfb, SetChangesTheWorldAndARefusedSetSaysWhy) {
                          "set.log"),
             0)
       << ReadText("set.log");
-  EXPECT_EQ(RunUnderXvfb(kBin + "/lamina " + world +
-                             " --frames 2 --set 'objects[0].kRestitution=1.5'",
-                         "bad_set.log"),
-            1);
-  EXPECT_NE(ReadText("bad_set.log").find("--set 'objects[0].kRestitution=1.5'"),
-            std::string::npos)
+  EXPECT_EQ(
+      RunUnderXvfb(kBin + "/lamina " + world + " --frames 2 --set 'objects[0].kRestitution=1.5'",
+                   "bad_set.log"),
+      1);
+  EXPECT_NE(ReadText("bad_set.log").find("--set 'objects[0].kRestitution=1.5'"), std::string::npos)
       << ReadText("bad_set.log");
 }
 

@@ -8,7 +8,7 @@ namespace lamina::ui {
 
 namespace {
 
-void DrawTransport(ViewerState* state) {
+void DrawTransport(const WorldSession& session, ViewerState* state) {
   if (ImGui::Button(state->playing ? "Pause" : "Play", ImVec2(70, 0))) {
     state->playing = !state->playing;
   }
@@ -31,8 +31,11 @@ void DrawTransport(ViewerState* state) {
   if (changed) state->solver = solver == 0 ? core::SolverType::kStep : core::SolverType::kQuickStep;
   ImGui::Checkbox("sleep idle objects", &state->sleep);
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("objects idle for %.1f s leave the steps until something touches them",
-                      core::SimSettings{}.sleep_time);
+    const core::Simulator* simulator = session.simulator();
+    const double sleep_time =
+        simulator ? simulator->world().settings.sleep_time : core::SimSettings{}.sleep_time;
+    ImGui::SetTooltip("objects idle for %.2g s leave the steps until something touches them",
+                      sleep_time);
   }
 }
 
@@ -66,7 +69,7 @@ void DrawSimulationPanel(const WorldSession& session, ViewerState* state) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   if (ImGui::Begin("Simulation", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::PushItemWidth(200);
-    DrawTransport(state);
+    DrawTransport(session, state);
     ImGui::Separator();
     DrawStatistics(session, *state);
     ImGui::PopItemWidth();

@@ -162,7 +162,7 @@ void Viewer::OpenWorld(const std::string& path, const std::vector<std::string>& 
   window_.SetTitle("Lamina - " + session_.description().name);
   // the panel shows the world's solver and sleeping (--sleep turns sleeping on for every world)
   state_.solver = session_.simulator()->solver().type;
-  if (state_.sleep) session_.SetSleeping(true);
+  if (options_.sleep) session_.SetSleeping(true);
   state_.sleep = session_.simulator()->sleeping();
   state_.open_path_input = path;
   state_.selected_id = state_.hovered_id = -1;
