@@ -3,6 +3,11 @@
 
 #include <utility>
 
+#include <gtest/gtest.h>
+
+#include "core/io/load_context.h"
+#include "core/io/robot_file.h"
+
 namespace lamina::test {
 
 core::GeometryDesc PrimitiveGeometry(const core::Primitive& primitive) {
@@ -51,6 +56,24 @@ core::RigidObjectDesc SphereObject(double radius, double mass, const core::Vec3&
   sphere.pose.translation() = position;
   sphere.sim = core::DefaultObjectSimParams();
   return sphere;
+}
+
+core::WorldDesc WorldWithRobot(const std::string& rob_text) {
+  core::Diagnostics diagnostics;
+  core::MeshCache meshes;
+  core::LoadContext context{diagnostics, meshes};
+  core::WorldDesc world;
+  world.robots.emplace_back();
+  EXPECT_TRUE(core::ParseRob(rob_text, "/virtual/robot.rob", context, &world.robots[0]))
+      << diagnostics.FormatAll();
+  return world;
+}
+
+core::WorldDesc PendulumWorld(const std::string& extra, double q0) {
+  return WorldWithRobot(
+      "links \"pendulum\"\nparents -1\nTParent 1 0 0  0 1 0  0 0 1  0 0 1\naxis 0 1 0\n"
+      "jointtype r\nmass 2\ncom 0 0 -0.5\ninertia 0.01 0 0  0 0.01 0  0 0 0.01\nq " +
+      std::to_string(q0) + "\njoint normal 0\ndriver normal 0\n" + extra);
 }
 
 }  // namespace lamina::test

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "core/model/world_desc.h"
 
@@ -19,6 +20,12 @@ core::GeometryDesc MeshGeometry(std::shared_ptr<const core::TriangleMesh> mesh,
 core::TerrainDesc PlaneTerrain(double friction, double restitution);
 /// A cube primitive of full side `side`, mass `mass` and the matching inertia, at `position`.
 core::RigidObjectDesc BoxObject(double side, double mass, const core::Vec3& position);
+/// A world holding one robot parsed from `.rob` text (the test fails if it does not parse).
+core::WorldDesc WorldWithRobot(const std::string& rob_text);
+/// A pendulum robot alone: one link hinged to the world at (0, 0, 1) about y, 2 kg with its
+/// centre of mass 0.5 m below the pivot at q = 0 (0.01 kg·m² about it), one normal driver;
+/// `extra` adds .rob statements (gains, limits, friction).
+core::WorldDesc PendulumWorld(const std::string& extra, double q0 = 0.0);
 /// A sphere primitive of radius `radius`, solid inertia, at `position`.
 core::RigidObjectDesc SphereObject(double radius, double mass, const core::Vec3& position);
 

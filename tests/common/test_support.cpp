@@ -12,6 +12,8 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include "core/model/world_compare.h"
+
 namespace lamina::test {
 
 std::string DataPath(const std::string& relative) {
@@ -82,6 +84,24 @@ CommandResult RunHeadless(const std::string& arguments) {
   std::ifstream err(err_path);
   result.err.assign(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
   return result;
+}
+
+namespace {
+
+std::vector<core::ElementUid> Uids(const core::WorldDesc& world) {
+  std::vector<core::ElementUid> uids;
+  for (const auto& terrain : world.terrains) uids.push_back(terrain.uid);
+  for (const auto& object : world.objects) uids.push_back(object.uid);
+  for (const auto& robot : world.robots) uids.push_back(robot.uid);
+  return uids;
+}
+
+}  // namespace
+
+void ExpectSameWorld(const core::WorldDesc& a, const core::WorldDesc& b) {
+  const std::vector<std::string> differences = core::CompareWorlds(a, b, 0.0);
+  EXPECT_TRUE(differences.empty()) << differences.front();
+  EXPECT_EQ(Uids(a), Uids(b));
 }
 
 }  // namespace lamina::test

@@ -58,4 +58,8 @@ struct CommandResult {
 /// Runs the built `lamina-headless` with `arguments` (a shell word list).
 CommandResult RunHeadless(const std::string& arguments);
 
+/// The same description, field for field (CompareWorlds at tolerance 0), and the same uids of
+/// terrains, objects and robots in the same places.
+void ExpectSameWorld(const core::WorldDesc& a, const core::WorldDesc& b);
+
 }  // namespace lamina::test

@@ -12,8 +12,6 @@
 
 #include <gtest/gtest.h>
 
-#include "core/io/load_context.h"
-#include "core/io/robot_file.h"
 #include "core/io/world_file.h"
 #include "core/sim/simulator.h"
 #include "tests/common/scene_builders.h"
@@ -45,20 +43,9 @@ core::WorldDesc TwoBoxes() {
   return world;
 }
 
-// a one-link pendulum robot hinged to the world about y (robot_joint_test.cpp's)
+// the pendulum of tests/common/scene_builders.h, started at 0.3 rad
 core::WorldDesc Pendulum(const std::string& extra) {
-  const std::string text =
-      "links \"pendulum\"\nparents -1\nTParent 1 0 0  0 1 0  0 0 1  0 0 1\naxis 0 1 0\n"
-      "jointtype r\nmass 2\ncom 0 0 -0.5\ninertia 0.01 0 0  0 0.01 0  0 0 0.01\nq 0.3\n"
-      "joint normal 0\ndriver normal 0\n" +
-      extra;
-  core::Diagnostics diagnostics;
-  core::MeshCache meshes;
-  core::LoadContext context{diagnostics, meshes};
-  core::WorldDesc world;
-  world.robots.emplace_back();
-  EXPECT_TRUE(core::ParseRob(text, "/virtual/pendulum.rob", context, &world.robots[0]));
-  return world;
+  return test::PendulumWorld(extra, 0.3);
 }
 
 TEST(LiveEditTest, SettersRefuseWhatTheReadersRefuse) {

@@ -25,6 +25,8 @@
 namespace lamina {
 namespace {
 
+using test::ExpectSameWorld;
+
 using core::ElementIndex;
 using core::LiveWorld;
 using core::SimState;
@@ -42,20 +44,6 @@ WorldDocument Fixture() {
 
 void Advance(core::Simulator& simulator, int steps) {
   for (int i = 0; i < steps; ++i) simulator.Simulate(kStep);
-}
-
-std::vector<core::ElementUid> Uids(const core::WorldDesc& world) {
-  std::vector<core::ElementUid> uids;
-  for (const auto& terrain : world.terrains) uids.push_back(terrain.uid);
-  for (const auto& object : world.objects) uids.push_back(object.uid);
-  for (const auto& robot : world.robots) uids.push_back(robot.uid);
-  return uids;
-}
-
-void ExpectSameWorld(const core::WorldDesc& a, const core::WorldDesc& b) {
-  const std::vector<std::string> differences = core::CompareWorlds(a, b, 0.0);
-  EXPECT_TRUE(differences.empty()) << differences.front();
-  EXPECT_EQ(Uids(a), Uids(b));
 }
 
 bool StateIsFinite(const SimState& state) {

@@ -10,8 +10,6 @@
 
 #include <gtest/gtest.h>
 
-#include "core/io/load_context.h"
-#include "core/io/robot_file.h"
 #include "core/sim/simulator.h"
 #include "tests/common/scene_builders.h"
 
@@ -108,19 +106,9 @@ TEST(MouseSpringTest, ReleasingAddsNoEnergy) {
   EXPECT_LT(energy(), released - 1.0);  // it fell, bounced and came to rest
 }
 
-// a one-link pendulum hinged about y at (0, 0, 1), actuator off
+// the pendulum of tests/common/scene_builders.h with its servo off
 core::WorldDesc Pendulum() {
-  const std::string text =
-      "links \"pendulum\"\nparents -1\nTParent 1 0 0  0 1 0  0 0 1  0 0 1\naxis 0 1 0\n"
-      "jointtype r\nmass 2\ncom 0 0 -0.5\ninertia 0.01 0 0  0 0.01 0  0 0 0.01\n"
-      "joint normal 0\ndriver normal 0\nservoP 0\nservoI 0\nservoD 0\n";
-  core::Diagnostics diagnostics;
-  core::MeshCache meshes;
-  core::LoadContext context{diagnostics, meshes};
-  core::WorldDesc world;
-  world.robots.emplace_back();
-  EXPECT_TRUE(core::ParseRob(text, "/virtual/pendulum.rob", context, &world.robots[0]));
-  return world;
+  return test::PendulumWorld("servoP 0\nservoI 0\nservoD 0\n");
 }
 
 TEST(MouseSpringTest, ARobotLinkIsPulledWithItsArticulatedEffectiveMass) {

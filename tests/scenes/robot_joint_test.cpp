@@ -11,6 +11,7 @@
 #include "core/io/load_context.h"
 #include "core/io/robot_file.h"
 #include "core/sim/simulator.h"
+#include "tests/common/scene_builders.h"
 #include "tests/common/test_support.h"
 
 namespace lamina {
@@ -23,25 +24,10 @@ constexpr double kLength = 0.5;     // pivot to centre of mass, m
 constexpr double kMass = 2.0;       // kg
 constexpr double kInertiaC = 0.01;  // about the COM, kg·m²
 
-// A pendulum hinged to the world at (0, 0, 1) about y, its COM kLength below the pivot at q = 0.
-// `extra` adds .rob statements (limits, gains, friction).
+// A pendulum hinged to the world at (0, 0, 1) about y, its COM kLength below the pivot at q = 0
+// (tests/common/scene_builders.h). `extra` adds .rob statements (limits, gains, friction).
 core::WorldDesc PendulumWorld(const std::string& extra, double q0) {
-  const std::string text =
-      "links \"pendulum\"\nparents -1\n"
-      "TParent 1 0 0  0 1 0  0 0 1  0 0 1\naxis 0 1 0\njointtype r\n"
-      "mass " +
-      std::to_string(kMass) + "\ncom 0 0 " + std::to_string(-kLength) + "\ninertia " +
-      std::to_string(kInertiaC) + " 0 0  0 " + std::to_string(kInertiaC) + " 0  0 0 " +
-      std::to_string(kInertiaC) + "\nq " + std::to_string(q0) +
-      "\njoint normal 0\ndriver normal 0\n" + extra;
-  core::Diagnostics diagnostics;
-  core::MeshCache meshes;
-  core::LoadContext context{diagnostics, meshes};
-  core::WorldDesc world;
-  world.robots.emplace_back();
-  EXPECT_TRUE(core::ParseRob(text, "/virtual/pendulum.rob", context, &world.robots[0]))
-      << diagnostics.FormatAll();
-  return world;
+  return test::PendulumWorld(extra, q0);
 }
 
 double PivotInertia() {

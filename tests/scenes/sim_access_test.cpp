@@ -39,17 +39,8 @@ core::WorldDesc BoxOnPlane() {
 
 // A pendulum "pendulum" hinged to the world at (0, 0, 1) about y, one PID driver "motor".
 core::WorldDesc PendulumWorld() {
-  const std::string text =
-      "links \"rod\"\nparents -1\nTParent 1 0 0  0 1 0  0 0 1  0 0 1\naxis 0 1 0\n"
-      "jointtype r\nmass 2\ncom 0 0 -0.5\ninertia 0.01 0 0  0 0.01 0  0 0 0.01\nq 0\n"
-      "joint normal 0\ndriver normal 0\nservoP 10\nservoI 0\nservoD 1\n";
-  core::Diagnostics diagnostics;
-  core::MeshCache meshes;
-  core::LoadContext context{diagnostics, meshes};
-  core::WorldDesc world;
-  world.robots.emplace_back();
-  EXPECT_TRUE(core::ParseRob(text, "/virtual/pendulum.rob", context, &world.robots[0]))
-      << diagnostics.FormatAll();
+  core::WorldDesc world = test::PendulumWorld("servoP 10\nservoI 0\nservoD 1\n");
+  world.robots[0].links[0].name = "rod";
   world.robots[0].name = "pendulum";
   world.robots[0].drivers[0].name = "motor";
   return world;

@@ -18,6 +18,8 @@
 namespace lamina {
 namespace {
 
+using test::ExpectSameWorld;
+
 using core::ElementIndex;
 using core::ElementRef;
 using core::WorldDocument;
@@ -28,21 +30,6 @@ WorldDocument LoadFixture() {
   EXPECT_TRUE(document.Load(test::DataPath("edit/arm_and_blocks.xml"), diagnostics))
       << diagnostics.FormatAll();
   return document;
-}
-
-std::vector<core::ElementUid> Uids(const core::WorldDesc& world) {
-  std::vector<core::ElementUid> uids;
-  for (const auto& terrain : world.terrains) uids.push_back(terrain.uid);
-  for (const auto& object : world.objects) uids.push_back(object.uid);
-  for (const auto& robot : world.robots) uids.push_back(robot.uid);
-  return uids;
-}
-
-// the same description, field for field, and the same uids in the same places
-void ExpectSameWorld(const core::WorldDesc& a, const core::WorldDesc& b) {
-  const std::vector<std::string> differences = core::CompareWorlds(a, b, 0.0);
-  EXPECT_TRUE(differences.empty()) << differences.front();
-  EXPECT_EQ(Uids(a), Uids(b));
 }
 
 class HistoryTest : public ::testing::Test {
