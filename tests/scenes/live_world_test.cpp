@@ -19,6 +19,7 @@
 
 #include "core/edit/state_carry.h"
 #include "core/model/world_compare.h"
+#include "tests/common/edit_support.h"
 #include "tests/common/scene_builders.h"
 #include "tests/common/test_support.h"
 
@@ -33,14 +34,6 @@ using core::SimState;
 using core::WorldDocument;
 
 constexpr double kStep = 0.001;  // s, one physics step per Simulate call
-
-WorldDocument Fixture() {
-  WorldDocument document;
-  core::Diagnostics diagnostics;
-  EXPECT_TRUE(document.Load(test::DataPath("edit/arm_and_blocks.xml"), diagnostics))
-      << diagnostics.FormatAll();
-  return document;
-}
 
 void Advance(core::Simulator& simulator, int steps) {
   for (int i = 0; i < steps; ++i) simulator.Simulate(kStep);
@@ -68,14 +61,6 @@ void ExpectSameTrajectory(core::Simulator& a, core::Simulator& b, int steps) {
   EXPECT_TRUE(StateIsFinite(a.GetState()));
 }
 
-core::Edit Param(const WorldDocument& document, const ElementIndex& element, std::string_view key,
-                 core::ParamValue after) {
-  std::string error;
-  const auto edit = core::MakeParamEdit(document, *document.RefOf(element), key, after, &error);
-  EXPECT_TRUE(edit) << error;
-  return *edit;
-}
-
 core::Pose Raised(const core::Pose& pose) {
   core::Pose raised = pose;
   raised.translation() += core::Vec3(0.0, 0.5, 0.3);
@@ -93,23 +78,28 @@ std::vector<EditCase> EveryKindOfEdit() {
   const auto object = [](int i) { return ElementIndex::Object(i); };
   return {
       {"live row (friction)",
-       [=](auto& l) { return Param(l.document(), object(0), "kFriction", {0.05}); }},
+       [=](auto& l) { return test::ParamEditOf(l.document(), object(0), "kFriction", {0.05}); }},
       {"live row (servo gain)",
-       [](auto& l) { return Param(l.document(), ElementIndex::Driver(0, 0), "servoP", {400.0}); }},
+       [](auto& l) {
+         return test::ParamEditOf(l.document(), ElementIndex::Driver(0, 0), "servoP", {400.0});
+       }},
       {"live row (gravity)",
        [](auto& l) {
-         return Param(l.document(), ElementIndex::Settings(), "gravity", {1, 0, -3});
+         return test::ParamEditOf(l.document(), ElementIndex::Settings(), "gravity", {1, 0, -3});
        }},
       {"geometry row (padding)",
-       [=](auto& l) { return Param(l.document(), object(1), "padding", {0.01}); }},
+       [=](auto& l) { return test::ParamEditOf(l.document(), object(1), "padding", {0.01}); }},
       {"simulator row (object mass)",
-       [=](auto& l) { return Param(l.document(), object(2), "mass", {3.0}); }},
+       [=](auto& l) { return test::ParamEditOf(l.document(), object(2), "mass", {3.0}); }},
       {"simulator row (link mass)",
-       [](auto& l) { return Param(l.document(), ElementIndex::Link(0, 1), "mass", {2.5}); }},
+       [](auto& l) {
+         return test::ParamEditOf(l.document(), ElementIndex::Link(0, 1), "mass", {2.5});
+       }},
       {"initial row (pose)",
        [=](auto& l) {
          const core::Pose pose = l.document().desc().objects[2].pose;
-         return Param(l.document(), object(2), "transform", core::PoseToValue(Raised(pose)));
+         return test::ParamEditOf(l.document(), object(2), "transform",
+                                  core::PoseToValue(Raised(pose)));
        }},
       {"rename",
        [](auto& l) {
@@ -142,7 +132,7 @@ std::vector<EditCase> EveryKindOfEdit() {
 // what exact undo stands on: restoring a state is bit for bit (ODE's dBodySetQuaternion
 // normalizes again, which changed the last bit of the top block's orientation at 0.2 s)
 TEST(LiveWorldTest, RestoringTheCurrentStateChangesNothing) {
-  LiveWorld live(Fixture()), twin(Fixture());
+  LiveWorld live(test::ArmAndBlocksDocument()), twin(test::ArmAndBlocksDocument());
   Advance(live.simulator(), 200);
   Advance(twin.simulator(), 200);
   const SimState state = live.simulator().GetState();
@@ -154,7 +144,7 @@ TEST(LiveWorldTest, RestoringTheCurrentStateChangesNothing) {
 TEST(LiveWorldTest, DoThenUndoOfEveryKindOfEditRestoresTheWorldAndTheSimulationExactly) {
   for (const EditCase& c : EveryKindOfEdit()) {
     SCOPED_TRACE(c.name);
-    LiveWorld live(Fixture());
+    LiveWorld live(test::ArmAndBlocksDocument());
     core::Simulator reference(live.document().desc());
     Advance(live.simulator(), 200);
     Advance(reference, 200);
@@ -177,7 +167,8 @@ TEST(LiveWorldTest, DoThenUndoOfEveryKindOfEditRestoresTheWorldAndTheSimulationE
 TEST(LiveWorldTest, RedoRightAfterUndoGivesBackTheStateTheEditLeft) {
   for (const EditCase& c : EveryKindOfEdit()) {
     SCOPED_TRACE(c.name);
-    LiveWorld live(Fixture()), twin(Fixture());  // the twin makes the edit and keeps it
+    LiveWorld live(test::ArmAndBlocksDocument()),
+        twin(test::ArmAndBlocksDocument());  // the twin makes the edit and keeps it
     Advance(live.simulator(), 200);
     Advance(twin.simulator(), 200);
     std::string error;
@@ -198,10 +189,10 @@ TEST(LiveWorldTest, RedoRightAfterUndoGivesBackTheStateTheEditLeft) {
 }
 
 TEST(LiveWorldTest, UndoAfterSimulatingAppliesTheInverseAndGoesOn) {
-  LiveWorld live(Fixture());
+  LiveWorld live(test::ArmAndBlocksDocument());
   Advance(live.simulator(), 200);
   const SimState before = live.simulator().GetState();
-  ASSERT_TRUE(live.Do(Param(live.document(), ElementIndex::Object(2), "mass", {3.0})));
+  ASSERT_TRUE(live.Do(test::ParamEditOf(live.document(), ElementIndex::Object(2), "mass", {3.0})));
   Advance(live.simulator(), 50);
   const double time = live.simulator().time();
   ASSERT_TRUE(live.Undo());
@@ -217,14 +208,14 @@ TEST(LiveWorldTest, UndoAfterSimulatingAppliesTheInverseAndGoesOn) {
 }
 
 TEST(LiveWorldTest, ARefusedEditChangesNeitherTheDocumentNorTheSimulation) {
-  LiveWorld live(Fixture());
+  LiveWorld live(test::ArmAndBlocksDocument());
   Advance(live.simulator(), 100);
   const SimState before = live.simulator().GetState();
   const core::WorldDesc simulated = live.simulator().world();
   const core::Revision revision = live.document().revision();
   std::string error;
-  EXPECT_FALSE(
-      live.Do(Param(live.document(), ElementIndex::Object(0), "kRestitution", {1.5}), &error));
+  EXPECT_FALSE(live.Do(
+      test::ParamEditOf(live.document(), ElementIndex::Object(0), "kRestitution", {1.5}), &error));
   EXPECT_EQ(error, "objects[0].kRestitution must be in [0, 1], got 1.5");
   EXPECT_FALSE(live.Do(core::RenameEdit{core::ElementRef::Object(12345), "x", "y"}, &error));
   EXPECT_EQ(error, "object #12345 is not in the world (removed)");
@@ -237,7 +228,7 @@ TEST(LiveWorldTest, ARefusedEditChangesNeitherTheDocumentNorTheSimulation) {
 // ---- structural edits carry the running state ---------------------------------------------
 
 TEST(LiveWorldTest, RemovingAnObjectCarriesTheOthersStateByUid) {
-  LiveWorld live(Fixture());
+  LiveWorld live(test::ArmAndBlocksDocument());
   live.simulator().EnableContactFeedbackAll();
   Advance(live.simulator(), 200);
   const SimState before = live.simulator().GetState();
@@ -264,7 +255,7 @@ TEST(LiveWorldTest, RemovingAnObjectCarriesTheOthersStateByUid) {
 }
 
 TEST(LiveWorldTest, AnAddedObjectStartsAtItsInitialPoseAndTheOthersGoOn) {
-  LiveWorld live(Fixture());
+  LiveWorld live(test::ArmAndBlocksDocument());
   Advance(live.simulator(), 200);
   const SimState before = live.simulator().GetState();
   core::RigidObjectDesc box = test::BoxObject(0.2, 2.0, core::Vec3(3, 0, 0.5));
@@ -278,7 +269,7 @@ TEST(LiveWorldTest, AnAddedObjectStartsAtItsInitialPoseAndTheOthersGoOn) {
 }
 
 TEST(LiveWorldTest, StructuralEditsKeepSolverSleepingAndBodyFlags) {
-  LiveWorld live(Fixture());
+  LiveWorld live(test::ArmAndBlocksDocument());
   core::Simulator& old = live.simulator();
   old.SetSolver({core::SolverType::kQuickStep, 30});
   old.SetSleeping(true);
@@ -351,10 +342,12 @@ TEST(StateCarryTest, WorldIdsAndStatesFollowTheirUids) {
 // ---- gains, revival, initial state --------------------------------------------------------
 
 TEST(LiveWorldTest, GainsEditedLiveSurviveResetAndAreSaved) {
-  LiveWorld live(Fixture());
+  LiveWorld live(test::ArmAndBlocksDocument());
   Advance(live.simulator(), 100);
-  ASSERT_TRUE(live.Do(Param(live.document(), ElementIndex::Driver(0, 0), "servoP", {321.0})));
-  ASSERT_TRUE(live.Do(Param(live.document(), ElementIndex::Driver(0, 0), "dryFriction", {0.75})));
+  ASSERT_TRUE(
+      live.Do(test::ParamEditOf(live.document(), ElementIndex::Driver(0, 0), "servoP", {321.0})));
+  ASSERT_TRUE(live.Do(
+      test::ParamEditOf(live.document(), ElementIndex::Driver(0, 0), "dryFriction", {0.75})));
   EXPECT_EQ(live.simulator().controller(0).drivers()[0].servo_p, 321.0);
   live.simulator().Reset();
   EXPECT_EQ(live.simulator().controller(0).drivers()[0].servo_p, 321.0);
@@ -374,10 +367,11 @@ TEST(LiveWorldTest, GainsEditedLiveSurviveResetAndAreSaved) {
 }
 
 TEST(LiveWorldTest, UndoingTheEditThatStoppedTheSimulationRevivesIt) {
-  LiveWorld live(Fixture());
+  LiveWorld live(test::ArmAndBlocksDocument());
   Advance(live.simulator(), 100);
   const SimState recorded = live.simulator().GetState();
-  ASSERT_TRUE(live.Do(Param(live.document(), ElementIndex::Settings(), "gravity", {0, 0, -1e20})));
+  ASSERT_TRUE(live.Do(
+      test::ParamEditOf(live.document(), ElementIndex::Settings(), "gravity", {0, 0, -1e20})));
   for (int i = 0; i < 100 && !live.simulator().halted(); ++i) live.simulator().Simulate(kStep);
   ASSERT_TRUE(live.simulator().halted());
   EXPECT_EQ(live.simulator().Simulate(kStep), core::StepStatus::kError);
@@ -396,9 +390,10 @@ TEST(LiveWorldTest, UndoingTheEditThatStoppedTheSimulationRevivesIt) {
 }
 
 TEST(LiveWorldTest, AStructuralEditOfAStoppedSimulationStartsItFromTheInitialState) {
-  LiveWorld live(Fixture());
+  LiveWorld live(test::ArmAndBlocksDocument());
   Advance(live.simulator(), 100);
-  ASSERT_TRUE(live.Do(Param(live.document(), ElementIndex::Settings(), "gravity", {0, 0, -1e20})));
+  ASSERT_TRUE(live.Do(
+      test::ParamEditOf(live.document(), ElementIndex::Settings(), "gravity", {0, 0, -1e20})));
   for (int i = 0; i < 100 && !live.simulator().halted(); ++i) live.simulator().Simulate(kStep);
   ASSERT_TRUE(live.simulator().halted());
   ASSERT_TRUE(
@@ -421,7 +416,7 @@ TEST(LiveWorldTest, AStructuralEditOfAStoppedSimulationStartsItFromTheInitialSta
 }
 
 TEST(LiveWorldTest, TheCurrentStateBecomesWhatResetStartsFrom) {
-  LiveWorld live(Fixture());
+  LiveWorld live(test::ArmAndBlocksDocument());
   Advance(live.simulator(), 250);  // the falling block is still falling
   core::Simulator& simulator = live.simulator();
   const core::Pose pose = simulator.GetObjectPose(2);
@@ -451,7 +446,7 @@ TEST(LiveWorldTest, TheCurrentStateBecomesWhatResetStartsFrom) {
 // a slider drag is one entry; when the simulation ran during it, undo applies the old value live
 // instead of restoring the state from before the drag (which would throw the run away)
 TEST(LiveWorldTest, UndoOfAGroupThatSpannedSimulatedTimeDoesNotRewind) {
-  LiveWorld live(Fixture());
+  LiveWorld live(test::ArmAndBlocksDocument());
   const core::ElementRef block = core::ElementRef::Object(live.document().desc().objects[0].uid);
   live.BeginGroup("friction drag");
   for (int k = 1; k <= 5; ++k) {
@@ -464,13 +459,13 @@ TEST(LiveWorldTest, UndoOfAGroupThatSpannedSimulatedTimeDoesNotRewind) {
   ASSERT_TRUE(live.Undo());
   EXPECT_EQ(live.simulator().time(), time);  // not rewound to the start of the drag
   EXPECT_EQ(live.document().desc().objects[0].sim.surface.friction,
-            Fixture().desc().objects[0].sim.surface.friction);
+            test::ArmAndBlocksDocument().desc().objects[0].sim.surface.friction);
   EXPECT_EQ(live.simulator().world().objects[0].sim.surface.friction,
-            Fixture().desc().objects[0].sim.surface.friction);
+            test::ArmAndBlocksDocument().desc().objects[0].sim.surface.friction);
 }
 
 TEST(LiveWorldTest, ObserversOutliveStructuralEditsAndTargetsEndWithThem) {
-  LiveWorld live(Fixture());
+  LiveWorld live(test::ArmAndBlocksDocument());
   int steps = 0;
   live.AddStepObserver([&](const core::StepEvent&) { ++steps; });
   const int block = live.simulator().world().ObjectId(0);
@@ -487,14 +482,15 @@ TEST(LiveWorldTest, ObserversOutliveStructuralEditsAndTargetsEndWithThem) {
 }
 
 TEST(LiveWorldTest, AnAddedObjectIsCheckedByTheTable) {
-  LiveWorld live(Fixture());
+  LiveWorld live(test::ArmAndBlocksDocument());
   core::RigidObjectDesc bad = live.document().desc().objects[0];
   bad.uid = 0;
   bad.sim.surface.restitution = 1.5;
   std::string error;
   EXPECT_FALSE(live.Do(core::MakeAddObjectEdit(live.document(), bad), &error));
   EXPECT_THAT(error, ::testing::HasSubstr("kRestitution must be in [0, 1], got 1.5"));
-  EXPECT_EQ(live.document().desc().objects.size(), Fixture().desc().objects.size());
+  EXPECT_EQ(live.document().desc().objects.size(),
+            test::ArmAndBlocksDocument().desc().objects.size());
 }
 
 }  // namespace

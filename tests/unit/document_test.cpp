@@ -13,6 +13,7 @@
 #include "core/edit/edit.h"
 #include "core/edit/history.h"
 #include "core/model/world_compare.h"
+#include "tests/common/edit_support.h"
 #include "tests/common/scene_builders.h"
 #include "tests/common/test_support.h"
 
@@ -39,13 +40,6 @@ core::WorldDesc BoxesWorld() {
 
 std::string FixturePath() {
   return test::DataPath("edit/arm_and_blocks.xml");
-}
-
-WorldDocument LoadFixture() {
-  WorldDocument document;
-  core::Diagnostics diagnostics;
-  EXPECT_TRUE(document.Load(FixturePath(), diagnostics)) << diagnostics.FormatAll();
-  return document;
 }
 
 // the name of the object `ref` resolves to, or "" when it does not resolve
@@ -113,7 +107,7 @@ TEST(DocumentTest, RefsSurviveRenameReorderAddAndRemove) {
 }
 
 TEST(DocumentTest, ResolveAndRefOfRoundTripEveryElementOfALoadedWorld) {
-  const WorldDocument document = LoadFixture();
+  const WorldDocument document = test::ArmAndBlocksDocument();
   const core::WorldDesc& world = document.desc();
   ASSERT_EQ(world.robots.size(), 1u);
   std::vector<ElementIndex> elements = {ElementIndex::Settings(), ElementIndex::Terrain(0),
@@ -133,7 +127,7 @@ TEST(DocumentTest, ResolveAndRefOfRoundTripEveryElementOfALoadedWorld) {
 }
 
 TEST(DocumentTest, RefsToMissingElementsFailWithAMessage) {
-  const WorldDocument document = LoadFixture();
+  const WorldDocument document = test::ArmAndBlocksDocument();
   const core::RobotDesc& robot = document.desc().robots[0];
   std::string error;
   EXPECT_FALSE(document.Resolve(ElementRef::Link(robot.uid, 99), &error));
@@ -147,7 +141,7 @@ TEST(DocumentTest, RefsToMissingElementsFailWithAMessage) {
 }
 
 TEST(DocumentTest, RevisionNamesTheContentThroughUndoRedoAndSave) {
-  WorldDocument document = LoadFixture();
+  WorldDocument document = test::ArmAndBlocksDocument();
   EXPECT_FALSE(document.dirty());
   EXPECT_EQ(document.path(), FixturePath());
   const core::Revision loaded = document.revision();
@@ -182,7 +176,7 @@ TEST(DocumentTest, RevisionNamesTheContentThroughUndoRedoAndSave) {
 }
 
 TEST(DocumentTest, ASavedDocumentLoadsBackEqual) {
-  WorldDocument document = LoadFixture();
+  WorldDocument document = test::ArmAndBlocksDocument();
   const ElementRef block = *document.RefOf(ElementIndex::Object(2));
   ASSERT_TRUE(Do(&document, *core::MakeParamEdit(document, block, "kRestitution", {0.75})));
   ASSERT_TRUE(Do(&document, *core::MakeRenameEdit(document, block, "moved block")));
@@ -199,7 +193,7 @@ TEST(DocumentTest, ASavedDocumentLoadsBackEqual) {
 }
 
 TEST(DocumentTest, AFailedSaveKeepsTheDocumentDirtyAndSaysWhy) {
-  WorldDocument document = LoadFixture();
+  WorldDocument document = test::ArmAndBlocksDocument();
   const ElementRef block = *document.RefOf(ElementIndex::Object(0));
   ASSERT_TRUE(Do(&document, *core::MakeParamEdit(document, block, "kFriction", {0.9})));
   core::Diagnostics diagnostics;

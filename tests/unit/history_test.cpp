@@ -12,6 +12,7 @@
 #include "core/edit/document.h"
 #include "core/edit/edit.h"
 #include "core/model/world_compare.h"
+#include "tests/common/edit_support.h"
 #include "tests/common/scene_builders.h"
 #include "tests/common/test_support.h"
 
@@ -23,14 +24,6 @@ using test::ExpectSameWorld;
 using core::ElementIndex;
 using core::ElementRef;
 using core::WorldDocument;
-
-WorldDocument LoadFixture() {
-  WorldDocument document;
-  core::Diagnostics diagnostics;
-  EXPECT_TRUE(document.Load(test::DataPath("edit/arm_and_blocks.xml"), diagnostics))
-      << diagnostics.FormatAll();
-  return document;
-}
 
 class HistoryTest : public ::testing::Test {
  protected:
@@ -51,7 +44,7 @@ class HistoryTest : public ::testing::Test {
     return document_.desc().objects[object].sim.surface.friction;
   }
 
-  WorldDocument document_ = LoadFixture();
+  WorldDocument document_ = test::ArmAndBlocksDocument();
   core::History history_;
 };
 
@@ -170,14 +163,6 @@ struct EditCase {
   std::function<core::Edit(const WorldDocument&)> make;
 };
 
-core::Edit MakeParam(const WorldDocument& document, const ElementIndex& element,
-                     std::string_view key, core::ParamValue after) {
-  std::string error;
-  const auto edit = core::MakeParamEdit(document, *document.RefOf(element), key, after, &error);
-  EXPECT_TRUE(edit) << error;
-  return *edit;
-}
-
 core::Pose Moved(const core::Pose& pose) {
   core::Pose moved = pose;
   moved.translation() += core::Vec3(0.1, -0.2, 0.3);
@@ -188,19 +173,22 @@ core::Pose Moved(const core::Pose& pose) {
 std::vector<EditCase> EveryKindOfEdit() {
   const auto object = [](int i) { return ElementIndex::Object(i); };
   return {
-      {"live row", [object](auto& d) { return MakeParam(d, object(0), "kFriction", {0.1}); }},
-      {"geometry row", [object](auto& d) { return MakeParam(d, object(1), "padding", {0.01}); }},
-      {"simulator row", [object](auto& d) { return MakeParam(d, object(2), "mass", {3.0}); }},
+      {"live row",
+       [object](auto& d) { return test::ParamEditOf(d, object(0), "kFriction", {0.1}); }},
+      {"geometry row",
+       [object](auto& d) { return test::ParamEditOf(d, object(1), "padding", {0.01}); }},
+      {"simulator row",
+       [object](auto& d) { return test::ParamEditOf(d, object(2), "mass", {3.0}); }},
       {"initial row",
        [object](auto& d) {
-         return MakeParam(d, object(2), "transform",
-                          core::PoseToValue(Moved(d.desc().objects[2].pose)));
+         return test::ParamEditOf(d, object(2), "transform",
+                                  core::PoseToValue(Moved(d.desc().objects[2].pose)));
        }},
       {"driver row",
-       [](auto& d) { return MakeParam(d, ElementIndex::Driver(0, 0), "servoP", {250.0}); }},
+       [](auto& d) { return test::ParamEditOf(d, ElementIndex::Driver(0, 0), "servoP", {250.0}); }},
       {"settings row",
        [](auto& d) {
-         return MakeParam(d, ElementIndex::Settings(), "gravity", {0, 0, -1.6});
+         return test::ParamEditOf(d, ElementIndex::Settings(), "gravity", {0, 0, -1.6});
        }},
       {"rename",
        [](auto& d) {
