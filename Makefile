@@ -32,10 +32,11 @@ test: build
 
 # the core and its tests under AddressSanitizer + UndefinedBehaviorSanitizer; the long physics
 # runs (label "physics") and the benchmark smoke run (label "bench") stay in the optimized
-# `make test`
+# `make test` (the benchmarks are not even built here)
 test-asan:
 	$(MAKE) test BUILD=build-asan CTEST_FLAGS="-LE 'physics|bench'" CMAKE_FLAGS="-DCMAKE_BUILD_TYPE=Debug \
 	  -DLAMINA_SANITIZE='address;undefined' -DLAMINA_BUILD_EDITOR=OFF -DLAMINA_BUILD_HEADLESS=OFF \
+	  -DLAMINA_BUILD_BENCHMARKS=OFF \
 	  $(CMAKE_FLAGS)"
 
 # timings from one run: every benchmark repeated, the console shows medians (and the spread);
