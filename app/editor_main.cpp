@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
   app.add_option("--camera", options.camera,
                  "world (default), bodies, or 'target=x,y,z;yaw=deg;pitch=deg;dist=m;fov=deg'");
   app.add_option("--overlay", overlay,
-                 "comma list of contacts,normals,forces,padding,com,frames,bbox (or all)");
+                 "comma list of " + lamina::core::OverlayNames() + " (or all)");
   app.add_option("--size", size, "window size WIDTHxHEIGHT (default 1280x720)");
   app.add_flag("--no-ui", no_ui, "hide the panels (H toggles them)");
   app.add_option("--select", options.selected_id, "world id of the body to select at start")

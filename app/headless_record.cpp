@@ -13,6 +13,7 @@
 
 #include "app/headless_render.h"
 #include "app/headless_render_commands.h"
+#include "core/render/overlay_options.h"
 #include "core/sim/simulator.h"
 #include "ui/platform/image_file.h"
 
@@ -186,7 +187,7 @@ Subcommand AddRecordCommand(CLI::App& app) {
   record->add_option("--camera", options->camera,
                      "world (default), bodies, or 'target=x,y,z;yaw=deg;pitch=deg;dist=m;fov=deg'");
   record->add_option("--overlay", options->overlay,
-                     "comma list of contacts,normals,forces,padding,com,frames,bbox (or all)");
+                     "comma list of " + core::OverlayNames() + " (or all)");
   record
       ->add_option("--msaa", options->samples,
                    "antialiasing samples per pixel: 1 (off) or 4 (default)")

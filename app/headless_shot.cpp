@@ -7,6 +7,7 @@
 #include "app/headless_render.h"
 #include "app/headless_render_commands.h"
 #include "core/render/camera.h"
+#include "core/render/overlay_options.h"
 #include "core/sim/simulator.h"
 #include "ui/platform/image_file.h"
 
@@ -81,7 +82,7 @@ Subcommand AddShotCommand(CLI::App& app) {
   shot->add_option("--camera", options->camera,
                    "world (default), bodies, or 'target=x,y,z;yaw=deg;pitch=deg;dist=m;fov=deg'");
   shot->add_option("--overlay", options->overlay,
-                   "comma list of contacts,normals,forces,padding,com,frames,bbox (or all)");
+                   "comma list of " + core::OverlayNames() + " (or all)");
   shot->add_option("--msaa", options->samples,
                    "antialiasing samples per pixel: 1 (off) or 4 (default)")
       ->check(CLI::IsMember({1, 4}));

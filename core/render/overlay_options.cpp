@@ -9,17 +9,21 @@ namespace lamina::core {
 namespace {
 
 bool* OverlayFlag(const std::string& name, OverlayOptions* options) {
-  if (name == "contacts") return &options->contacts;
-  if (name == "normals") return &options->normals;
-  if (name == "forces") return &options->forces;
-  if (name == "padding") return &options->padding;
-  if (name == "com") return &options->com;
-  if (name == "frames") return &options->frames;
-  if (name == "bbox") return &options->bbox;
+  for (const OverlayToggle& toggle : kOverlayToggles) {
+    if (name == toggle.name) return &(options->*toggle.flag);
+  }
   return nullptr;
 }
 
 }  // namespace
+
+std::string OverlayNames() {
+  std::string names;
+  for (const OverlayToggle& toggle : kOverlayToggles) {
+    names += (names.empty() ? "" : ",") + std::string(toggle.name);
+  }
+  return names;
+}
 
 bool ParseOverlayList(const std::string& list, OverlayOptions* options, std::string* error) {
   if (list.empty() || list == "none") return true;
@@ -27,13 +31,12 @@ bool ParseOverlayList(const std::string& list, OverlayOptions* options, std::str
   std::string name;
   while (std::getline(in, name, ',')) {
     if (name == "all") {
-      std::istringstream all(kOverlayNames);
-      while (std::getline(all, name, ',')) *OverlayFlag(name, options) = true;
+      for (const OverlayToggle& toggle : kOverlayToggles) options->*toggle.flag = true;
       continue;
     }
     bool* flag = OverlayFlag(name, options);
     if (flag == nullptr) {
-      *error = "unknown overlay '" + name + "' (expected a comma list of " + kOverlayNames +
+      *error = "unknown overlay '" + name + "' (expected a comma list of " + OverlayNames() +
                ", or all / none)";
       return false;
     }

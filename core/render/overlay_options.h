@@ -24,8 +24,28 @@ struct OverlayOptions {
   bool operator==(const OverlayOptions&) const = default;
 };
 
-/// Names accepted by ParseOverlayList, comma separated in the text form.
-inline constexpr const char* kOverlayNames = "contacts,normals,forces,padding,com,frames,bbox";
+/// One overlay a user switches: its name (in --overlay lists and on the viewer's panel) and its
+/// flag. Every consumer walks this list; none spells the names again.
+struct OverlayToggle {
+  const char* name;
+  bool OverlayOptions::*flag;
+  const char* help;
+};
+
+inline constexpr OverlayToggle kOverlayToggles[] = {
+    {"contacts", &OverlayOptions::contacts,
+     "contact points (yellow; red where the geometries interpenetrate)"},
+    {"normals", &OverlayOptions::normals, "contact normals"},
+    {"forces", &OverlayOptions::forces, "contact forces"},
+    {"padding", &OverlayOptions::padding,
+     "each body grown by its padding, translucent (the boundary layer)"},
+    {"com", &OverlayOptions::com, "centres of mass of objects and links"},
+    {"frames", &OverlayOptions::frames, "object and link frames (x red, y green, z blue)"},
+    {"bbox", &OverlayOptions::bbox, "oriented bounding boxes of every body"},
+};
+
+/// The toggles' names as a comma list ("contacts,normals,...").
+std::string OverlayNames();
 
 /// Turns on the overlays named in `list` ("contacts,padding"; "all"; "" or "none" for none).
 /// False with `error` naming the unknown entry otherwise.

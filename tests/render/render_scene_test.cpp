@@ -3,6 +3,8 @@
 // defaults, mesh caching across frames, overlays and the overlay list parser; the description
 // drawn at poses that are not its own (WorldPoses), and where those poses come from.
 #include <cmath>
+#include <iterator>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -294,6 +296,29 @@ TEST(OverlayOptionsTest, ParsesListsAndNamesUnknownEntries) {
   OverlayOptions none;
   EXPECT_TRUE(ParseOverlayList("none", &none, &error));
   EXPECT_EQ(none, OverlayOptions());
+  EXPECT_NE(error.find("contacts,normals,forces,padding,com,frames,bbox"), std::string::npos);
+}
+
+// each toggle's name turns on its own flag and no other; "all" is every toggle and every flag
+TEST(OverlayOptionsTest, EveryToggleNamesItsOwnFlag) {
+  constexpr int kFlags = 7;  // the bool members of OverlayOptions
+  ASSERT_EQ(std::size(core::kOverlayToggles), static_cast<size_t>(kFlags));
+  std::string error;
+  OverlayOptions all;
+  ASSERT_TRUE(ParseOverlayList("all", &all, &error));
+  OverlayOptions each;
+  for (const core::OverlayToggle& toggle : core::kOverlayToggles) {
+    OverlayOptions one;
+    ASSERT_TRUE(ParseOverlayList(toggle.name, &one, &error)) << error;
+    EXPECT_TRUE(one.*toggle.flag) << toggle.name;
+    one.*toggle.flag = false;
+    EXPECT_EQ(one, OverlayOptions()) << toggle.name << " turned on another flag";
+    EXPECT_FALSE(each.*toggle.flag) << toggle.name << " shares its flag";
+    each.*toggle.flag = true;
+  }
+  EXPECT_EQ(each, all);
+  EXPECT_TRUE(all.contacts && all.normals && all.forces && all.padding && all.com && all.frames &&
+              all.bbox);
 }
 
 TEST(RenderMeshTest, CreasesStaySharpAndOffsetsGrow) {
