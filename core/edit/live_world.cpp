@@ -88,9 +88,18 @@ bool LiveWorld::ApplyParam(const ParamEdit& edit, std::string* error) {
   const Revision revision = document_.revision();
   if (!edit.Apply(&document_, error)) return false;
   const ElementIndex element = *document_.Resolve(edit.element);
-  if (simulator_->SetParam(element, Params()[edit.param], edit.after, error)) return true;
-  TakeBack(edit, revision);
-  return false;
+  const ParamSpec& spec = Params()[edit.param];
+  if (!simulator_->SetParam(element, spec, edit.after, error)) {
+    TakeBack(edit, revision);
+    return false;
+  }
+  if (spec.apply == ParamApply::kOnReset && AtStart()) simulator_->Reset();
+  return true;
+}
+
+// nothing simulated since the start: the running state is the initial one
+bool LiveWorld::AtStart() const {
+  return simulator_->time() == 0.0 && simulator_->statistics().steps == 0 && !simulator_->halted();
 }
 
 bool LiveWorld::ApplyInitialState(const InitialStateEdit& edit, std::string* error) {

@@ -7,6 +7,9 @@
 //  * ParamEdit: Simulator::SetParam on the element the reference resolves to (live rows from the
 //    next step; padding rebuilds the body's geometry; mass, inertia, centre of mass and preshrink
 //    rebuild the simulation in its state; initial conditions change only what Reset starts from).
+//    An initial condition edited while the simulation has not left its start (time 0, no step
+//    taken: a world just loaded or reset) also moves the running state there (Reset), so that
+//    posing a paused world's bodies moves what is shown; later, only what Reset starts from.
 //  * InitialStateEdit: the initial-condition rows of every element it lists (what Reset starts
 //    from); the running state is untouched.
 //  * Rename, add, remove, move: a new Simulator is built from the document and takes over the
@@ -122,6 +125,7 @@ class LiveWorld {
   void BeginStep(HistoryEntry& entry, HistoryStep step);
   void EndStep(HistoryEntry& entry, HistoryStep step);
   Mark MarkNow() const;
+  bool AtStart() const;
   bool AtMark(const Mark& mark) const;
 
   WorldDocument document_;

@@ -443,6 +443,27 @@ TEST(LiveWorldTest, TheCurrentStateBecomesWhatResetStartsFrom) {
   EXPECT_LT((simulator.GetObjectPose(2).translation() - core::Vec3(2, 0, 0.4)).norm(), 1e-15);
 }
 
+// the pose tool edits a paused world's initial poses: at the start (time 0, no step) the body
+// shown moves with the edit and undo puts it back exactly; once the world has run, only what
+// Reset starts from changes
+TEST(LiveWorldTest, AnInitialPoseEditedAtTheStartMovesTheBodyAndUndoPutsItBack) {
+  LiveWorld live(test::ArmAndBlocksDocument());
+  const core::Pose start = live.simulator().GetObjectPose(2);
+  const core::Pose raised = Raised(live.document().desc().objects[2].pose);
+  ASSERT_TRUE(live.Do(test::ParamEditOf(live.document(), ElementIndex::Object(2), "transform",
+                                        core::PoseToValue(raised))));
+  EXPECT_LT((live.simulator().GetObjectPose(2).matrix() - raised.matrix()).norm(), 1e-14);
+  EXPECT_EQ(live.simulator().time(), 0.0);
+  ASSERT_TRUE(live.Undo());
+  EXPECT_EQ(live.simulator().GetObjectPose(2).matrix(), start.matrix());
+
+  Advance(live.simulator(), 10);
+  const core::Pose running = live.simulator().GetObjectPose(2);
+  ASSERT_TRUE(live.Do(test::ParamEditOf(live.document(), ElementIndex::Object(2), "transform",
+                                        core::PoseToValue(raised))));
+  EXPECT_EQ(live.simulator().GetObjectPose(2).matrix(), running.matrix());
+}
+
 // a slider drag is one entry; when the simulation ran during it, undo applies the old value live
 // instead of restoring the state from before the drag (which would throw the run away)
 TEST(LiveWorldTest, UndoOfAGroupThatSpannedSimulatedTimeDoesNotRewind) {
