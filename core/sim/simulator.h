@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/contact/collision_geometry.h"
+#include "core/contact/surface_blend.h"
 #include "core/control/robot_controller.h"
 #include "core/diagnostics.h"
 #include "core/model/params.h"
@@ -39,6 +40,7 @@ namespace lamina::core {
 
 class OdeRobot;
 class Simulator;
+struct PairLaw;
 
 /// A handle on one body of a simulation (a terrain, a rigid object or a robot link): cheap to
 /// copy, valid as long as its Simulator. Every setter takes effect on the running simulation and
@@ -258,6 +260,13 @@ class Simulator {
 
   // contacts at the current state (after clustering), one entry per touching pair
   const std::vector<ContactPair>& contact_pairs() const { return contacts_.pairs(); }
+  /// The blend of the current surfaces of bodies a and b (BlendSurfaces, surface_blend.h): the
+  /// one function the contact joints, the step guard and readouts (contact_readout.h) take it
+  /// from. std::out_of_range for an id that is not a terrain, object or link.
+  BlendedSurface PairSurface(int a, int b) const;
+  /// What every contact joint of `pair` shares in a step of `step` s (MakePairLaw with
+  /// PairSurface, contact_rows.h): the joints are built from it.
+  PairLaw PairContactLaw(const ContactPair& pair, double step) const;
 
   // contact feedback, recorded only for pairs that asked for it (see contact_feedback.h for the
   // sign convention). b = -1 means "any body" in the queries.
@@ -331,7 +340,6 @@ class Simulator {
   void DetectContacts();
   void UpdateBounds();
   bool MayCollide(const BodyRecord& a, const BodyRecord& b) const;
-  double PairStiffness(const ContactPair& pair) const;
   void CaptureBodyState(SimState* state, bool with_controllers) const;
   void RestoreState(const SimState& state);
 
