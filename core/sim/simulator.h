@@ -220,8 +220,18 @@ class Simulator {
   void SetDragTarget(const Vec3& target);
   void EndDrag();
   bool dragging() const { return drag_.active; }
+  /// The turn drag (interaction.h): grabs body `id` with an implicit rotational spring that turns
+  /// it towards a target orientation (initially its own), scaled by its rotational effective
+  /// inertia (a robot link's articulated one). False for what StartDrag refuses and for a link no
+  /// free hinge turns; std::invalid_argument for bad settings (max_stretch is not used). Ends
+  /// like a grab (EndDrag) and replaces it: one grab at a time.
+  bool StartRotateDrag(int id, const DragSpringSettings& settings = {});
+  /// The orientation (world) the turn drag turns the body's frame towards, held like
+  /// SetDragTarget; nothing without a turn drag. std::invalid_argument for a matrix that is not a
+  /// rotation.
+  void SetDragTargetOrientation(const Mat3& rotation);
   /// The grab: body, point, target, spring parameters and the force on the body in the last
-  /// step (N, world).
+  /// step (N, world); for a turn drag its target orientation, spring and torque (N·m, world).
   const DragState& drag() const { return drag_; }
   /// Body `id` becomes kinematic and moves, at constant velocity, to reach the frame `target`
   /// after `duration` s of simulated time (a step if 0), then stops there; it pushes what it
@@ -366,9 +376,14 @@ class Simulator {
   // interaction (simulator_interaction.cpp)
   void MoveKinematicTargets(double step);
   void AddDragJoint(double step);
+  void AddTurnJoint(double step);
   void AcceptInteraction(double step);
   void ClearInteraction();
+  std::vector<bool> FreeJoints(int robot) const;
   double EffectiveMassAt(int id, const Vec3& point) const;
+  double EffectiveInertiaOf(int id) const;
+  bool TurnSpringOf(int id, const DragSpringSettings& settings, DragState* drag) const;
+  bool CanGrab(int id) const;
   void RescaleDrag();
   std::vector<int> SharingBody(int id) const;
 
