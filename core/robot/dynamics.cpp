@@ -106,9 +106,11 @@ MatX MassMatrix(const RobotDesc& robot, const VecX& q, const std::vector<bool>& 
   return mass;
 }
 
-double EffectiveMassAt(const RobotDesc& robot, const VecX& q, const std::vector<bool>& free,
-                       int link, const Vec3& point) {
-  const MatX jacobian = PointJacobian(robot, LinkTransforms(robot, q), free, link, point);
+namespace {
+
+// 3 / trace(J M⁻¹ Jᵀ) for a 3 x n Jacobian; inf when J moves nothing
+double ThreeOverTrace(const RobotDesc& robot, const VecX& q, const std::vector<bool>& free,
+                      const MatX& jacobian) {
   if (jacobian.isZero(0.0)) return kInf;
   MatX mass = MassMatrix(robot, q, free);
   // joints that move nothing with mass (or are not free) would make M singular: a tiny
@@ -118,6 +120,20 @@ double EffectiveMassAt(const RobotDesc& robot, const VecX& q, const std::vector<
   const MatX solved = mass.ldlt().solve(jacobian.transpose());
   const double trace = (jacobian * solved).trace();
   return trace > 0.0 ? 3.0 / trace : kInf;
+}
+
+}  // namespace
+
+double EffectiveMassAt(const RobotDesc& robot, const VecX& q, const std::vector<bool>& free,
+                       int link, const Vec3& point) {
+  return ThreeOverTrace(robot, q, free,
+                        PointJacobian(robot, LinkTransforms(robot, q), free, link, point));
+}
+
+double EffectiveInertiaOf(const RobotDesc& robot, const VecX& q, const std::vector<bool>& free,
+                          int link) {
+  return ThreeOverTrace(robot, q, free,
+                        RotationJacobian(robot, LinkTransforms(robot, q), free, link));
 }
 
 }  // namespace lamina::core

@@ -34,4 +34,11 @@ MatX MassMatrix(const RobotDesc& robot, const VecX& q, const std::vector<bool>& 
 double EffectiveMassAt(const RobotDesc& robot, const VecX& q, const std::vector<bool>& free,
                        int link, const Vec3& point);
 
+/// The rotational counterpart (MuJoCo's 1 / body_invweight0[rot]): 3 / trace(J_ω M⁻¹ J_ωᵀ) with
+/// J_ω link `link`'s angular Jacobian over the free joints (kg·m²). A link that no free revolute
+/// joint turns has infinite effective inertia; one turned by a single hinge has 3x its inertia
+/// about the hinge.
+double EffectiveInertiaOf(const RobotDesc& robot, const VecX& q, const std::vector<bool>& free,
+                          int link);
+
 }  // namespace lamina::core

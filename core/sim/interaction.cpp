@@ -55,4 +55,29 @@ double RigidEffectiveMass(double mass, const Mat3& inertia, const Vec3& r) {
   return 3.0 / trace;
 }
 
+TurnSpring MakeTurnSpring(double inertia, double mass, double gravity,
+                          const DragSpringSettings& settings) {
+  const double omega = 2.0 * kPi * settings.frequency;
+  const double g = gravity > 0.0 ? gravity : kStandardGravity;
+  return {inertia * omega * omega, 2.0 * settings.damping_ratio * inertia * omega,
+          settings.max_force_per_weight * g * std::sqrt(mass * inertia)};
+}
+
+double TurnScale(const TurnSpring& spring, const Vec3& turn, const Vec3& angular_velocity,
+                 double h) {
+  const double bound = spring.stiffness * turn.norm() +
+                       (spring.stiffness * h + spring.damping) * angular_velocity.norm();
+  return bound > spring.max_torque ? spring.max_torque / bound : 1.0;
+}
+
+Vec3 CappedTurn(const Mat3& from, const Mat3& to, double max_turn) {
+  const Vec3 turn = MomentFromRotation(to * from.transpose());
+  const double angle = turn.norm();
+  return angle <= max_turn ? turn : Vec3(turn * (max_turn / angle));
+}
+
+double RigidEffectiveInertia(const Mat3& inertia) {
+  return 3.0 / inertia.inverse().trace();
+}
+
 }  // namespace lamina::core

@@ -22,6 +22,27 @@
 // response to an SPD effective mass only shrinks it). Klamp't's SimTest uses a fixed 10 N/m
 // spring with no damping (a 10 kg link barely moves while a 50 g object oscillates).
 //
+// The turn drag (MuJoCo simulate's Ctrl+drag rotate) is the mouse spring's rotational
+// counterpart: a spring that turns the grabbed body towards a target orientation R_t with the
+// torque τ = k_r θ â − c_r ω (θ â = log(R_t Rᵀ), the angular displacement from the body's frame R
+// to the target, world; ω its angular velocity). It is implicit too: an ODE angular motor in user
+// mode with three world axes, each a bilateral stop at angle −θ âᵢ whose stop ERP/CFM are k_r and
+// c_r as above, so ODE solves τ = k_r θ â − (k_r h + c_r) ω⁺ against the body's full inertia.
+// k_r = I (2π f)², c_r = 2 ζ I (2π f) with I the rotational effective inertia, MuJoCo's
+// 1 / body_invweight0[rot] made like the effective mass: I = 3 / trace(J_ω M⁻¹ J_ωᵀ) (J_ω the
+// body's angular Jacobian), i.e. 3 / trace(I_com⁻¹) for a free body (independent of its
+// orientation, so it is computed once per grab) and the articulated value for a robot link (3x
+// the inertia about the hinge for a link turned by one revolute joint, as for the effective mass).
+// About a principal axis with inertia I_a the turn then has natural frequency f √(I / I_a): exact
+// for a body with equal principal inertias. Two caps, as for the point: the displacement is held
+// within kMaxDragTurn = π/2 of the body (past π the logarithm's axis flips, so a target dragged
+// beyond half a turn would turn the body back the other way), and the torque at
+// max_force_per_weight m |g| √(I / m) = max_force_per_weight |g| √(m I) (the force cap acting at
+// the radius of gyration): before each step k_r and c_r are scaled so that the implicit torque
+// bound k_r |θ| + (k_r h + c_r) |ω| stays under it (TurnScale). For a free body turned only by the
+// spring (no contacts) the torque then never exceeds the cap. MuJoCo applies its rotational
+// perturbation as an explicit torque; Klamp't has none.
+//
 // A kinematic target (Box2D's b2Body_SetTargetTransform) makes a body kinematic and gives it the
 // constant velocity that reaches the target frame after the given time, landing exactly on it in
 // the step that ends the move; a kinematic body pushes what it meets as if it had infinite mass
@@ -72,7 +93,32 @@ Vec3 CapStretch(const Vec3& point, const Vec3& target, double max_stretch);
 /// 3 / trace(I/m + [r]× I⁻¹ [r]×ᵀ), `inertia` about the COM in world axes.
 double RigidEffectiveMass(double mass, const Mat3& inertia, const Vec3& r);
 
-/// A grab in progress (Simulator::StartDrag).
+/// The largest angular displacement the turn drag's spring is given (rad).
+inline constexpr double kMaxDragTurn = kPi / 2;
+
+/// The rotational spring of a turn drag: stiffness (N·m/rad), damping (N·m·s/rad) and torque
+/// cap (N·m).
+struct TurnSpring {
+  double stiffness = 0.0;
+  double damping = 0.0;
+  double max_torque = 0.0;
+};
+/// The turn spring of a body of mass `mass` (kg) and rotational effective inertia `inertia`
+/// (kg·m²) for gravity magnitude `gravity` (m/s², 9.81 if 0): k_r = I (2π f)²,
+/// c_r = 2 ζ I (2π f), cap max_force_per_weight |g| √(m I).
+TurnSpring MakeTurnSpring(double inertia, double mass, double gravity,
+                          const DragSpringSettings& settings);
+/// The scale (<= 1) of k_r and c_r for a step of `h` s that keeps k_r |turn| + (k_r h + c_r) |ω|
+/// under the cap; `turn` is θ â (rad, capped), `angular_velocity` ω (rad/s).
+double TurnScale(const TurnSpring& spring, const Vec3& turn, const Vec3& angular_velocity,
+                 double h);
+/// θ â = log(to fromᵀ) (rad, world), shortened to at most `max_turn`.
+Vec3 CappedTurn(const Mat3& from, const Mat3& to, double max_turn);
+/// The rotational effective inertia of a free rigid body, 3 / trace(I⁻¹), `inertia` about its
+/// centre of mass (any axes: the trace does not depend on them).
+double RigidEffectiveInertia(const Mat3& inertia);
+
+/// A grab in progress (Simulator::StartDrag, or StartRotateDrag for a turn drag).
 struct DragState {
   bool active = false;
   int body = -1;                    ///< world id of the grabbed object or link
@@ -81,7 +127,12 @@ struct DragState {
   double effective_mass = 0.0;      ///< kg at the grabbed point
   DragSpringSettings settings;
   DragSpring spring;
-  Vec3 force = Vec3::Zero();  ///< on the body in the last step (N, world)
+  Vec3 force = Vec3::Zero();  ///< on the body in the last step (N, world); 0 for a turn drag
+  bool rotating = false;      ///< a turn drag: the rotational spring instead of the point's
+  Mat3 target_rotation = Mat3::Identity();  ///< the body frame's target orientation, world
+  double effective_inertia = 0.0;           ///< kg·m², rotational (turn drag)
+  TurnSpring turn_spring;
+  Vec3 torque = Vec3::Zero();  ///< of the turn spring on the body in the last step (N·m, world)
 };
 
 /// The ODE side of the mouse spring (its force readout), kept out of this header.

@@ -11,7 +11,6 @@
 
 #include <ode/ode.h>
 
-#include "core/contact/surface_blend.h"
 #include "core/sim/ode_conversions.h"
 #include "core/sim/ode_handle.h"
 #include "core/sim/ode_robot.h"
@@ -338,7 +337,8 @@ Simulator::SubStep Simulator::TrySubStep(double* h, StepProgress* progress, bool
   }
   if (unreliable) progress->flags |= kStepUnreliable;
   const int corrected = guard_.CorrectInstabilities(
-      &bodies_, contacts_.before(), [this](const ContactPair& pair) { return PairStiffness(pair); },
+      &bodies_, contacts_.before(),
+      [this](const ContactPair& pair) { return PairSurface(pair.a, pair.b).stiffness; },
       world_.settings.gravity, *h);
   if (corrected > 0) {
     progress->flags |= kStepCorrected;
@@ -483,10 +483,6 @@ bool Simulator::MayCollide(const BodyRecord& a, const BodyRecord& b) const {
                               std::make_pair(std::min(a.link, b.link), std::max(a.link, b.link)));
   }
   return true;
-}
-
-double Simulator::PairStiffness(const ContactPair& pair) const {
-  return BlendSurfaces(sim_params(pair.a).surface, sim_params(pair.b).surface).stiffness;
 }
 
 }  // namespace lamina::core

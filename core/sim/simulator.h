@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/contact/collision_geometry.h"
+#include "core/contact/surface_blend.h"
 #include "core/control/robot_controller.h"
 #include "core/diagnostics.h"
 #include "core/model/params.h"
@@ -39,6 +40,7 @@ namespace lamina::core {
 
 class OdeRobot;
 class Simulator;
+struct PairLaw;
 
 /// A handle on one body of a simulation (a terrain, a rigid object or a robot link): cheap to
 /// copy, valid as long as its Simulator. Every setter takes effect on the running simulation and
@@ -218,8 +220,18 @@ class Simulator {
   void SetDragTarget(const Vec3& target);
   void EndDrag();
   bool dragging() const { return drag_.active; }
+  /// The turn drag (interaction.h): grabs body `id` with an implicit rotational spring that turns
+  /// it towards a target orientation (initially its own), scaled by its rotational effective
+  /// inertia (a robot link's articulated one). False for what StartDrag refuses and for a link no
+  /// free hinge turns; std::invalid_argument for bad settings (max_stretch is not used). Ends
+  /// like a grab (EndDrag) and replaces it: one grab at a time.
+  bool StartRotateDrag(int id, const DragSpringSettings& settings = {});
+  /// The orientation (world) the turn drag turns the body's frame towards, held like
+  /// SetDragTarget; nothing without a turn drag. std::invalid_argument for a matrix that is not a
+  /// rotation.
+  void SetDragTargetOrientation(const Mat3& rotation);
   /// The grab: body, point, target, spring parameters and the force on the body in the last
-  /// step (N, world).
+  /// step (N, world); for a turn drag its target orientation, spring and torque (N·m, world).
   const DragState& drag() const { return drag_; }
   /// Body `id` becomes kinematic and moves, at constant velocity, to reach the frame `target`
   /// after `duration` s of simulated time (a step if 0), then stops there; it pushes what it
@@ -258,6 +270,13 @@ class Simulator {
 
   // contacts at the current state (after clustering), one entry per touching pair
   const std::vector<ContactPair>& contact_pairs() const { return contacts_.pairs(); }
+  /// The blend of the current surfaces of bodies a and b (BlendSurfaces, surface_blend.h): the
+  /// one function the contact joints, the step guard and readouts (contact_readout.h) take it
+  /// from. std::out_of_range for an id that is not a terrain, object or link.
+  BlendedSurface PairSurface(int a, int b) const;
+  /// What every contact joint of `pair` shares in a step of `step` s (MakePairLaw with
+  /// PairSurface, contact_rows.h): the joints are built from it.
+  PairLaw PairContactLaw(const ContactPair& pair, double step) const;
 
   // contact feedback, recorded only for pairs that asked for it (see contact_feedback.h for the
   // sign convention). b = -1 means "any body" in the queries.
@@ -331,7 +350,6 @@ class Simulator {
   void DetectContacts();
   void UpdateBounds();
   bool MayCollide(const BodyRecord& a, const BodyRecord& b) const;
-  double PairStiffness(const ContactPair& pair) const;
   void CaptureBodyState(SimState* state, bool with_controllers) const;
   void RestoreState(const SimState& state);
 
@@ -358,9 +376,14 @@ class Simulator {
   // interaction (simulator_interaction.cpp)
   void MoveKinematicTargets(double step);
   void AddDragJoint(double step);
+  void AddTurnJoint(double step);
   void AcceptInteraction(double step);
   void ClearInteraction();
+  std::vector<bool> FreeJoints(int robot) const;
   double EffectiveMassAt(int id, const Vec3& point) const;
+  double EffectiveInertiaOf(int id) const;
+  bool TurnSpringOf(int id, const DragSpringSettings& settings, DragState* drag) const;
+  bool CanGrab(int id) const;
   void RescaleDrag();
   std::vector<int> SharingBody(int id) const;
 

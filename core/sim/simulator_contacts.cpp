@@ -28,13 +28,22 @@ RowSettings ContactRowSettings(const SimSettings& s) {
 
 }  // namespace
 
+BlendedSurface Simulator::PairSurface(int a, int b) const {
+  RequireBody(a);
+  RequireBody(b);
+  return BlendSurfaces(sim_params(a).surface, sim_params(b).surface);
+}
+
+PairLaw Simulator::PairContactLaw(const ContactPair& pair, double step) const {
+  return MakePairLaw(pair, PairSurface(pair.a, pair.b), step);
+}
+
 void Simulator::AddContactJoints(const ContactPair& pair, const Vec3* anchor_velocities,
                                  double step) {
   if (pair.contacts.empty()) return;
   dBodyID body_a = bodies_[pair.a].body;
   dBodyID body_b = bodies_[pair.b].body;
-  const PairLaw law = MakePairLaw(
-      pair, BlendSurfaces(sim_params(pair.a).surface, sim_params(pair.b).surface), step);
+  const PairLaw law = PairContactLaw(pair, step);
   if (!law.pushes) return;
   const ContactFeedbackRecord* record =
       feedback_.empty() ? nullptr : feedback_.Find(pair.a, pair.b);
@@ -48,7 +57,7 @@ void Simulator::AddContactJoints(const ContactPair& pair, const Vec3* anchor_vel
     dJointID id = dJointCreateContact(ode_world_.get(), contact_group_.get(), &joint);
     dJointAttach(id, body_a, body_b);
     FeedbackRecorder::Slot* slot =
-        record ? feedback_.Attach(id, *record, pair.a, contact, law.surface.friction) : nullptr;
+        record ? feedback_.Attach(id, *record, pair.a, contact, row.mu) : nullptr;
     if (!row.core) continue;
     const dContact core = ToOdeContact(row, contact, true);
     dJointID core_id = dJointCreateContact(ode_world_.get(), contact_group_.get(), &core);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The mouse spring's pure parts (interaction.h) and the effective mass at a point (MuJoCo's
-// 3 / trace(J M⁻¹ Jᵀ)) of a free rigid body and of robots (core/robot/dynamics.h).
+// The mouse spring's and the turn drag's pure parts (interaction.h) and the effective mass at a
+// point (MuJoCo's 3 / trace(J M⁻¹ Jᵀ)) and rotational effective inertia (3 / trace(J_ω M⁻¹ J_ωᵀ))
+// of a free rigid body and of robots (core/robot/dynamics.h).
 #include "core/sim/interaction.h"
 
 #include <gtest/gtest.h>
@@ -45,6 +46,42 @@ TEST(DragSpringTest, TheTargetIsHeldWithinTheMaximumStretch) {
   EXPECT_NEAR((capped - Vec3(1, 2, 3.5)).norm(), 0.0, 1e-15);
 }
 
+TEST(TurnSpringTest, StiffnessDampingAndCapScaleWithTheInertia) {
+  const DragSpringSettings settings;  // 5 Hz, critically damped, 20 m g
+  const double omega = 2 * kPi * 5.0;
+  const TurnSpring spring = MakeTurnSpring(0.02, 3.0, 9.8, settings);
+  EXPECT_DOUBLE_EQ(spring.stiffness, 0.02 * omega * omega);  // N·m/rad
+  EXPECT_DOUBLE_EQ(spring.damping, 2 * 0.02 * omega);        // ζ = c / (2 √(k I)) = 1
+  // the force cap 20 m g at the radius of gyration √(I/m)
+  EXPECT_DOUBLE_EQ(spring.max_torque, 20 * 3.0 * 9.8 * std::sqrt(0.02 / 3.0));
+  EXPECT_DOUBLE_EQ(MakeTurnSpring(0.02, 3.0, 0.0, settings).max_torque,
+                   20 * 9.81 * std::sqrt(0.06));
+}
+
+TEST(TurnSpringTest, TheScaleKeepsTheImplicitTorqueBoundUnderTheCap) {
+  const TurnSpring spring{10.0, 0.6, 2.0};
+  EXPECT_EQ(TurnScale(spring, Vec3(0.1, 0, 0), Vec3::Zero(), 0.001), 1.0);  // 1 N·m < 2
+  const Vec3 turn(0, 0, 1.0), spin(3.0, 0, 0);
+  const double scale = TurnScale(spring, turn, spin, 0.001);
+  EXPECT_NEAR(scale * (10.0 * 1.0 + (10.0 * 0.001 + 0.6) * 3.0), 2.0, 1e-12);
+}
+
+TEST(TurnSpringTest, TheTurnIsTheLogarithmShortenedToTheCap) {
+  const Mat3 from = Eigen::AngleAxisd(0.3, Vec3::UnitX()).toRotationMatrix();
+  const Mat3 to = Eigen::AngleAxisd(0.5, Vec3::UnitZ()).toRotationMatrix() * from;
+  EXPECT_NEAR((CappedTurn(from, to, kMaxDragTurn) - Vec3(0, 0, 0.5)).norm(), 0.0, 1e-12);
+  const Mat3 far = Eigen::AngleAxisd(2.5, Vec3::UnitY()).toRotationMatrix() * from;
+  EXPECT_NEAR((CappedTurn(from, far, kMaxDragTurn) - Vec3(0, kPi / 2, 0)).norm(), 0.0, 1e-12);
+}
+
+TEST(EffectiveInertiaTest, AFreeBodyHasThreeOverTheTraceOfItsInverseInertia) {
+  EXPECT_DOUBLE_EQ(RigidEffectiveInertia(0.5 * Mat3::Identity()), 0.5);
+  const Mat3 inertia = Vec3(0.1, 0.2, 0.4).asDiagonal();
+  EXPECT_NEAR(RigidEffectiveInertia(inertia), 3 / (10 + 5 + 2.5), 1e-15);
+  const Mat3 turned = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  EXPECT_NEAR(RigidEffectiveInertia(turned * inertia * turned.transpose()), 3 / 17.5, 1e-12);
+}
+
 TEST(EffectiveMassTest, AFreeBodyHasItsMassAtItsCentreAndLessAwayFromIt) {
   const double m = 2.0, i = 0.1;
   const Mat3 inertia = i * Mat3::Identity();
@@ -77,6 +114,19 @@ TEST(EffectiveMassTest, APendulumPointHasThreeTimesItsScalarInertiaOverLeverSqua
   EXPECT_EQ(EffectiveMassAt(robot, q, {false}, 0, Vec3(L, 0, 0)), kInf);
 }
 
+TEST(EffectiveInertiaTest, AHingedLinkHasThreeTimesItsInertiaAboutTheHinge) {
+  const double m = 1.5, L = 0.8, i = 0.02;
+  const RobotDesc robot =
+      OneLinkRobot(LinkJointAxis::kRevolute, m, i * Mat3::Identity(), Vec3(L, 0, 0));
+  const VecX q = VecX::Constant(1, 0.4);
+  EXPECT_NEAR(EffectiveInertiaOf(robot, q, {true}, 0), 3 * (i + m * L * L), 1e-6);
+  EXPECT_EQ(EffectiveInertiaOf(robot, q, {false}, 0), kInf);
+  // a slider cannot turn its link
+  const RobotDesc slider =
+      OneLinkRobot(LinkJointAxis::kPrismatic, m, i * Mat3::Identity(), Vec3(L, 0, 0));
+  EXPECT_EQ(EffectiveInertiaOf(slider, q, {true}, 0), kInf);
+}
+
 TEST(EffectiveMassTest, AFloatingBaseMatchesTheFreeBodyFormula) {
   // six virtual links (x, y, z slides, then turns about z, y, x) and a body: Klamp't's base
   RobotDesc robot;
@@ -105,6 +155,7 @@ TEST(EffectiveMassTest, AFloatingBaseMatchesTheFreeBodyFormula) {
   const Mat3 world_inertia = frame.linear() * inertia * frame.linear().transpose();
   EXPECT_NEAR(EffectiveMassAt(robot, q, free, 5, point),
               RigidEffectiveMass(m, world_inertia, point - frame.translation()), 1e-6);
+  EXPECT_NEAR(EffectiveInertiaOf(robot, q, free, 5), RigidEffectiveInertia(inertia), 1e-6);
 }
 
 }  // namespace
