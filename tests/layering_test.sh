@@ -34,8 +34,9 @@ declare -A allowed=(
   [core/edit]="core core/geometry core/model core/io core/contact core/control core/robot core/sim"
   [ui/platform]="core"
   [ui/render]="core core/geometry core/model core/render ui/platform"
-  [ui/panels]="core core/geometry core/model core/io core/contact core/control core/robot core/sim core/render core/edit ui/viewer"
-  [ui/viewer]="core core/geometry core/model core/io core/contact core/control core/robot core/sim core/render core/edit ui/platform ui/render ui/panels"
+  [ui/widgets]=""
+  [ui/panels]="core core/geometry core/model core/io core/contact core/control core/robot core/sim core/render core/edit ui/viewer ui/widgets"
+  [ui/viewer]="core core/geometry core/model core/io core/contact core/control core/robot core/sim core/render core/edit ui/platform ui/render ui/panels ui/widgets"
   [app]="core core/geometry core/model core/io core/contact core/control core/robot core/sim core/render core/edit ui/platform ui/render ui/viewer"
 )
 

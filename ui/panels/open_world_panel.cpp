@@ -43,23 +43,12 @@ void DrawWorldList(ViewerState* state) {
 
 }  // namespace
 
-float OpenWorldPanelTop(float display_height) {
-  // above the status line, leaving room for the panel's list when it is opened
-  return std::max(240.0f, display_height - 300.0f);
-}
-
 void DrawOpenWorldPanel(ViewerState* state) {
+  if (!state->panels.open) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x - 390, OpenWorldPanelTop(display.y)),
-                          ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f - 190, display.y * 0.3f), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(380, 260), ImGuiCond_FirstUseEver);
-  if (state->expand_open_panel) {
-    ImGui::SetNextWindowCollapsed(false, ImGuiCond_Always);
-    state->expand_open_panel = false;
-  } else {
-    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
-  }
-  if (ImGui::Begin("Open world")) {
+  if (ImGui::Begin("Open world", &state->panels.open)) {
     ImGui::TextDisabled("a path, or drop a file onto the window");
     DrawPathField(state);
     DrawWorldList(state);

@@ -31,8 +31,8 @@ void DrawToggles(core::OverlayOptions* overlays) {
 }  // namespace
 
 void DrawOverlaysPanel(ViewerState* state) {
-  ImGui::SetNextWindowPos(ImVec2(10, 300), ImGuiCond_FirstUseEver);
-  if (ImGui::Begin("Overlays", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+  ImGui::SetNextWindowPos(ImVec2(320, 40), ImGuiCond_FirstUseEver);
+  if (ImGui::Begin("Overlays", &state->panels.overlays, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::PushItemWidth(200);
     core::OverlayOptions& overlays = state->overlays;
     DrawToggles(&overlays);

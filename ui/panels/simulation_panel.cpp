@@ -1,14 +1,16 @@
 // SPDX-License-Identifier: MIT
-// Simulation panel: the transport controls and what the simulation is doing.
+// Simulation panel: the transport controls, the mouse tool and what the simulation is doing.
 #include <imgui.h>
 
 #include "ui/panels/panels.h"
+#include "ui/panels/param_widgets.h"
 
 namespace lamina::ui {
 
 namespace {
 
-void DrawTransport(const WorldSession& session, ViewerState* state) {
+void DrawTransport(const PanelContext& context) {
+  ViewerState* state = context.state;
   if (ImGui::Button(state->playing ? "Pause" : "Play", ImVec2(70, 0))) {
     state->playing = !state->playing;
   }
@@ -17,62 +19,88 @@ void DrawTransport(const WorldSession& session, ViewerState* state) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("one physics step (S or Right); Shift: 1/60 s");
   ImGui::SameLine();
   if (ImGui::Button("Reset")) state->requests.reset = true;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the initial state (R or Backspace)");
   float speed = static_cast<float>(state->speed);
   if (ImGui::SliderFloat("speed", &speed, static_cast<float>(kMinSpeed),
                          static_cast<float>(kMaxSpeed), "%.2fx", ImGuiSliderFlags_Logarithmic)) {
     state->speed = speed;
   }
-  int solver = state->solver == core::SolverType::kStep ? 0 : 1;
-  ImGui::Text("solver");
-  ImGui::SameLine();
-  bool changed = ImGui::RadioButton("step", &solver, 0);
-  ImGui::SameLine();
-  changed |= ImGui::RadioButton("quick step", &solver, 1);
-  if (changed) state->solver = solver == 0 ? core::SolverType::kStep : core::SolverType::kQuickStep;
-  ImGui::Checkbox("sleep idle objects", &state->sleep);
-  if (ImGui::IsItemHovered()) {
-    const core::Simulator* simulator = session.simulator();
-    const double sleep_time =
-        simulator ? simulator->world().settings.sleep_time : core::SimSettings{}.sleep_time;
-    ImGui::SetTooltip("objects idle for %.2g s leave the steps until something touches them",
-                      sleep_time);
+}
+
+void DrawToolChoice(ViewerState* state) {
+  struct Choice {
+    const char* name;
+    MouseTool tool;
+    const char* help;
+  };
+  static const Choice kChoices[] = {
+      {"select", MouseTool::kSelect, "click selects; drag turns the camera (Q)"},
+      {"force", MouseTool::kForce, "drag a body: a spring pulls the grabbed point (W)"},
+      {"torque", MouseTool::kTorque, "drag a body: a spring turns it (E)"},
+      {"drag", MouseTool::kKinematic, "drag a body kinematically; release throws it (T)"},
+      {"pose", MouseTool::kPose, "paused: move a body's initial pose; X/Y/Z lock an axis (G)"}};
+  ImGui::TextUnformatted("tool");
+  int i = 0;
+  for (const Choice& choice : kChoices) {
+    if (i++ != 3) ImGui::SameLine(i > 3 ? 0.0f : 45.0f + 75.0f * static_cast<float>(i - 1));
+    if (i == 4) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + 45.0f);
+    if (ImGui::RadioButton(choice.name, state->tool == choice.tool)) state->tool = choice.tool;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", choice.help);
   }
 }
 
-void DrawStatistics(const WorldSession& session, const ViewerState& state) {
-  const core::Simulator* simulator = session.simulator();
-  if (!simulator) {
+void DrawStatistics(const PanelContext& context) {
+  const SessionFrame& frame = context.frame;
+  if (!frame.loaded) {
     ImGui::TextUnformatted("no world loaded");
     return;
   }
-  const core::SimStatistics& statistics = simulator->statistics();
-  ImGui::Text("time          %.3f s", simulator->time());
-  ImGui::Text("real time     %.2fx %s", state.real_time_factor, state.playing ? "" : "(paused)");
-  ImGui::Text("step          %.4g s", simulator->sim_step());
-  ImGui::Text("status        %s", core::StepStatusName(session.last_status()));
-  ImGui::Text("worst status  %s", core::StepStatusName(statistics.worst_status));
-  ImGui::Text("steps         %ld", statistics.steps);
-  ImGui::Text("rollbacks     %ld", statistics.rollbacks);
-  ImGui::Text("contacts      %zu pairs (max %d joints)", simulator->contact_pairs().size(),
-              statistics.max_contacts_in_step);
-  if (simulator->sleeping()) {
-    ImGui::Text("asleep        %d of %d objects", simulator->SleepingObjectCount(),
-                simulator->object_count());
+  ImGui::Text("time        %.3f s", frame.time);
+  ImGui::Text("real time   %.2fx %s", frame.real_time_factor, frame.playing ? "" : "(paused)");
+  ImGui::Text("step        %.4g s (%s)", frame.step,
+              frame.world->settings.solver == core::SolverType::kStep ? "exact" : "quick step");
+  ImGui::Text("status      %s", core::StepStatusName(frame.status));
+  ImGui::Text("steps       %ld", frame.steps);
+  ImGui::Text("contacts    %zu", frame.contacts.size());
+  ImGui::Text("energy      %.4g J (kinetic %.3g)", frame.kinetic_energy + frame.potential_energy,
+              frame.kinetic_energy);
+  ImGui::Text("frame       %.1f ms", context.state->frame_milliseconds);
+  if (!frame.problem.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::TextWrapped("%s", frame.problem.c_str());
+    ImGui::PopStyleColor();
   }
-  ImGui::Text("frame         %.1f ms", state.frame_milliseconds);
-  if (!statistics.error.empty()) ImGui::TextWrapped("error: %s", statistics.error.c_str());
 }
 
 }  // namespace
 
-void DrawSimulationPanel(const WorldSession& session, ViewerState* state) {
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  if (ImGui::Begin("Simulation", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::PushItemWidth(200);
-    DrawTransport(session, state);
+void DrawSimulationPanel(const PanelContext& context) {
+  ImGui::SetNextWindowPos(ImVec2(10, MenuBarHeight() + 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(300, 0), ImVec2(300, 1e6f));
+  if (ImGui::Begin("Simulation", &context.state->panels.simulation,
+                   ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::PushItemWidth(180);
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 280);
+    DrawTransport(context);
+    DrawToolChoice(context.state);
     ImGui::Separator();
-    DrawStatistics(session, *state);
+    DrawStatistics(context);
+    ImGui::PopTextWrapPos();
     ImGui::PopItemWidth();
+  }
+  ImGui::End();
+}
+
+void DrawSettingsPanel(const PanelContext& context) {
+  if (!context.frame.loaded) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f - 200, MenuBarHeight() + 8),
+                          ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(400, 480), ImGuiCond_FirstUseEver);
+  if (ImGui::Begin("Simulation settings", &context.state->panels.settings)) {
+    const ParamRowContext row{*context.frame.world, context.file_world,
+                              core::ElementIndex::Settings(), core::ElementRef::Settings()};
+    DrawParamTable("settings", row, core::ElementKind::kSettings, context.actions);
   }
   ImGui::End();
 }

@@ -6,7 +6,9 @@
 
 namespace lamina::ui {
 
-void DrawStatusLine(const WorldSession& session, const ViewerState& state) {
+void DrawStatusLine(const PanelContext& context) {
+  const SessionFrame& frame = context.frame;
+  const ViewerState& state = *context.state;
   const ImGuiIO& io = ImGui::GetIO();
   const float height = ImGui::GetFrameHeight() + 4.0f;
   ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - height));
@@ -16,14 +18,13 @@ void DrawStatusLine(const WorldSession& session, const ViewerState& state) {
                                  ImGuiWindowFlags_NoSavedSettings |
                                  ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
   if (ImGui::Begin("##status", nullptr, flags)) {
-    const core::Simulator* simulator = session.simulator();
-    const double time = simulator ? simulator->time() : 0.0;
-    const char* status = core::StepStatusName(session.last_status());
-    ImGui::Text("%s  t = %.3f s  %.2fx real time (speed %.2fx)  %s  %.1f ms/frame",
-                state.playing ? "playing" : "paused ", time, state.real_time_factor, state.speed,
-                status, state.frame_milliseconds);
-    const std::string hovered =
-        state.hovered_id >= 0 ? BodyLabel(session.description(), state.hovered_id) : "";
+    ImGui::Text("%s  t = %.3f s  %.2fx real time (speed %.2fx)  %s  %.1f ms/frame%s",
+                frame.playing ? "playing" : "paused ", frame.time, frame.real_time_factor,
+                frame.speed, core::StepStatusName(frame.status), state.frame_milliseconds,
+                frame.dirty ? "  [unsaved]" : "");
+    const std::string hovered = state.hovered_id >= 0 && frame.loaded
+                                    ? BodyDescription(*frame.world, state.hovered_id)
+                                    : "";
     if (!hovered.empty() || !state.message.empty()) {
       ImGui::SameLine();
       ImGui::TextDisabled("| %s", hovered.empty() ? state.message.c_str() : hovered.c_str());

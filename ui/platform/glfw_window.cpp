@@ -59,6 +59,10 @@ bool GlfwWindow::ShouldClose() const {
   return glfwWindowShouldClose(window_) != 0;
 }
 
+void GlfwWindow::SetShouldClose(bool close) {
+  glfwSetWindowShouldClose(window_, close ? GLFW_TRUE : GLFW_FALSE);
+}
+
 void GlfwWindow::BeginFrame() {
   glfwPollEvents();
   ImGui_ImplOpenGL3_NewFrame();

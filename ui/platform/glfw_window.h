@@ -21,6 +21,8 @@ class GlfwWindow {
   /// Opens the window; false (with `error` set) when GLFW or the GL context fails.
   bool Open(const std::string& title, int width, int height, std::string* error);
   bool ShouldClose() const;
+  /// Sets or clears the close request (the editor clears it to ask about unsaved edits first).
+  void SetShouldClose(bool close);
   /// Polls events and starts an ImGui frame.
   void BeginFrame();
   /// Clears the framebuffer to `rgb` and draws the ImGui frame; does not swap.

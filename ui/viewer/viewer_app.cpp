@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
-// The viewer loop. Each frame: input -> panels -> requests -> physics (whole fixed steps for the
-// wall time that passed, times the speed, capped) -> scene extraction -> 3D view -> panels drawn
-// over it -> screenshot -> swap. The 3D view uses the same extraction, camera choice and renderer
-// as `lamina-headless shot`, so the two give the same picture.
+// The editor loop. Each frame: the latest physics frame -> input (keys, mouse tools, camera) ->
+// panels (edits posted to the physics) -> requests -> (lockstep only: the frame's physics steps)
+// -> scene extraction -> 3D view -> tool overlay and panels drawn over it -> screenshot -> swap.
+// The physics runs on its own thread (LiveSession) unless --lockstep. The 3D view uses the same
+// extraction, camera choice and renderer as `lamina-headless shot`, so the two give the same
+// picture.
 #include "ui/viewer/viewer_app.h"
 
 #include <algorithm>
@@ -21,13 +23,16 @@
 #include "core/render/scene_camera.h"
 #include "core/render/scene_extract.h"
 #include "ui/panels/panels.h"
+#include "ui/panels/plots_panel.h"
 #include "ui/platform/glfw_window.h"
 #include "ui/platform/image_file.h"
 #include "ui/render/renderer.h"
-#include "ui/viewer/sim_clock.h"
+#include "ui/viewer/editor_actions.h"
+#include "ui/viewer/frame_trace.h"
+#include "ui/viewer/live_session.h"
+#include "ui/viewer/mouse_tools.h"
 #include "ui/viewer/viewer_input.h"
 #include "ui/viewer/world_files.h"
-#include "ui/viewer/world_session.h"
 
 namespace lamina::ui {
 
@@ -45,9 +50,6 @@ using Clock = std::chrono::steady_clock;
 
 constexpr int kBenchWarmupFrames = 5;
 constexpr double kFrameStepSeconds = 1.0 / 60.0;
-// physics stops for the frame after this much wall time, checked every few steps
-constexpr double kPhysicsBudgetMilliseconds = 30.0;
-constexpr int kStepsPerChunk = 2;
 
 double MillisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -60,7 +62,6 @@ double Median(std::vector<double> values) {
   return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
 
-// every .xml file under `directory`, sorted
 // the hovered body drawn a little lighter
 void HighlightHovered(int hovered_id, core::RenderScene* scene) {
   if (hovered_id < 0) return;
@@ -80,42 +81,51 @@ std::string NextScreenshotName(int* counter) {
 }
 
 struct FrameTimes {
-  std::vector<double> render, frame, physics;
+  std::vector<double> render, frame;
 };
 
 class Viewer {
  public:
-  explicit Viewer(const ViewerOptions& options) : options_(options) {}
+  explicit Viewer(const ViewerOptions& options)
+      : options_(options), session_(!options.lockstep), actions_(&session_) {}
   int Run();
 
  private:
   bool Start();
-  void RunFrame(double wall_seconds);
+  void RunFrame();
+  void DrawPanels();
   void ApplyRequests();
+  void ApplyFileRequests();
   void OpenWorld(const std::string& path, const std::vector<std::string>& sets = {});
-  double AdvanceSimulation(double wall_seconds);
+  void AskOrDo(PendingConfirmation::Action action, const std::string& path = "");
   void DrawView(int width, int height);
   void HandleMouse(int width, int height);
+  void UpdateTitle();
   bool SaveScreenshot(const std::string& path);
   void PrintBenchmark() const;
 
   ViewerOptions options_;
   GlfwWindow window_;
   Renderer renderer_;
-  WorldSession session_;
+  LiveSession session_;
+  EditorActions actions_;
+  MouseTools tools_;
+  PlotPanel plots_;
+  std::shared_ptr<const SessionFrame> frame_ = std::make_shared<SessionFrame>();
   ViewerState state_;
   ViewMouse mouse_;
-  FixedStepClock clock_;
-  RealTimeFactorMeter meter_;
   core::RenderMeshCache meshes_;
   core::RenderScene scene_;
   core::OrbitCamera camera_;
+  FrameTrace trace_;
+  std::string title_;
   bool camera_chosen_ = false;
   bool mouse_moved_ = false;
   bool first_world_failed_ = false;
+  bool quitting_ = false;
   int screenshot_counter_ = 0;
   FrameTimes times_;
-  double last_render_ms_ = 0.0, last_physics_ms_ = 0.0;
+  double last_render_ms_ = 0.0;
 };
 
 bool Viewer::Start() {
@@ -135,98 +145,120 @@ bool Viewer::Start() {
     renderer_.settings().samples = 1;
     renderer_.settings().fxaa = true;
   }
+  if (!options_.trace_path.empty() && !trace_.Open(options_.trace_path, &error)) {
+    std::cerr << "lamina: " << error << "\n";
+    return false;
+  }
   state_.overlays = options_.overlays;
   state_.show_panels = options_.show_panels;
   state_.playing = !options_.paused;
-  state_.sleep = options_.sleep;
   state_.world_files = WorldFilesUnder(options_.worlds_dir);
   state_.worlds_dir = options_.worlds_dir;
-  OpenWorld(options_.world_path, options_.sets);
-  first_world_failed_ = !session_.loaded();
-  if (session_.loaded() && options_.selected_id < session_.description().IdCount()) {
+  session_.SetPlaying(false);  // --time first, then play as asked
+  std::vector<std::string> sets = options_.sets;
+  if (options_.sleep) sets.push_back("settings.sleeping=true");
+  OpenWorld(options_.world_path, sets);
+  first_world_failed_ = !frame_->loaded;
+  if (frame_->loaded && options_.selected_id < frame_->world->IdCount()) {
     state_.selected_id = options_.selected_id;
   }
-  session_.AdvanceTime(options_.start_time);
+  if (options_.start_time > 0.0) {
+    const double seconds = options_.start_time;
+    session_.Post([seconds](core::LiveWorld& world) {
+      world.simulator().Simulate(seconds);
+      return std::string();
+    });
+  }
+  session_.Flush();
+  session_.SetPlaying(state_.playing);
+  frame_ = session_.frame();
   return true;
 }
 
 void Viewer::OpenWorld(const std::string& path, const std::vector<std::string>& sets) {
-  const bool ok = session_.Load(path, sets);
-  std::cerr << session_.load_messages().FormatAll();
+  core::Diagnostics diagnostics;
+  const bool ok = session_.Load(path, sets, diagnostics);
+  std::cerr << diagnostics.FormatAll();
+  state_.load_messages = diagnostics.FormatAll();
+  state_.load_failed = !ok;
   if (!ok) {
     state_.message = "cannot open " + path;
-    state_.expand_open_panel = true;
+    state_.panels.open = true;
     std::cerr << "lamina: " << state_.message << "\n";
     return;
   }
-  window_.SetTitle("Lamina - " + session_.description().name);
-  // the panel shows the world's solver and sleeping (--sleep turns sleeping on for every world)
-  state_.solver = session_.simulator()->solver().type;
-  if (options_.sleep) session_.SetSleeping(true);
-  state_.sleep = session_.simulator()->sleeping();
+  frame_ = session_.frame();
   state_.open_path_input = path;
   state_.selected_id = state_.hovered_id = -1;
-  state_.message = "opened " + session_.path();
+  state_.message = "opened " + frame_->path;
   camera_chosen_ = false;
-  clock_.Clear();
-  meter_.Clear();
+}
+
+// quitting, opening or reverting with unsaved edits asks first (dialogs.cpp)
+void Viewer::AskOrDo(PendingConfirmation::Action action, const std::string& path) {
+  if (frame_->dirty) {
+    state_.confirm = {action, path};
+    return;
+  }
+  switch (action) {
+    case PendingConfirmation::Action::kQuit:
+      quitting_ = true;
+      window_.SetShouldClose(true);
+      break;
+    case PendingConfirmation::Action::kOpen:
+      OpenWorld(path);
+      break;
+    case PendingConfirmation::Action::kRevert:
+      OpenWorld(frame_->path);
+      break;
+    case PendingConfirmation::Action::kNone:
+      break;
+  }
+}
+
+void Viewer::ApplyFileRequests() {
+  ViewerRequests& requests = state_.requests;
+  using Action = PendingConfirmation::Action;
+  for (const std::string& path : window_.TakeDroppedPaths()) requests.open_path = path;
+  if (!requests.open_path.empty()) AskOrDo(Action::kOpen, requests.open_path);
+  if (requests.revert && !frame_->path.empty()) AskOrDo(Action::kRevert);
+  if (requests.quit) AskOrDo(Action::kQuit);
+  if (!requests.open_confirmed.empty()) OpenWorld(requests.open_confirmed);
+  if (requests.revert_confirmed) OpenWorld(frame_->path);
+  if (requests.quit_confirmed) {
+    quitting_ = true;
+    window_.SetShouldClose(true);
+  }
+  if (requests.save && !actions_.Save(*frame_)) state_.requests.save_as = true;
 }
 
 void Viewer::ApplyRequests() {
+  ApplyFileRequests();
   ViewerRequests& requests = state_.requests;
-  for (const std::string& path : window_.TakeDroppedPaths()) requests.open_path = path;
-  if (!requests.open_path.empty()) OpenWorld(requests.open_path);
-  if (requests.reset) {
-    session_.Reset();
-    clock_.Clear();
-    meter_.Clear();
-  }
+  if (requests.reset) actions_.Reset();
   if (requests.reframe) camera_chosen_ = false;
-  const core::Simulator* simulator = session_.simulator();
-  if (simulator && simulator->solver().type != state_.solver) session_.SetSolver(state_.solver);
-  if (simulator && simulator->sleeping() != state_.sleep) session_.SetSleeping(state_.sleep);
-  if (requests.step) session_.Advance(1);
-  if (requests.step_frame && simulator) {
-    session_.Advance(std::max(1, static_cast<int>(kFrameStepSeconds / simulator->sim_step())));
+  if (requests.undo) actions_.Undo();
+  if (requests.redo) actions_.Redo();
+  if (requests.step) actions_.Step(1);
+  if (requests.step_frame && frame_->step > 0.0) {
+    actions_.Step(std::max(1, static_cast<int>(std::lround(kFrameStepSeconds / frame_->step))));
   }
-  const bool screenshot = requests.screenshot;
-  requests = ViewerRequests();
-  requests.screenshot = screenshot;  // taken after the frame is drawn
-}
-
-double Viewer::AdvanceSimulation(double wall_seconds) {
-  const core::Simulator* simulator = session_.simulator();
-  if (!state_.playing || !simulator) {
-    clock_.Clear();
-    return 0.0;
-  }
-  const int steps = clock_.StepsForFrame(wall_seconds, state_.speed, simulator->sim_step());
-  // in chunks, stopping at the wall-time budget so that the panels stay responsive when the
-  // physics is slower than real time (the simulation then runs slower, shown by the factor)
-  const auto start = Clock::now();
-  double simulated = 0.0;
-  for (int done = 0; done < steps;) {
-    const int chunk = std::min(steps - done, kStepsPerChunk);
-    simulated += session_.Advance(chunk);
-    done += chunk;
-    if (done < steps && MillisecondsSince(start) > kPhysicsBudgetMilliseconds) {
-      clock_.Clear();
-      break;
-    }
-  }
-  return simulated;
+  ViewerRequests kept;
+  kept.screenshot = requests.screenshot;  // taken after the frame is drawn
+  kept.save_as = requests.save_as;        // the dialog opens on the next frame
+  requests = kept;
 }
 
 void Viewer::DrawView(int width, int height) {
   const auto start = Clock::now();
   core::OverlayOptions overlays = state_.overlays;
   overlays.selected_id = state_.selected_id;
-  const core::Simulator* simulator = session_.simulator();
-  const std::vector<core::ContactMarker> contacts =
-      simulator ? core::ContactMarkersFromSimulator(*simulator)
-                : std::vector<core::ContactMarker>();
-  core::ExtractScene(session_.description(), session_.poses(), overlays, contacts, &meshes_,
-                     &scene_);
+  if (frame_->loaded) {
+    core::ExtractScene(*frame_->world, frame_->poses, overlays, frame_->contacts, &meshes_,
+                       &scene_);
+  } else {
+    scene_ = core::RenderScene();
+  }
   HighlightHovered(state_.hovered_id, &scene_);
   if (!camera_chosen_) {
     std::string error;
@@ -243,7 +275,14 @@ void Viewer::DrawView(int width, int height) {
 
 void Viewer::HandleMouse(int width, int height) {
   const ViewMouseEvent event = mouse_.Update(height, &camera_);
-  if (!event.over_view || event.dragging || !session_.loaded()) {
+  const ToolInput input{event, scene_, camera_, width, height, *frame_, &state_, &actions_};
+  if (event.pressed != core::MouseButton::kNone && tools_.Press(input)) mouse_.TakeDrag();
+  if (tools_.active()) {
+    tools_.Move(input);
+    if (event.released) tools_.Release(input);
+    return;
+  }
+  if (!event.over_view || event.dragging || !frame_->loaded) {
     if (!event.over_view) state_.hovered_id = -1;
     return;
   }
@@ -262,6 +301,13 @@ void Viewer::HandleMouse(int width, int height) {
   if (event.double_clicked && hit.hit()) camera_.target = hit.point;  // orbit about that point
 }
 
+void Viewer::UpdateTitle() {
+  std::string title = "Lamina";
+  if (frame_->loaded) title += " - " + frame_->world->name + (frame_->dirty ? " *" : "");
+  if (title != title_) window_.SetTitle(title);
+  title_ = title;
+}
+
 bool Viewer::SaveScreenshot(const std::string& path) {
   int width = 0, height = 0;
   const std::vector<std::uint8_t> pixels = window_.ReadPixels(&width, &height);
@@ -271,55 +317,84 @@ bool Viewer::SaveScreenshot(const std::string& path) {
     return false;
   }
   state_.message = "wrote " + path;
-  std::cout << "wrote " << path << " (" << width << "x" << height
-            << ", t=" << (session_.simulator() ? session_.simulator()->time() : 0.0)
+  std::cout << "wrote " << path << " (" << width << "x" << height << ", t=" << frame_->time
             << " s, camera " << core::FormatCamera(camera_) << ")\n";
   return true;
 }
 
-void Viewer::RunFrame(double wall_seconds) {
+void Viewer::DrawPanels() {
+  const PanelContext context{*frame_, frame_->file_world.get(), &state_, &actions_};
+  if (state_.show_panels) {
+    DrawMainMenu(context);
+    const PanelVisibility& panels = state_.panels;
+    if (panels.simulation) DrawSimulationPanel(context);
+    if (panels.world_tree) DrawWorldTree(context);
+    if (panels.inspector) DrawInspector(context);
+    if (panels.robot) DrawRobotPanel(context);
+    if (panels.settings) DrawSettingsPanel(context);
+    if (panels.plots) plots_.Draw(context);
+    if (panels.overlays) DrawOverlaysPanel(&state_);
+    if (panels.open) DrawOpenWorldPanel(&state_);
+    DrawStatusLine(context);
+  }
+  if (state_.panels.help) DrawHelpWindow(&state_);
+  DrawDialogs(context);
+}
+
+void Viewer::RunFrame() {
   window_.BeginFrame();
+  frame_ = session_.frame();
+  actions_.Forget(*frame_);
+  for (const std::string& message : session_.TakeMessages()) {
+    std::cout << "lamina: " << message << "\n";
+    state_.message = message;
+  }
+  state_.playing = session_.playing();
+  const bool was_playing = state_.playing;
   int width = 0, height = 0;
   window_.FramebufferSize(&width, &height);
   HandleShortcuts(&state_);
   if (width > 0 && height > 0) HandleMouse(width, height);
-  if (state_.show_panels) {
-    DrawSimulationPanel(session_, &state_);
-    DrawOverlaysPanel(&state_);
-    DrawWorldPanel(session_, &state_);
-    DrawOpenWorldPanel(&state_);
-    DrawStatusLine(session_, state_);
-  }
+  DrawPanels();
   ApplyRequests();
-  const auto physics_start = Clock::now();
-  const double simulated = AdvanceSimulation(wall_seconds);
-  last_physics_ms_ = MillisecondsSince(physics_start);
-  meter_.AddFrame(wall_seconds, simulated);
-  state_.real_time_factor = meter_.factor();
-  if (width > 0 && height > 0) DrawView(width, height);
+  if (state_.playing != was_playing) session_.SetPlaying(state_.playing);
+  session_.SetSpeed(state_.speed);
+  session_.SetSampledBody(state_.selected_id);
+  if (!session_.threaded()) session_.Advance(kFrameStepSeconds);
+  frame_ = session_.frame();
+  plots_.Add(session_.TakeSamples(), *frame_);
+  UpdateTitle();
+  if (width > 0 && height > 0) {
+    DrawView(width, height);
+    tools_.DrawOverlay(*frame_, camera_, width, height);
+  }
   window_.DrawImGui();
+  trace_.Write(*frame_, state_);
 }
 
 void Viewer::PrintBenchmark() const {
   std::printf(
-      "frames %zu at %dx%d, %d samples%s: median render %.2f ms, physics %.2f ms, "
-      "frame (physics + render + panels + swap) %.2f ms, real-time factor %.2f\n",
+      "frames %zu at %dx%d, %d samples%s: median render %.2f ms, frame (render + panels + swap; "
+      "physics on %s) %.2f ms, real-time factor %.2f\n",
       times_.frame.size(), options_.width, options_.height, renderer_.samples_used(),
-      renderer_.settings().fxaa ? " + FXAA" : "", Median(times_.render), Median(times_.physics),
-      Median(times_.frame), meter_.factor());
+      renderer_.settings().fxaa ? " + FXAA" : "", Median(times_.render),
+      session_.threaded() ? "its own thread" : "this thread", Median(times_.frame),
+      frame_->real_time_factor);
 }
 
 int Viewer::Run() {
   if (!Start()) return 1;
   const int frames =
       options_.bench_frames > 0 ? options_.bench_frames + kBenchWarmupFrames : options_.frames;
-  auto previous = Clock::now();
   bool screenshot_failed = false;
-  for (int frame = 0; !window_.ShouldClose() && (frames == 0 || frame < frames); ++frame) {
+  for (int frame = 0; frames == 0 || frame < frames; ++frame) {
+    if (window_.ShouldClose()) {
+      if (quitting_ || frames > 0 || !frame_->dirty) break;
+      window_.SetShouldClose(false);  // the close button: ask about the unsaved edits first
+      state_.confirm = {PendingConfirmation::Action::kQuit, ""};
+    }
     const auto start = Clock::now();
-    const double wall_seconds = frame == 0 ? 0.0 : MillisecondsSince(previous) / 1000.0;
-    previous = start;
-    RunFrame(wall_seconds);
+    RunFrame();
     const bool last = frames > 0 && frame + 1 == frames;
     if (state_.requests.screenshot) {
       const std::string name = options_.screenshot.empty()
@@ -334,7 +409,6 @@ int Viewer::Run() {
     state_.frame_milliseconds = MillisecondsSince(start);
     if (options_.bench_frames > 0 && frame >= kBenchWarmupFrames) {
       times_.render.push_back(last_render_ms_);
-      times_.physics.push_back(last_physics_ms_);
       times_.frame.push_back(state_.frame_milliseconds);
     }
   }

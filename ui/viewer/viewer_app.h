@@ -32,6 +32,13 @@ struct ViewerOptions {
   int samples = 0;
   bool fxaa = false;     ///< FXAA instead of multisampling (cheaper on software GL)
   int bench_frames = 0;  ///< > 0: time this many frames without vsync and print the medians
+  /// Physics on the window's thread, exactly 1/60 s of simulated time (times the speed) per
+  /// frame, whatever the wall clock: reproducible runs for scripted tests and recordings.
+  /// Otherwise the physics runs on its own thread in real time (LiveSession).
+  bool lockstep = false;
+  /// When set: a JSON line per frame with the selection, the drag, the selected body's state and
+  /// contacts, for scripted UI tests (docs/editor.md, "Scripted tests").
+  std::string trace_path;
 };
 
 /// Runs the viewer until the window closes (or `frames` have been shown). Exit code: 0, or 1 when

@@ -15,16 +15,107 @@ namespace {
 // a press that moved less than this is a click, not a drag (pixels)
 constexpr double kClickSlop = 3.0;
 
-bool Pressed(int glfw_key) {
-  return ImGui::IsKeyPressed(glfw_key, false);
+void ToggleOverlay(ViewerState* state, int i) {
+  bool* toggles[] = {&state->overlays.contacts, &state->overlays.normals, &state->overlays.forces,
+                     &state->overlays.padding,  &state->overlays.com,     &state->overlays.frames,
+                     &state->overlays.bbox};
+  *toggles[i] = !*toggles[i];
 }
 
-void HandleOverlayKeys(core::OverlayOptions* overlays) {
-  bool* toggles[] = {&overlays->contacts, &overlays->normals, &overlays->forces, &overlays->padding,
-                     &overlays->com,      &overlays->frames,  &overlays->bbox};
-  for (int i = 0; i < 7; ++i) {
-    if (Pressed(GLFW_KEY_1 + i)) *toggles[i] = !*toggles[i];
-  }
+template <int kIndex>
+void Overlay(ViewerState* state, bool) {
+  ToggleOverlay(state, kIndex);
+}
+
+template <MouseTool kTool>
+void Tool(ViewerState* state, bool) {
+  state->tool = kTool;
+}
+
+const KeyBinding kKeys[] = {
+    {GLFW_KEY_SPACE, kNoMods, false, "Space", "play / pause",
+     [](ViewerState* s, bool) { s->playing = !s->playing; }},
+    {GLFW_KEY_S, kAnyShift, true, "S or Right", "one step (Shift: 1/60 s)",
+     [](ViewerState* s, bool shift) {
+       (shift ? s->requests.step_frame : s->requests.step) = true;
+     }},
+    {GLFW_KEY_RIGHT, kAnyShift, true, "", "",
+     [](ViewerState* s, bool shift) {
+       (shift ? s->requests.step_frame : s->requests.step) = true;
+     }},
+    {GLFW_KEY_R, kNoMods, false, "R or Backspace", "reset to the initial state",
+     [](ViewerState* s, bool) { s->requests.reset = true; }},
+    {GLFW_KEY_BACKSPACE, kNoMods, false, "", "",
+     [](ViewerState* s, bool) { s->requests.reset = true; }},
+    {GLFW_KEY_LEFT_BRACKET, kNoMods, false, "[", "half speed",
+     [](ViewerState* s, bool) { s->speed = std::max(kMinSpeed, s->speed / 2.0); }},
+    {GLFW_KEY_RIGHT_BRACKET, kNoMods, false, "]", "double speed",
+     [](ViewerState* s, bool) { s->speed = std::min(kMaxSpeed, s->speed * 2.0); }},
+    {GLFW_KEY_Z, kCtrl, false, "Ctrl+Z", "undo",
+     [](ViewerState* s, bool) { s->requests.undo = true; }},
+    {GLFW_KEY_Z, kCtrl | kShift, false, "Ctrl+Shift+Z", "redo",
+     [](ViewerState* s, bool) { s->requests.redo = true; }},
+    {GLFW_KEY_Y, kCtrl, false, "Ctrl+Y", "redo",
+     [](ViewerState* s, bool) { s->requests.redo = true; }},
+    {GLFW_KEY_S, kCtrl, false, "Ctrl+S", "save",
+     [](ViewerState* s, bool) { s->requests.save = true; }},
+    {GLFW_KEY_S, kCtrl | kShift, false, "Ctrl+Shift+S", "save as",
+     [](ViewerState* s, bool) { s->requests.save_as = true; }},
+    {GLFW_KEY_O, kCtrl, false, "Ctrl+O", "open a world",
+     [](ViewerState* s, bool) { s->panels.open = true; }},
+    {GLFW_KEY_Q, kCtrl, false, "Ctrl+Q", "quit",
+     [](ViewerState* s, bool) { s->requests.quit = true; }},
+    {GLFW_KEY_Q, kNoMods, false, "Q", "select tool", Tool<MouseTool::kSelect>},
+    {GLFW_KEY_W, kNoMods, false, "W", "force tool (pull)", Tool<MouseTool::kForce>},
+    {GLFW_KEY_E, kNoMods, false, "E", "torque tool (turn)", Tool<MouseTool::kTorque>},
+    {GLFW_KEY_T, kNoMods, false, "T", "kinematic drag tool", Tool<MouseTool::kKinematic>},
+    {GLFW_KEY_G, kNoMods, false, "G", "pose tool (paused)", Tool<MouseTool::kPose>},
+    {GLFW_KEY_F12, kNoMods, false, "F12 or P", "screenshot",
+     [](ViewerState* s, bool) { s->requests.screenshot = true; }},
+    {GLFW_KEY_P, kNoMods, false, "", "",
+     [](ViewerState* s, bool) { s->requests.screenshot = true; }},
+    {GLFW_KEY_F, kNoMods, false, "F or Home", "frame the world",
+     [](ViewerState* s, bool) { s->requests.reframe = true; }},
+    {GLFW_KEY_HOME, kNoMods, false, "", "",
+     [](ViewerState* s, bool) { s->requests.reframe = true; }},
+    {GLFW_KEY_H, kNoMods, false, "H", "hide / show the panels",
+     [](ViewerState* s, bool) { s->show_panels = !s->show_panels; }},
+    {GLFW_KEY_F1, kNoMods, false, "F1", "this help",
+     [](ViewerState* s, bool) { s->panels.help = !s->panels.help; }},
+    {GLFW_KEY_ESCAPE, kNoMods, false, "Esc", "clear the selection",
+     [](ViewerState* s, bool) { s->selected_id = -1; }},
+    {GLFW_KEY_1, kNoMods, false, "1 ... 7",
+     "overlays: contacts, normals, forces, padding, COM, "
+     "frames, boxes",
+     Overlay<0>},
+    {GLFW_KEY_2, kNoMods, false, "", "", Overlay<1>},
+    {GLFW_KEY_3, kNoMods, false, "", "", Overlay<2>},
+    {GLFW_KEY_4, kNoMods, false, "", "", Overlay<3>},
+    {GLFW_KEY_5, kNoMods, false, "", "", Overlay<4>},
+    {GLFW_KEY_6, kNoMods, false, "", "", Overlay<5>},
+    {GLFW_KEY_7, kNoMods, false, "", "", Overlay<6>},
+};
+
+const MouseBinding kMouse[] = {
+    {"left drag", "orbit the camera (on a body: the current tool)"},
+    {"right drag, Shift + left drag", "pan"},
+    {"middle drag, Alt + left drag, wheel", "zoom"},
+    {"click", "select the body under the mouse (empty space: none)"},
+    {"double click", "orbit about the point under the mouse"},
+    {"Ctrl + right drag on a body",
+     "force: a spring pulls the grabbed point toward the cursor "
+     "(Shift: in the horizontal plane)"},
+    {"Ctrl + left drag on a body", "torque: a spring turns the body with the mouse"},
+    {"Ctrl + middle drag on a body", "kinematic drag: the body follows the cursor; release throws"},
+    {"pose tool, left drag (paused)",
+     "move the body's initial pose; hold X, Y or Z to move along "
+     "that axis only, Ctrl to turn about it"},
+};
+
+bool ModifiersMatch(const KeyBinding& binding, const ImGuiIO& io) {
+  if (io.KeyCtrl != ((binding.mods & kCtrl) != 0)) return false;
+  if (binding.mods & kAnyShift) return true;
+  return io.KeyShift == ((binding.mods & kShift) != 0);
 }
 
 core::MouseButton PressedButton(const ImGuiIO& io) {
@@ -50,20 +141,24 @@ bool ButtonDown(const ImGuiIO& io, core::MouseButton button) {
 
 }  // namespace
 
+std::span<const KeyBinding> KeyBindings() {
+  return kKeys;
+}
+
+std::span<const MouseBinding> MouseBindings() {
+  return kMouse;
+}
+
 void HandleShortcuts(ViewerState* state) {
   const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantCaptureKeyboard || io.WantTextInput) return;
-  if (Pressed(GLFW_KEY_SPACE)) state->playing = !state->playing;
-  if (Pressed(GLFW_KEY_S) || ImGui::IsKeyPressed(GLFW_KEY_RIGHT, true)) {
-    (io.KeyShift ? state->requests.step_frame : state->requests.step) = true;
+  if (io.WantTextInput) return;
+  for (const KeyBinding& binding : kKeys) {
+    // Ctrl bindings work over panels too; plain keys only when no widget wants the keyboard
+    if (io.WantCaptureKeyboard && !(binding.mods & kCtrl) && binding.key != GLFW_KEY_F1) continue;
+    if (ImGui::IsKeyPressed(binding.key, binding.repeat) && ModifiersMatch(binding, io)) {
+      binding.run(state, io.KeyShift);
+    }
   }
-  if (Pressed(GLFW_KEY_R) || Pressed(GLFW_KEY_BACKSPACE)) state->requests.reset = true;
-  if (Pressed(GLFW_KEY_F12) || Pressed(GLFW_KEY_P)) state->requests.screenshot = true;
-  if (Pressed(GLFW_KEY_F) || Pressed(GLFW_KEY_HOME)) state->requests.reframe = true;
-  if (Pressed(GLFW_KEY_H)) state->show_panels = !state->show_panels;
-  if (Pressed(GLFW_KEY_LEFT_BRACKET)) state->speed = std::max(kMinSpeed, state->speed / 2.0);
-  if (Pressed(GLFW_KEY_RIGHT_BRACKET)) state->speed = std::min(kMaxSpeed, state->speed * 2.0);
-  HandleOverlayKeys(&state->overlays);
 }
 
 ViewMouseEvent ViewMouse::Update(int viewport_height, core::OrbitCamera* camera) {
@@ -71,11 +166,16 @@ ViewMouseEvent ViewMouse::Update(int viewport_height, core::OrbitCamera* camera)
   ViewMouseEvent event;
   event.x = io.MousePos.x * io.DisplayFramebufferScale.x;
   event.y = io.MousePos.y * io.DisplayFramebufferScale.y;
+  event.control = io.KeyCtrl;
+  event.shift = io.KeyShift;
+  event.alt = io.KeyAlt;
   event.over_view = !io.WantCaptureMouse && ImGui::IsMousePosValid();
   event.moved = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f;
   if (button_ == core::MouseButton::kNone && event.over_view) {
     button_ = PressedButton(io);
+    event.pressed = button_;
     travelled_ = 0.0;
+    tool_drag_ = false;
     event.double_clicked = io.MouseDoubleClicked[0];
     if (io.MouseWheel != 0.0f) *camera = core::ApplyScroll(*camera, io.MouseWheel);
   }
@@ -83,17 +183,18 @@ ViewMouseEvent ViewMouse::Update(int viewport_height, core::OrbitCamera* camera)
   core::MouseDrag drag;
   drag.button = button_;
   drag.shift = io.KeyShift;
-  drag.control = io.KeyCtrl;
   drag.alt = io.KeyAlt;
   drag.dx = io.MouseDelta.x * io.DisplayFramebufferScale.x;
   drag.dy = io.MouseDelta.y * io.DisplayFramebufferScale.y;
   travelled_ += std::hypot(drag.dx, drag.dy);
-  if (travelled_ > kClickSlop && (drag.dx != 0.0 || drag.dy != 0.0)) {
+  const bool camera_drag = !tool_drag_ && event.pressed == core::MouseButton::kNone;
+  if (camera_drag && travelled_ > kClickSlop && (drag.dx != 0.0 || drag.dy != 0.0)) {
     *camera = core::ApplyMouseDrag(*camera, drag, viewport_height);
   }
   event.dragging = travelled_ > kClickSlop;
   if (!ButtonDown(io, button_)) {
-    event.clicked = button_ == core::MouseButton::kLeft && travelled_ <= kClickSlop;
+    event.clicked = button_ == core::MouseButton::kLeft && travelled_ <= kClickSlop && !tool_drag_;
+    event.released = true;
     button_ = core::MouseButton::kNone;
     event.dragging = false;
   }

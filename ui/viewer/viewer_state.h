@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
-// What the panels and the keyboard edit and the viewer loop acts on: immediate-mode panels write
-// requests and settings here, the loop carries them out once per frame. Plain data.
+// What the panels and the keyboard edit and the editor loop acts on: immediate-mode panels write
+// requests and settings here, the loop carries them out once per frame. Plain data. Edits of the
+// world do not go through here: panels post them with EditorActions.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "core/render/overlay_options.h"
-#include "core/sim/simulator.h"
 
 namespace lamina::ui {
 
@@ -15,36 +15,64 @@ namespace lamina::ui {
 inline constexpr double kMinSpeed = 0.1;
 inline constexpr double kMaxSpeed = 4.0;
 
+/// What a left drag on a body does (a drag on empty space always turns the camera). The
+/// modifier bindings work with any tool: Ctrl + right drag pulls (force), Ctrl + left drag turns
+/// (torque), Ctrl + middle drag moves kinematically (docs/editor.md).
+enum class MouseTool { kSelect, kForce, kTorque, kKinematic, kPose };
+
 struct ViewerRequests {
   bool step = false;        ///< one physics step (while paused)
   bool step_frame = false;  ///< one frame's worth of steps, 1/60 s (while paused)
   bool reset = false;
   bool reframe = false;  ///< back to the default view of the world
   bool screenshot = false;
-  std::string open_path;  ///< a world to load; "" for none
+  bool undo = false, redo = false;
+  bool save = false;      ///< Ctrl+S: to the document's file (Save As when it has none)
+  bool save_as = false;   ///< open the Save As dialog
+  bool revert = false;    ///< reload the file, dropping unsaved edits (asks first)
+  bool quit = false;      ///< close the window (asks first when there are unsaved edits)
+  std::string open_path;  ///< a world to load; "" for none (asks first when unsaved)
+  // what the unsaved-changes question let through
+  bool quit_confirmed = false, revert_confirmed = false;
+  std::string open_confirmed;
+};
+
+/// Which windows are shown (the View menu).
+struct PanelVisibility {
+  bool simulation = true, world_tree = true, inspector = true, robot = true;
+  bool settings = false, overlays = false, plots = false, help = false, open = false;
+};
+
+/// A question the editor asks before it drops unsaved edits.
+struct PendingConfirmation {
+  enum class Action { kNone, kQuit, kOpen, kRevert } action = Action::kNone;
+  std::string path;  ///< kOpen: the world to open
 };
 
 struct ViewerState {
   bool playing = true;
   double speed = 1.0;
-  core::SolverType solver = core::SolverType::kStep;
-  bool sleep = false;  ///< idle objects sleep (core::Simulator::SetSleeping)
   core::OverlayOptions overlays;
   bool show_panels = true;
-  int hovered_id = -1;   ///< world id of the body under the mouse, -1 for none
-  int selected_id = -1;  ///< world id of the selected body, -1 for none
+  PanelVisibility panels;
+  MouseTool tool = MouseTool::kSelect;
+  int hovered_id = -1;      ///< world id of the body under the mouse, -1 for none
+  int selected_id = -1;     ///< world id of the selected body, -1 for none
+  std::string tree_filter;  ///< the World tree's filter text
 
   // measured, shown by the panels
-  double real_time_factor = 0.0;
   double frame_milliseconds = 0.0;
   std::string message;  ///< last event for the status line ("wrote shot.png", ...)
 
   // File > Open
   std::string open_path_input;
+  std::string save_as_input;
   std::vector<std::string> world_files;  ///< .xml files offered by the Open panel
   std::string worlds_dir;                ///< where they were found (shown relative to it)
-  bool expand_open_panel = false;        ///< open the panel on the next frame (a load failed)
+  std::string load_messages;             ///< diagnostics of the last load ("" when none)
+  bool load_failed = false;              ///< the last load failed (shown in red)
 
+  PendingConfirmation confirm;
   ViewerRequests requests;
 };
 

@@ -1,0 +1,336 @@
+// SPDX-License-Identifier: MIT
+#include "ui/panels/param_widgets.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string>
+
+#include <imgui.h>
+
+namespace lamina::ui {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+
+// what a widget did this frame
+struct WidgetResult {
+  bool changed = false;
+  core::ParamValue value;
+};
+
+// ---- undo groups: a widget's activation to its deactivation is one entry ---------------
+
+void TrackGroup(const core::ParamSpec& spec, EditorActions* actions) {
+  if (ImGui::IsItemActivated()) actions->BeginGroup(std::string(spec.label));
+  if (ImGui::IsItemDeactivated()) actions->EndGroup();
+}
+
+// drag speed: 1 % of the value's size per pixel, or a small absolute step at 0
+float DragSpeed(double value) {
+  const double size = std::isfinite(value) ? std::abs(value) : 1.0;
+  return static_cast<float>(std::max(size * 0.01, 1e-4));
+}
+
+// ---- widgets by type --------------------------------------------------------------------
+
+WidgetResult RealWidget(const core::ParamSpec& spec, double value, EditorActions* actions) {
+  WidgetResult result;
+  const bool infinite = std::isinf(value);
+  if (spec.allow_inf) {
+    ImGui::SetNextItemWidth(-50.0f);
+  } else {
+    ImGui::SetNextItemWidth(-1.0f);
+  }
+  double shown = infinite ? 0.0 : value;
+  if (infinite) ImGui::BeginDisabled();
+  result.changed = ImGui::DragScalar("##v", ImGuiDataType_Double, &shown, DragSpeed(value), nullptr,
+                                     nullptr, infinite ? "inf" : "%.6g");
+  TrackGroup(spec, actions);
+  if (infinite) ImGui::EndDisabled();
+  if (spec.allow_inf) {
+    ImGui::SameLine();
+    bool inf = infinite;
+    if (ImGui::Checkbox("inf", &inf)) {
+      result.changed = true;
+      shown = inf ? kInf : (std::isfinite(spec.min) ? std::max(spec.min, 1.0) : 1.0);
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("infinite: rigid / no limit");
+  }
+  result.value = {shown};
+  return result;
+}
+
+WidgetResult IntegerWidget(const core::ParamSpec& spec, double value, EditorActions* actions) {
+  WidgetResult result;
+  long long shown = static_cast<long long>(value);
+  ImGui::SetNextItemWidth(-1.0f);
+  result.changed = ImGui::DragScalar("##v", ImGuiDataType_S64, &shown, 0.2f);
+  TrackGroup(spec, actions);
+  result.value = {static_cast<double>(shown)};
+  return result;
+}
+
+WidgetResult BoolWidget(double value) {
+  WidgetResult result;
+  bool shown = value != 0.0;
+  result.changed = ImGui::Checkbox("##v", &shown);
+  result.value = {shown ? 1.0 : 0.0};
+  return result;
+}
+
+WidgetResult ChoiceWidget(const core::ParamSpec& spec, double value) {
+  WidgetResult result;
+  const int current = static_cast<int>(value);
+  const std::string preview = current >= 0 && current < static_cast<int>(spec.choices.size())
+                                  ? std::string(spec.choices[current])
+                                  : std::to_string(current);
+  ImGui::SetNextItemWidth(-1.0f);
+  if (ImGui::BeginCombo("##v", preview.c_str())) {
+    for (int i = 0; i < static_cast<int>(spec.choices.size()); ++i) {
+      const std::string name(spec.choices[i]);
+      if (ImGui::Selectable(name.c_str(), i == current) && i != current) {
+        result = {true, {static_cast<double>(i)}};
+      }
+    }
+    ImGui::EndCombo();
+  }
+  return result;
+}
+
+WidgetResult Vec3Widget(const core::ParamSpec& spec, const core::ParamValue& value,
+                        EditorActions* actions) {
+  WidgetResult result{false, value};
+  ImGui::SetNextItemWidth(-1.0f);
+  const double largest = std::max({std::abs(value[0]), std::abs(value[1]), std::abs(value[2])});
+  result.changed = ImGui::DragScalarN("##v", ImGuiDataType_Double, result.value.data(), 3,
+                                      DragSpeed(largest), nullptr, nullptr, "%.4g");
+  TrackGroup(spec, actions);
+  return result;
+}
+
+// Klamp't's roll-pitch-yaw: R = Rz(yaw) Ry(pitch) Rx(roll), in radians
+core::Vec3 RollPitchYaw(const core::Mat3& r) {
+  const double pitch = std::asin(std::clamp(-r(2, 0), -1.0, 1.0));
+  if (std::abs(r(2, 0)) > 1.0 - 1e-12) {  // gimbal lock: all the turn in yaw
+    return {0.0, pitch, std::atan2(-r(0, 1), r(1, 1))};
+  }
+  return {std::atan2(r(2, 1), r(2, 2)), pitch, std::atan2(r(1, 0), r(0, 0))};
+}
+
+core::Mat3 RotationOf(const core::Vec3& rpy) {
+  return (Eigen::AngleAxisd(rpy.z(), core::Vec3::UnitZ()) *
+          Eigen::AngleAxisd(rpy.y(), core::Vec3::UnitY()) *
+          Eigen::AngleAxisd(rpy.x(), core::Vec3::UnitX()))
+      .toRotationMatrix();
+}
+
+WidgetResult PoseWidget(const core::ParamSpec& spec, const core::ParamValue& value,
+                        EditorActions* actions) {
+  core::Pose pose = core::ValueToPose(value);
+  core::Vec3 position = pose.translation();
+  core::Vec3 angles = RollPitchYaw(pose.linear()) * kDegrees;
+  ImGui::SetNextItemWidth(-1.0f);
+  bool changed = ImGui::DragScalarN("##p", ImGuiDataType_Double, position.data(), 3, 0.005f,
+                                    nullptr, nullptr, "%.4g m");
+  TrackGroup(spec, actions);
+  ImGui::SetNextItemWidth(-1.0f);
+  changed |= ImGui::DragScalarN("##r", ImGuiDataType_Double, angles.data(), 3, 0.5f, nullptr,
+                                nullptr, "%.2f°");
+  TrackGroup(spec, actions);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("roll, pitch, yaw (degrees)");
+  if (!changed) return {false, value};
+  pose.translation() = position;
+  pose.linear() = RotationOf(angles / kDegrees);
+  return {true, core::PoseToValue(pose)};
+}
+
+WidgetResult TwistWidget(const core::ParamSpec& spec, const core::ParamValue& value,
+                         EditorActions* actions) {
+  WidgetResult result{false, value};
+  ImGui::SetNextItemWidth(-1.0f);
+  result.changed = ImGui::DragScalarN("##w", ImGuiDataType_Double, result.value.data(), 3, 0.01f,
+                                      nullptr, nullptr, "%.3g rad/s");
+  TrackGroup(spec, actions);
+  ImGui::SetNextItemWidth(-1.0f);
+  result.changed |= ImGui::DragScalarN("##l", ImGuiDataType_Double, result.value.data() + 3, 3,
+                                       0.01f, nullptr, nullptr, "%.3g m/s");
+  TrackGroup(spec, actions);
+  return result;
+}
+
+// ranges, inertias, per-link vectors: the table's text form, applied on Enter
+WidgetResult TextWidget(const core::ParamSpec& spec, const core::ParamValue& value) {
+  std::array<char, 512> buffer{};
+  const std::string text = core::FormatParamValue(spec, value);
+  std::strncpy(buffer.data(), text.c_str(), buffer.size() - 1);
+  ImGui::SetNextItemWidth(-1.0f);
+  if (!ImGui::InputText("##v", buffer.data(), buffer.size(),
+                        ImGuiInputTextFlags_EnterReturnsTrue)) {
+    return {false, value};
+  }
+  std::string error;
+  std::optional<core::ParamValue> parsed = core::ParseParamValue(spec, buffer.data(), &error);
+  if (!parsed) return {false, value};  // unreadable text: the field shows the value again
+  return {*parsed != value, *parsed};
+}
+
+WidgetResult DrawWidget(const core::ParamSpec& spec, const core::ParamValue& value,
+                        EditorActions* actions) {
+  using T = core::ParamType;
+  switch (spec.type) {
+    case T::kReal:
+      return RealWidget(spec, value.at(0), actions);
+    case T::kInteger:
+      return IntegerWidget(spec, value.at(0), actions);
+    case T::kBool:
+      return BoolWidget(value.at(0));
+    case T::kChoice:
+      return ChoiceWidget(spec, value.at(0));
+    case T::kVec3:
+      return Vec3Widget(spec, value, actions);
+    case T::kPose:
+      return PoseWidget(spec, value, actions);
+    case T::kTwist:
+      return TwistWidget(spec, value, actions);
+    case T::kRange:
+    case T::kInertia:
+    case T::kVector:
+      break;
+  }
+  return TextWidget(spec, value);
+}
+
+// ---- the label column: name, unit, tooltip, back-to-file button -------------------------
+
+std::string LabelText(const core::ParamSpec& spec) {
+  std::string label(spec.label);
+  if (!spec.unit.empty()) label += " (" + std::string(spec.unit) + ")";
+  return label;
+}
+
+void LabelTooltip(const core::ParamSpec& spec) {
+  if (!ImGui::IsItemHovered()) return;
+  ImGui::SetTooltip("%s\n%s: %s\n%s; %s", std::string(spec.help).c_str(),
+                    std::string(spec.key).c_str(), core::ParamRule(spec).c_str(),
+                    ApplyKindText(spec.apply), spec.klampt ? "Klamp't attribute" : "Lamina's");
+}
+
+std::optional<core::ParamValue> FileValue(const ParamRowContext& row, const core::ParamSpec& spec) {
+  if (!row.file_world) return std::nullopt;
+  const std::optional<core::ElementIndex> element = FileElement(*row.file_world, row.ref);
+  if (!element) return std::nullopt;
+  std::optional<core::ParamValue> value = core::GetParam(*row.file_world, *element, spec);
+  if (value && value->size() != core::GetParam(row.world, row.element, spec)->size()) {
+    return std::nullopt;  // another robot shape: nothing to go back to
+  }
+  return value;
+}
+
+void RevertButton(const ParamRowContext& row, const core::ParamSpec& spec,
+                  const core::ParamValue& shown, EditorActions* actions) {
+  const std::optional<core::ParamValue> file = FileValue(row, spec);
+  const bool differs = file && *file != shown;
+  ImGui::SameLine(ImGui::GetContentRegionAvail().x - 14.0f + ImGui::GetCursorPosX());
+  if (!differs) ImGui::BeginDisabled();
+  if (ImGui::SmallButton("<")) actions->SetParam(row.ref, spec, *file);
+  if (!differs) ImGui::EndDisabled();
+  if (differs && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+    ImGui::SetTooltip("back to the file's value: %s", core::FormatParamValue(spec, *file).c_str());
+  }
+}
+
+bool ElementsMatch(const core::WorldDesc& world, const core::ElementIndex& element,
+                   core::ElementUid uid) {
+  switch (element.kind) {
+    case core::ElementKind::kTerrain:
+      return world.terrains[element.index].uid == uid;
+    case core::ElementKind::kObject:
+      return world.objects[element.index].uid == uid;
+    case core::ElementKind::kRobot:
+    case core::ElementKind::kLink:
+    case core::ElementKind::kDriver:
+      return world.robots[element.index].uid == uid;
+    case core::ElementKind::kSettings:
+      break;
+  }
+  return true;
+}
+
+}  // namespace
+
+const char* ApplyKindText(core::ParamApply apply) {
+  switch (apply) {
+    case core::ParamApply::kLive:
+      return "applies live, from the next step";
+    case core::ParamApply::kRebuildGeometry:
+      return "rebuilds the body's geometry, keeping the state";
+    case core::ParamApply::kRebuildSimulator:
+      return "rebuilds the simulation, keeping its state";
+    case core::ParamApply::kOnReset:
+      return "an initial condition: takes effect at Reset";
+  }
+  return "";
+}
+
+std::optional<core::ElementIndex> FileElement(const core::WorldDesc& file_world,
+                                              const core::ElementRef& ref) {
+  auto index_of = [&](const auto& elements) {
+    for (size_t i = 0; i < elements.size(); ++i) {
+      if (elements[i].uid == ref.uid) return static_cast<int>(i);
+    }
+    return -1;
+  };
+  core::ElementIndex element{ref.kind, -1, ref.sub};
+  switch (ref.kind) {
+    case core::ElementKind::kSettings:
+      return core::ElementIndex::Settings();
+    case core::ElementKind::kTerrain:
+      element.index = index_of(file_world.terrains);
+      break;
+    case core::ElementKind::kObject:
+      element.index = index_of(file_world.objects);
+      break;
+    case core::ElementKind::kRobot:
+    case core::ElementKind::kLink:
+    case core::ElementKind::kDriver:
+      element.index = index_of(file_world.robots);
+      break;
+  }
+  if (element.index < 0 || core::CheckElement(file_world, element)) return std::nullopt;
+  return ElementsMatch(file_world, element, ref.uid) ? std::optional(element) : std::nullopt;
+}
+
+void DrawParamRow(const ParamRowContext& row, const core::ParamSpec& spec, EditorActions* actions) {
+  const std::optional<core::ParamValue> current = core::GetParam(row.world, row.element, spec);
+  if (!current) return;
+  const core::ParamValue& shown = actions->Shown(row.ref, spec, *current);
+  ImGui::PushID(core::ParamId(spec));
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted(LabelText(spec).c_str());
+  LabelTooltip(spec);
+  RevertButton(row, spec, shown, actions);
+  ImGui::TableNextColumn();
+  const WidgetResult result = DrawWidget(spec, shown, actions);
+  if (result.changed) actions->SetParam(row.ref, spec, result.value);
+  ImGui::PopID();
+}
+
+void DrawParamTable(const char* id, const ParamRowContext& row, core::ElementKind kind,
+                    EditorActions* actions, bool (*filter)(const core::ParamSpec&)) {
+  if (!ImGui::BeginTable(id, 2, ImGuiTableFlags_SizingStretchProp)) return;
+  ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthStretch, 0.45f);
+  ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch, 0.55f);
+  for (const core::ParamSpec* spec : core::ParamsOf(kind)) {
+    if (!filter || filter(*spec)) DrawParamRow(row, *spec, actions);
+  }
+  ImGui::EndTable();
+}
+
+}  // namespace lamina::ui

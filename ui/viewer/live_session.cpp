@@ -1,0 +1,412 @@
+// SPDX-License-Identifier: MIT
+#include "ui/viewer/live_session.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <filesystem>
+
+#include "core/io/world_file.h"
+#include "core/model/access_path.h"
+
+namespace lamina::ui {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// the physics publishes a frame at least this often while it cannot keep up (s of wall time),
+// and batches at least this much simulated time between frames when it can
+constexpr double kPublishInterval = 1.0 / 120.0;
+// samples kept for TakeSamples when nobody takes them
+constexpr size_t kMaxSamples = 100000;
+
+double SecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// the --set arguments on a loaded description; false with an error naming the argument
+bool ApplySets(const std::string& path, const std::vector<std::string>& sets,
+               core::Diagnostics* diagnostics, core::WorldDesc* world) {
+  for (const std::string& set : sets) {
+    std::string target, value, error;
+    if (!core::SplitAssignment(set, &target, &value, &error) ||
+        !core::SetPathText(world, target, value, &error)) {
+      diagnostics->Error({path, 0}, "--set '" + set + "': " + error);
+      return false;
+    }
+  }
+  return true;
+}
+
+std::string CanonicalPath(const std::string& requested) {
+  std::error_code error;
+  std::string path = std::filesystem::weakly_canonical(requested, error).string();
+  return error || path.empty() ? requested : path;
+}
+
+RobotFrame RobotFrameOf(const core::Simulator& simulator, int robot) {
+  RobotFrame frame;
+  frame.sensed = simulator.GetRobotConfig(robot);
+  if (!simulator.controller(robot).GetCommandedConfig(&frame.commanded)) {
+    frame.commanded = frame.sensed;
+  }
+  frame.torques = simulator.GetActuatorTorques(robot);
+  return frame;
+}
+
+// what to try when the simulation stopped or had to be corrected
+std::string ProblemText(const core::Simulator& simulator, core::StepStatus status) {
+  const std::string at = " at t = " + std::to_string(simulator.time()) + " s";
+  if (simulator.halted()) {
+    return "The simulation stopped" + at + ": " + simulator.statistics().error +
+           ". Undo the last edit, Reset, or lower kStiffness / raise padding or damping.";
+  }
+  if (status == core::StepStatus::kUnstable) {
+    return "Energy blew up" + at +
+           " and was corrected (paused). Try lower kStiffness, more kDamping or padding, or a "
+           "smaller timestep; Space resumes, Ctrl+Z undoes the last edit.";
+  }
+  return "";
+}
+
+}  // namespace
+
+LiveSession::LiveSession(bool threaded) : threaded_(threaded) {
+  frame_ = std::make_shared<SessionFrame>();
+  if (threaded_) thread_ = std::thread([this] { Loop(); });
+}
+
+LiveSession::~LiveSession() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  if (thread_.joinable()) thread_.join();
+}
+
+bool LiveSession::Load(const std::string& requested_path, const std::vector<std::string>& sets,
+                       core::Diagnostics& diagnostics) {
+  const std::string path = CanonicalPath(requested_path);
+  const int errors_before = diagnostics.error_count();
+  core::MeshCache meshes;
+  core::LoadContext context{diagnostics, meshes};
+  core::WorldDesc world;
+  std::unique_ptr<core::LiveWorld> live;
+  try {
+    if (!std::filesystem::is_regular_file(path)) {
+      diagnostics.Error({path, 0}, "no such file");
+    } else if (core::LoadWorldFile(path, context, &world) &&
+               diagnostics.error_count() == errors_before &&
+               ApplySets(path, sets, &diagnostics, &world)) {
+      live = std::make_unique<core::LiveWorld>(core::WorldDocument(std::move(world), path));
+      live->simulator().EnableContactFeedbackAll();
+    }
+  } catch (const std::exception& error) {
+    diagnostics.Error({path, 0}, std::string("cannot build the simulation: ") + error.what());
+    live.reset();
+  }
+  if (!live) return false;
+  Install(std::move(live));
+  return true;
+}
+
+void LiveSession::Install(std::unique_ptr<core::LiveWorld> world) {
+  if (!threaded_) {
+    Adopt(std::move(world));
+    Publish();
+    return;
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    incoming_ = std::move(world);
+  }
+  wake_.notify_all();
+  Flush();
+}
+
+// the physics thread takes over a new world (lockstep: the caller)
+void LiveSession::Adopt(std::unique_ptr<core::LiveWorld> world) {
+  world_ = std::move(world);
+  world_->AddStepObserver([this](const core::StepEvent& event) {
+    smallest_step_ = smallest_step_ > 0.0 ? std::min(smallest_step_, event.h) : event.h;
+  });
+  owed_ = 0.0;
+  worst_ = core::StepStatus::kNormal;
+  clock_.Clear();
+  meter_.Clear();
+}
+
+long LiveSession::Post(Command command) {
+  long sequence = 0;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    sequence = ++posted_;
+    queue_.emplace_back(sequence, std::move(command));
+  }
+  wake_.notify_all();
+  return sequence;
+}
+
+void LiveSession::SetPlaying(bool playing) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    playing_ = playing;
+  }
+  wake_.notify_all();
+}
+
+void LiveSession::SetSpeed(double speed) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (speed > 0.0 && std::isfinite(speed)) speed_ = speed;
+}
+
+void LiveSession::SetSampledBody(int id) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  sampled_body_ = id;
+}
+
+bool LiveSession::playing() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return playing_;
+}
+
+std::shared_ptr<const SessionFrame> LiveSession::frame() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return frame_;
+}
+
+std::vector<std::string> LiveSession::TakeMessages() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return std::exchange(messages_, {});
+}
+
+std::vector<SessionSample> LiveSession::TakeSamples() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<SessionSample> samples(samples_.begin(), samples_.end());
+  samples_.clear();
+  return samples;
+}
+
+void LiveSession::Flush() {
+  if (!threaded_) {
+    RunCommands();
+    Publish();
+    return;
+  }
+  std::unique_lock<std::mutex> lock(mutex_);
+  const long wanted = posted_;
+  done_.wait(lock,
+             [&] { return stop_ || (incoming_ == nullptr && frame_->commands_done >= wanted); });
+}
+
+void LiveSession::RunCommands() {
+  for (;;) {
+    std::pair<long, Command> entry;
+    std::unique_ptr<core::LiveWorld> incoming;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      incoming = std::move(incoming_);
+      if (!incoming && queue_.empty()) return;
+      if (!incoming) {
+        entry = std::move(queue_.front());
+        queue_.pop_front();
+      }
+    }
+    if (incoming) {
+      Adopt(std::move(incoming));
+      continue;
+    }
+    std::string message = world_ ? entry.second(*world_) : "no world is open";
+    std::lock_guard<std::mutex> lock(mutex_);
+    done_count_ = entry.first;
+    if (!message.empty()) messages_.push_back(std::move(message));
+  }
+}
+
+void LiveSession::Advance(double wall_seconds) {
+  RunCommands();
+  double speed = 1.0;
+  bool playing = false;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    speed = speed_;
+    playing = playing_;
+  }
+  double simulated = 0.0;
+  if (world_ && playing && !world_->simulator().halted()) {
+    core::Simulator& simulator = world_->simulator();
+    const int steps = clock_.StepsForFrame(wall_seconds, speed, simulator.sim_step());
+    const double before = simulator.time();
+    for (int i = 0; i < steps && worst_ < core::StepStatus::kUnstable; ++i) {
+      worst_ = std::max(worst_, simulator.Simulate(simulator.sim_step()));
+    }
+    simulated = simulator.time() - before;
+  } else {
+    clock_.Clear();
+  }
+  meter_.AddFrame(wall_seconds, simulated);
+  Publish();
+}
+
+void LiveSession::StepNow(int steps) {
+  RunCommands();
+  if (world_) {
+    core::Simulator& simulator = world_->simulator();
+    for (int i = 0; i < steps; ++i) {
+      worst_ = std::max(worst_, simulator.Simulate(simulator.sim_step()));
+    }
+  }
+  Publish();
+}
+
+// the steps owed, one at a time, until they are done, `budget` seconds of wall time have passed,
+// a command is waiting or the simulation needs the user
+void LiveSession::RunSteps(double budget) {
+  core::Simulator& simulator = world_->simulator();
+  const auto start = Clock::now();
+  const double h = simulator.sim_step();
+  while (owed_ >= h * (1.0 - 1e-9) && worst_ < core::StepStatus::kUnstable) {
+    worst_ = std::max(worst_, simulator.Simulate(h));
+    owed_ -= h;
+    if (SecondsSince(start) > budget) break;
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!queue_.empty() || incoming_ || stop_) break;
+  }
+}
+
+void LiveSession::Loop() {
+  auto last = Clock::now();
+  for (;;) {
+    RunCommands();
+    const auto now = Clock::now();
+    const double wall = std::chrono::duration<double>(now - last).count();
+    last = now;
+    double speed = 1.0;
+    bool playing = false;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (stop_) return;
+      speed = speed_;
+      playing = playing_;
+    }
+    double simulated = 0.0;
+    if (world_ && playing && !world_->simulator().halted()) {
+      const double before = world_->simulator().time();
+      owed_ = std::min(owed_ + wall * speed, kMaxLag * speed);
+      RunSteps(kPublishInterval);
+      simulated = world_->simulator().time() - before;
+    } else {
+      owed_ = 0.0;
+    }
+    meter_.AddFrame(wall, simulated);
+    Publish();
+    // sleep until a batch of steps is due, or a command, a world or the end arrives
+    const double h = world_ ? world_->simulator().sim_step() : 0.0;
+    const double due = playing ? std::max(h, kPublishInterval * speed) - owed_ : 0.05;
+    std::unique_lock<std::mutex> lock(mutex_);
+    wake_.wait_for(lock, std::chrono::duration<double>(std::max(0.0, due / speed)), [&] {
+      return stop_ || !queue_.empty() || incoming_ != nullptr || playing_ != playing;
+    });
+  }
+}
+
+void LiveSession::Publish() {
+  auto frame = std::make_shared<SessionFrame>();
+  if (world_) {
+    const core::WorldDocument& document = world_->document();
+    if (!published_world_ || document.revision() != published_revision_) {
+      published_world_ = std::make_shared<const core::WorldDesc>(document.desc());
+      published_revision_ = document.revision();
+    }
+    const core::Simulator& simulator = world_->simulator();
+    frame->loaded = true;
+    frame->world = published_world_;
+    if (document.saved_revision() != file_revision_ &&
+        document.revision() == document.saved_revision()) {
+      file_world_ = published_world_;
+      file_revision_ = document.saved_revision();
+    }
+    frame->file_world = file_world_;
+    frame->path = document.path();
+    frame->dirty = document.dirty();
+    frame->undo_label = world_->history().UndoLabel();
+    frame->redo_label = world_->history().RedoLabel();
+    frame->poses = core::CurrentPoses(simulator);
+    frame->contacts = core::ContactMarkersFromSimulator(simulator);
+    for (int r = 0; r < simulator.robot_count(); ++r) {
+      frame->robots.push_back(RobotFrameOf(simulator, r));
+    }
+    frame->time = simulator.time();
+    frame->step = simulator.sim_step();
+    frame->smallest_step = smallest_step_;
+    smallest_step_ = 0.0;
+    frame->steps = simulator.statistics().steps;
+    frame->status = worst_;
+    frame->halted = simulator.halted();
+    frame->problem = ProblemText(simulator, worst_);
+    frame->kinetic_energy = simulator.KineticEnergy();
+    frame->potential_energy = simulator.PotentialEnergy();
+    frame->dragging = simulator.dragging();
+    frame->drag = simulator.drag();
+    for (int id = 0; id < simulator.body_count(); ++id) {
+      if (simulator.HasKinematicTarget(id)) frame->kinematic.push_back(id);
+    }
+  }
+  frame->real_time_factor = meter_.factor();
+  const bool stop_here = worst_ >= core::StepStatus::kUnstable;
+  worst_ = frame->halted ? core::StepStatus::kError : core::StepStatus::kNormal;
+  SessionSample sample;
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (stop_here) playing_ = false;  // the user decides what to do (ProblemText)
+  if (frame->loaded) {
+    frame->sampled_velocity = SampledVelocity();
+    frame->sampled_contacts = core::ReadContacts(world_->simulator(), sampled_body_);
+  }
+  frame->playing = playing_;
+  frame->speed = speed_;
+  frame->commands_done = done_count_;
+  if (frame->loaded) {
+    FillSample(*frame, &sample);
+    samples_.push_back(std::move(sample));
+    if (samples_.size() > kMaxSamples) samples_.pop_front();
+  }
+  frame_ = std::move(frame);
+  done_.notify_all();
+}
+
+core::Twist LiveSession::SampledVelocity() const {
+  const std::optional<core::ElementIndex> element =
+      core::ElementOfWorldId(world_->document().desc(), sampled_body_);
+  if (!element || element->kind != core::ElementKind::kObject) return {};
+  return world_->simulator().GetObjectVelocity(element->index);
+}
+
+void LiveSession::FillSample(const SessionFrame& frame, SessionSample* sample) const {
+  sample->time = frame.time;
+  sample->kinetic = frame.kinetic_energy;
+  sample->potential = frame.potential_energy;
+  sample->step = frame.smallest_step > 0.0 ? frame.smallest_step : frame.step;
+  sample->real_time_factor = frame.real_time_factor;
+  sample->body = sampled_body_;
+  if (sampled_body_ < 0 || !world_) return;
+  const core::Simulator& simulator = world_->simulator();
+  sample->contact_force = simulator.ContactForce(sampled_body_).norm();
+  for (const core::ContactPair& pair : simulator.contact_pairs()) {
+    if (pair.a == sampled_body_ || pair.b == sampled_body_) {
+      sample->overlap = std::max(sample->overlap, pair.max_depth);
+    }
+  }
+  const core::WorldDesc& world = *frame.world;
+  const std::optional<core::ElementIndex> element = core::ElementOfWorldId(world, sampled_body_);
+  if (!element || element->kind != core::ElementKind::kLink) return;
+  sample->robot = element->index;
+  const RobotFrame& robot = frame.robots[element->index];
+  sample->sensed = robot.sensed;
+  sample->commanded = robot.commanded;
+  sample->torques = robot.torques;
+}
+
+}  // namespace lamina::ui

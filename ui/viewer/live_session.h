@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: MIT
+// LiveSession: the editor's world — a core::LiveWorld (document, simulation, undo history)
+// stepped in real time on its own thread, and the frames the window draws.
+//
+// Threads. The physics thread owns the LiveWorld; nothing else touches it. The window's thread
+// (the main thread: GL, ImGui) talks to it in two ways only:
+//  * Post(command): edits, mouse-tool input, reset, save, load... go through one queue and are
+//    carried out in order between two physics steps (never during one), so an edit applies at
+//    the next step exactly as in a scripted run;
+//  * frame(): the latest finished state (poses, contacts, the document's description, robot
+//    values, drag readout, real-time factor), an immutable SessionFrame shared by pointer. The
+//    window draws whatever frame is latest and never waits for the physics.
+// MuJoCo's simulate runs physics on its own thread too but shares mjModel/mjData under one mutex
+// that the render thread holds while it copies the scene; here the physics publishes and the
+// renderer takes, so a slow step never stalls a frame and a slow frame never stalls physics.
+//
+// Pacing. Simulated time follows the wall clock times the speed; a world too heavy to keep up
+// runs slower than real time (debt beyond kMaxLag is dropped, not caught up in a burst), and the
+// real-time factor shown is what was achieved. Lockstep mode (threaded = false) runs everything
+// on the caller's thread inside Advance(wall seconds): scripted tests and recordings get the same
+// steps whatever the machine's speed.
+//
+// Samples. Every published frame also appends one SessionSample (time, energies, step, real-time
+// factor, the selected body's contact force and overlap, its robot's joints), and TakeSamples
+// hands the ones not taken yet to the plots, so a frame the window skips loses no sample.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/diagnostics.h"
+#include "core/edit/live_world.h"
+#include "core/render/contact_markers.h"
+#include "core/render/world_poses.h"
+#include "core/sim/contact_readout.h"
+#include "ui/viewer/sim_clock.h"
+
+namespace lamina::ui {
+
+/// A robot's joints in one frame, link space (rad or m): sensed, commanded (the controller's
+/// PID targets, or the sensed value where a driver is not in PID mode) and the driver efforts.
+struct RobotFrame {
+  core::VecX sensed, commanded;
+  core::VecX torques;  ///< per driver, clamped efforts (N·m or N)
+};
+
+/// What one published frame shows. Immutable once published.
+struct SessionFrame {
+  bool loaded = false;
+  /// The document's description (shared by every frame until the next edit).
+  std::shared_ptr<const core::WorldDesc> world;
+  /// The document as last loaded or saved (what "back to the file's value" goes back to).
+  std::shared_ptr<const core::WorldDesc> file_world;
+  std::string path;  ///< where Save writes ("" before Save As)
+  bool dirty = false;
+  std::string undo_label, redo_label;  ///< "" when there is nothing to undo / redo
+
+  core::WorldPoses poses;
+  std::vector<core::ContactMarker> contacts;
+  std::vector<RobotFrame> robots;
+  double time = 0.0;  ///< simulated, s
+  double step = 0.0;  ///< the world's timestep, s
+  /// the shortest accepted sub-step since the previous frame (adaptive stepping halves it), s
+  double smallest_step = 0.0;
+  long steps = 0;
+  core::StepStatus status = core::StepStatus::kNormal;  ///< worst since the previous frame
+  bool halted = false;  ///< an error stopped the simulation (undo, reset or an edit revives it)
+  std::string problem;  ///< what went wrong and what to try; "" when all is well
+  bool playing = false;
+  double speed = 1.0;
+  double real_time_factor = 0.0;
+  double kinetic_energy = 0.0, potential_energy = 0.0;  ///< J
+  bool dragging = false;
+  core::DragState drag;
+  std::vector<int> kinematic;  ///< world ids of bodies moved by a kinematic target
+  /// The sampled body (SetSampledBody) when it is an object: its velocity now (frame origin).
+  core::Twist sampled_velocity;
+  /// The sampled body's contacts now: partners, blended surfaces and their rules, overlaps,
+  /// normal forces (core::ReadContacts).
+  std::vector<core::PairReadout> sampled_contacts;
+
+  long commands_done = 0;  ///< sequence number of the last command carried out
+};
+
+/// One row of the plots (see the file comment).
+struct SessionSample {
+  double time = 0.0;
+  double kinetic = 0.0, potential = 0.0;
+  double step = 0.0, real_time_factor = 0.0;
+  int body = -1;                              ///< the selected body (-1: none)
+  double contact_force = 0.0, overlap = 0.0;  ///< its total contact force (N), deepest overlap (m)
+  int robot = -1;                             ///< the selected body's robot (-1: none)
+  core::VecX sensed, commanded, torques;      ///< that robot's, as in RobotFrame
+};
+
+class LiveSession {
+ public:
+  /// A command carried out on the physics thread between two steps. It may return a message for
+  /// the status line ("" for none): a refused edit says why.
+  using Command = std::function<std::string(core::LiveWorld& world)>;
+
+  /// Largest simulated-time debt carried when the physics cannot keep up, s.
+  static constexpr double kMaxLag = 0.1;
+
+  /// `threaded`: physics on its own thread, paced by the wall clock; otherwise lockstep (Advance).
+  explicit LiveSession(bool threaded);
+  ~LiveSession();
+  LiveSession(const LiveSession&) = delete;
+  LiveSession& operator=(const LiveSession&) = delete;
+
+  /// Loads a world file (with --set PATH=VALUE assignments applied first) on the caller's thread
+  /// and, on success, hands it to the physics: history emptied, time 0. On failure the current
+  /// world stays and `diagnostics` says why. Safe to call while running.
+  bool Load(const std::string& path, const std::vector<std::string>& sets,
+            core::Diagnostics& diagnostics);
+
+  /// Queues `command`; the sequence number it will have in SessionFrame::commands_done.
+  long Post(Command command);
+  void SetPlaying(bool playing);
+  void SetSpeed(double speed);
+  /// The body whose contacts and robot the samples follow (-1: none).
+  void SetSampledBody(int id);
+
+  /// Lockstep only: carries out the queued commands, then simulates the steps owed for
+  /// `wall_seconds` at the current speed, then publishes a frame.
+  void Advance(double wall_seconds);
+  /// Lockstep only: the queued commands, then `steps` physics steps (while paused: "step").
+  void StepNow(int steps);
+  /// Blocks until every command posted so far has been carried out and published.
+  void Flush();
+
+  std::shared_ptr<const SessionFrame> frame() const;
+  /// The messages of commands carried out since the last call, oldest first.
+  std::vector<std::string> TakeMessages();
+  /// The plot samples published since the last call, oldest first.
+  std::vector<SessionSample> TakeSamples();
+  bool threaded() const { return threaded_; }
+  /// Whether the physics is playing now (it pauses itself on an error or instability).
+  bool playing() const;
+
+ private:
+  void Loop();
+  void RunCommands();
+  void RunSteps(double budget_seconds);
+  void Publish();
+  void FillSample(const SessionFrame& frame, SessionSample* sample) const;
+  core::Twist SampledVelocity() const;  ///< needs mutex_ held (sampled_body_)
+  void Install(std::unique_ptr<core::LiveWorld> world);
+  void Adopt(std::unique_ptr<core::LiveWorld> world);
+
+  const bool threaded_;
+  std::unique_ptr<core::LiveWorld> world_;  ///< the physics thread's (lockstep: the caller's)
+  std::shared_ptr<const core::WorldDesc> published_world_;
+  core::Revision published_revision_ = 0;
+  std::shared_ptr<const core::WorldDesc> file_world_;
+  core::Revision file_revision_ = 0;
+
+  mutable std::mutex mutex_;  ///< guards everything below
+  std::condition_variable wake_, done_;
+  std::deque<std::pair<long, Command>> queue_;
+  long posted_ = 0, done_count_ = 0;
+  std::shared_ptr<const SessionFrame> frame_;
+  std::vector<std::string> messages_;
+  std::deque<SessionSample> samples_;
+  std::unique_ptr<core::LiveWorld> incoming_;  ///< a loaded world waiting for the physics
+  bool playing_ = true;
+  double speed_ = 1.0;
+  int sampled_body_ = -1;
+  bool stop_ = false;
+
+  // physics thread only
+  double owed_ = 0.0;
+  core::StepStatus worst_ = core::StepStatus::kNormal;
+  double smallest_step_ = 0.0;  ///< since the previous frame (0: no step)
+  RealTimeFactorMeter meter_;
+  FixedStepClock clock_;  ///< lockstep pacing
+  std::thread thread_;
+};
+
+}  // namespace lamina::ui
