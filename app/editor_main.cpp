@@ -73,6 +73,11 @@ int main(int argc, char** argv) {
   app.add_option("--bench-frames", options.bench_frames,
                  "time this many frames (vsync off) and print the median frame times")
       ->check(CLI::NonNegativeNumber);
+  app.add_flag("--lockstep", options.lockstep,
+               "physics on the window's thread, exactly 1/60 s of simulated time per frame "
+               "(reproducible runs for scripted tests; default: its own thread, real time)");
+  app.add_option("--trace", options.trace_path,
+                 "write one JSON line per frame (selection, drag, positions) to this file");
   CLI11_PARSE(app, argc, argv);
 
   std::string error;

@@ -10,7 +10,7 @@ packages=(
   liburdfdom-dev liburdfdom-headers-dev libtinyxml2-dev libimgui-dev libglfw3-dev
   libosmesa6-dev libegl-dev libstb-dev libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev
-  xvfb xauth clang-format lld
+  xvfb xauth xdotool clang-format lld
 )
 
 missing=()

@@ -35,7 +35,8 @@ nlohmann::json DragJson(const SessionFrame& frame) {
           {"force", Vector(drag.force)},
           {"target", Vector(drag.target)},
           {"local_point", Vector(drag.local_point)},
-          {"effective_mass", drag.effective_mass}};
+          {"effective_mass", drag.effective_mass},
+          {"impulse", Vector(frame.drag_impulse)}};
 }
 
 nlohmann::json ObjectPositions(const SessionFrame& frame) {
@@ -60,7 +61,12 @@ void FrameTrace::Write(const SessionFrame& frame, const ViewerState& state) {
       {"dirty", frame.dirty},         {"path", frame.path},         {"selected", state.selected_id},
       {"tool", ToolName(state.tool)}, {"dragging", frame.dragging}, {"kinematic", frame.kinematic},
       {"undo", frame.undo_label},     {"redo", frame.redo_label},   {"message", state.message}};
-  if (frame.dragging) line["drag"] = DragJson(frame);
+  if (frame.dragging) {
+    line["drag"] = DragJson(frame);
+    const std::optional<core::Pose> body =
+        core::DrawnBodyFrame(*frame.world, frame.poses, frame.drag.body);
+    if (body) line["drag"]["point"] = Vector(*body * frame.drag.local_point);
+  }
   if (frame.loaded) {
     line["objects"] = ObjectPositions(frame);
     line["sampled_velocity"] = {Vector(frame.sampled_velocity.angular),

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <exception>
 #include <filesystem>
+#include <utility>
 
 #include "core/io/world_file.h"
 #include "core/model/access_path.h"
@@ -132,6 +133,7 @@ void LiveSession::Adopt(std::unique_ptr<core::LiveWorld> world) {
   world_ = std::move(world);
   world_->AddStepObserver([this](const core::StepEvent& event) {
     smallest_step_ = smallest_step_ > 0.0 ? std::min(smallest_step_, event.h) : event.h;
+    if (event.simulator.dragging()) drag_impulse_ += event.simulator.drag().force * event.h;
   });
   owed_ = 0.0;
   worst_ = core::StepStatus::kNormal;
@@ -351,6 +353,7 @@ void LiveSession::Publish() {
     frame->potential_energy = simulator.PotentialEnergy();
     frame->dragging = simulator.dragging();
     frame->drag = simulator.drag();
+    frame->drag_impulse = std::exchange(drag_impulse_, core::Vec3::Zero());
     for (int id = 0; id < simulator.body_count(); ++id) {
       if (simulator.HasKinematicTarget(id)) frame->kinematic.push_back(id);
     }

@@ -79,6 +79,9 @@ struct SessionFrame {
   double kinetic_energy = 0.0, potential_energy = 0.0;  ///< J
   bool dragging = false;
   core::DragState drag;
+  /// ∫ drag force dt over the steps since the previous frame (N·s, world): what the mouse spring
+  /// gave the grabbed body, every step counted (drag.force is the last step's force only).
+  core::Vec3 drag_impulse = core::Vec3::Zero();
   std::vector<int> kinematic;  ///< world ids of bodies moved by a kinematic target
   /// The sampled body (SetSampledBody) when it is an object: its velocity now (frame origin).
   core::Twist sampled_velocity;
@@ -178,7 +181,8 @@ class LiveSession {
   // physics thread only
   double owed_ = 0.0;
   core::StepStatus worst_ = core::StepStatus::kNormal;
-  double smallest_step_ = 0.0;  ///< since the previous frame (0: no step)
+  double smallest_step_ = 0.0;                    ///< since the previous frame (0: no step)
+  core::Vec3 drag_impulse_ = core::Vec3::Zero();  ///< since the previous frame
   RealTimeFactorMeter meter_;
   FixedStepClock clock_;  ///< lockstep pacing
   std::thread thread_;
