@@ -109,21 +109,31 @@ bool WorldDocument::HasUid(ElementUid uid) const {
 
 std::optional<ElementIndex> WorldDocument::Resolve(const ElementRef& ref,
                                                    std::string* error) const {
+  return ResolveRef(desc_, ref, error);
+}
+
+std::optional<ElementRef> WorldDocument::RefOf(const ElementIndex& element,
+                                               std::string* error) const {
+  return RefOfElement(desc_, element, error);
+}
+
+std::optional<ElementIndex> ResolveRef(const WorldDesc& world, const ElementRef& ref,
+                                       std::string* error) {
   int index = -1;
   const char* what = "robot";
   switch (ref.kind) {
     case ElementKind::kSettings:
       return ElementIndex::Settings();
     case ElementKind::kTerrain:
-      index = TerrainIndex(ref.uid);
+      index = IndexOfUid(world.terrains, ref.uid);
       what = "terrain";
       break;
     case ElementKind::kObject:
-      index = ObjectIndex(ref.uid);
+      index = IndexOfUid(world.objects, ref.uid);
       what = "object";
       break;
     default:
-      index = RobotIndex(ref.uid);
+      index = IndexOfUid(world.robots, ref.uid);
       break;
   }
   if (index < 0) {
@@ -132,15 +142,15 @@ std::optional<ElementIndex> WorldDocument::Resolve(const ElementRef& ref,
   }
   const ElementIndex element{ref.kind, index, ref.sub};
   const bool has_sub = ref.kind == ElementKind::kLink || ref.kind == ElementKind::kDriver;
-  if (const auto problem = has_sub ? CheckElement(desc_, element) : std::nullopt) {
+  if (const auto problem = has_sub ? CheckElement(world, element) : std::nullopt) {
     return Fail(error, RefName(ref) + ": " + *problem);
   }
   return has_sub ? element : ElementIndex{ref.kind, index, -1};
 }
 
-std::optional<ElementRef> WorldDocument::RefOf(const ElementIndex& element,
-                                               std::string* error) const {
-  if (const auto problem = CheckElement(desc_, element)) {
+std::optional<ElementRef> RefOfElement(const WorldDesc& world, const ElementIndex& element,
+                                       std::string* error) {
+  if (const auto problem = CheckElement(world, element)) {
     if (error) *error = *problem;
     return std::nullopt;
   }
@@ -148,13 +158,13 @@ std::optional<ElementRef> WorldDocument::RefOf(const ElementIndex& element,
     case ElementKind::kSettings:
       return ElementRef::Settings();
     case ElementKind::kTerrain:
-      return ElementRef::Terrain(desc_.terrains[element.index].uid);
+      return ElementRef::Terrain(world.terrains[element.index].uid);
     case ElementKind::kObject:
-      return ElementRef::Object(desc_.objects[element.index].uid);
+      return ElementRef::Object(world.objects[element.index].uid);
     case ElementKind::kRobot:
-      return ElementRef::Robot(desc_.robots[element.index].uid);
+      return ElementRef::Robot(world.robots[element.index].uid);
     default:
-      return ElementRef{element.kind, desc_.robots[element.index].uid, element.sub};
+      return ElementRef{element.kind, world.robots[element.index].uid, element.sub};
   }
 }
 

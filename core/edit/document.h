@@ -76,6 +76,13 @@ class WorldDocument {
   Revision saved_revision_;
 };
 
+/// WorldDocument::Resolve and RefOf on any description with uids (a document's earlier copy, the
+/// file as last saved): where `ref` is in `world`, and the reference of an element by position.
+std::optional<ElementIndex> ResolveRef(const WorldDesc& world, const ElementRef& ref,
+                                       std::string* error = nullptr);
+std::optional<ElementRef> RefOfElement(const WorldDesc& world, const ElementIndex& element,
+                                       std::string* error = nullptr);
+
 /// What edits and histories (core/edit only) change in a document.
 struct DocumentAccess {
   static WorldDesc& desc(WorldDocument* document) { return document->desc_; }

@@ -59,17 +59,29 @@ std::vector<json> ReadTrace(const std::string& path) {
   return lines;
 }
 
+// the display number Xvfb wrote to `path` ("" if it did not start within 10 s)
+std::string ReadDisplay(const std::string& path) {
+  for (int i = 0; i < 200; ++i) {
+    std::ifstream file(path);
+    std::string number;
+    if (file >> number) return number;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return "";
+}
+
 // An Xvfb server of its own and `lamina` in it, in the background.
 class EditorRun {
  public:
   EditorRun(const std::string& name, int frames, const std::string& options) : name_(name) {
-    display_ = ":" + std::to_string(90 + std::rand() % 500);
     std::remove(trace().c_str());
     std::remove((name + ".exit").c_str());
-    std::system(("Xvfb " + display_ + " -screen 0 1024x768x24 > " + name +
-                 "_xvfb.log 2>&1 & echo $! > " + name + "_xvfb.pid")
+    std::remove((name + ".display").c_str());
+    // Xvfb picks a free display and writes its number (-displayfd)
+    std::system(("Xvfb -displayfd 1 -screen 0 1024x768x24 > " + name + ".display 2> " + name +
+                 "_xvfb.log & echo $! > " + name + "_xvfb.pid")
                     .c_str());
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    display_ = ":" + ReadDisplay(name + ".display");
     std::system(("(DISPLAY=" + display_ + " " + kBin + "/lamina " + kBoxes +
                  " --lockstep --no-ui --size 800x600 --camera '" + kCamera + "' --frames " +
                  std::to_string(frames) + " --trace " + trace() + " " + options + " > " + name +

@@ -15,7 +15,15 @@ void Row(const char* what, const char* action) {
   ImGui::TableNextColumn();
   ImGui::TextUnformatted(what);
   ImGui::TableNextColumn();
-  ImGui::TextUnformatted(action);
+  ImGui::TextWrapped("%s", action);
+}
+
+// two columns: the keys as wide as the widest, the action wrapped in the rest
+bool BeginBindingTable(const char* id) {
+  if (!ImGui::BeginTable(id, 2, ImGuiTableFlags_RowBg)) return false;
+  ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
+  return true;
 }
 
 }  // namespace
@@ -26,15 +34,14 @@ void DrawHelpWindow(ViewerState* state) {
                           ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowSize(ImVec2(640, display.y * 0.8f), ImGuiCond_Appearing);
   if (ImGui::Begin("Keys and mouse (F1)", &state->panels.help)) {
-    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp;
-    if (ImGui::BeginTable("keys", 2, flags)) {
+    if (BeginBindingTable("keys")) {
       for (const KeyBinding& binding : KeyBindings()) {
         if (binding.keys[0] != '\0') Row(binding.keys, binding.action);
       }
       ImGui::EndTable();
     }
     ImGui::Separator();
-    if (ImGui::BeginTable("mouse", 2, flags)) {
+    if (BeginBindingTable("mouse")) {
       for (const MouseBinding& binding : MouseBindings()) Row(binding.gesture, binding.action);
       ImGui::EndTable();
     }

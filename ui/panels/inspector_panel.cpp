@@ -4,6 +4,7 @@
 // each a live edit, then its contacts now (contacts_view.cpp).
 #include <imgui.h>
 
+#include "core/edit/document.h"
 #include "core/render/world_poses.h"
 #include "ui/panels/panels.h"
 #include "ui/panels/param_widgets.h"
@@ -12,29 +13,14 @@ namespace lamina::ui {
 
 namespace {
 
-// the element a world id names, with its reference by uid
+// the element a world id names, with its reference by uid (terrains, objects, robots, links)
 std::optional<ParamRowContext> RowContextOf(const PanelContext& context, int id) {
   const core::WorldDesc& world = *context.frame.world;
   const std::optional<core::ElementIndex> element = core::ElementOfWorldId(world, id);
-  if (!element) return std::nullopt;
-  core::ElementRef ref;
-  switch (element->kind) {
-    case core::ElementKind::kTerrain:
-      ref = core::ElementRef::Terrain(world.terrains[element->index].uid);
-      break;
-    case core::ElementKind::kObject:
-      ref = core::ElementRef::Object(world.objects[element->index].uid);
-      break;
-    case core::ElementKind::kRobot:
-      ref = core::ElementRef::Robot(world.robots[element->index].uid);
-      break;
-    case core::ElementKind::kLink:
-      ref = core::ElementRef::Link(world.robots[element->index].uid, element->sub);
-      break;
-    default:
-      return std::nullopt;
-  }
-  return ParamRowContext{world, context.file_world, *element, ref};
+  const std::optional<core::ElementRef> ref =
+      element ? core::RefOfElement(world, *element) : std::nullopt;
+  if (!ref) return std::nullopt;
+  return ParamRowContext{world, context.file_world, *element, *ref};
 }
 
 bool IsInitialCondition(const core::ParamSpec& spec) {
@@ -53,8 +39,6 @@ void DrawWhereNow(const PanelContext& context, int id) {
 }
 
 }  // namespace
-
-void DrawContactsNow(const PanelContext& context, int id);  // contacts_view.cpp
 
 void DrawInspector(const PanelContext& context) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;

@@ -10,8 +10,6 @@ namespace lamina::ui {
 
 namespace {
 
-float menu_bar_height = 0.0f;
-
 void DrawFileMenu(const PanelContext& context) {
   ViewerState* state = context.state;
   if (!ImGui::BeginMenu("File")) return;
@@ -83,7 +81,7 @@ void DrawToolsMenu(ViewerState* state) {
 }  // namespace
 
 float MenuBarHeight() {
-  return menu_bar_height;
+  return ImGui::GetFrameHeight();  // ImGui's main menu bar is one frame high
 }
 
 void DrawMainMenu(const PanelContext& context) {
@@ -96,7 +94,6 @@ void DrawMainMenu(const PanelContext& context) {
     ImGui::MenuItem("Keys and mouse", "F1", &context.state->panels.help);
     ImGui::EndMenu();
   }
-  menu_bar_height = ImGui::GetWindowSize().y;
   ImGui::EndMainMenuBar();
 }
 

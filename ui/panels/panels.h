@@ -24,7 +24,7 @@ struct PanelContext {
   EditorActions* actions;
 };
 
-/// Height of the main menu bar (0 before the first frame drew it).
+/// Height of the main menu bar.
 float MenuBarHeight();
 
 /// File, Edit, View, Tools and Help menus.
@@ -37,6 +37,8 @@ void DrawSettingsPanel(const PanelContext& context);
 void DrawWorldTree(const PanelContext& context);
 /// The selected body's rows of the table, and its contacts now.
 void DrawInspector(const PanelContext& context);
+/// Inside the Inspector: the contacts of body `id` now (contacts_view.cpp).
+void DrawContactsNow(const PanelContext& context, int id);
 /// The selected robot's drivers (gains, limits, friction) and a slider per joint.
 void DrawRobotPanel(const PanelContext& context);
 /// One checkbox per overlay and the overlay scales.

@@ -10,6 +10,8 @@
 
 #include <imgui.h>
 
+#include "core/edit/document.h"
+
 namespace lamina::ui {
 
 namespace {
@@ -222,19 +224,16 @@ void LabelTooltip(const core::ParamSpec& spec) {
 
 std::optional<core::ParamValue> FileValue(const ParamRowContext& row, const core::ParamSpec& spec) {
   if (!row.file_world) return std::nullopt;
-  const std::optional<core::ElementIndex> element = FileElement(*row.file_world, row.ref);
+  const std::optional<core::ElementIndex> element = core::ResolveRef(*row.file_world, row.ref);
   if (!element) return std::nullopt;
-  std::optional<core::ParamValue> value = core::GetParam(*row.file_world, *element, spec);
-  if (value && value->size() != core::GetParam(row.world, row.element, spec)->size()) {
-    return std::nullopt;  // another robot shape: nothing to go back to
-  }
-  return value;
+  return core::GetParam(*row.file_world, *element, spec);
 }
 
 void RevertButton(const ParamRowContext& row, const core::ParamSpec& spec,
                   const core::ParamValue& shown, EditorActions* actions) {
   const std::optional<core::ParamValue> file = FileValue(row, spec);
-  const bool differs = file && *file != shown;
+  // (a file value of another size belongs to a robot of another shape: nothing to go back to)
+  const bool differs = file && file->size() == shown.size() && *file != shown;
   ImGui::SameLine(ImGui::GetContentRegionAvail().x - 14.0f + ImGui::GetCursorPosX());
   if (!differs) ImGui::BeginDisabled();
   if (ImGui::SmallButton("<")) actions->SetParam(row.ref, spec, *file);
@@ -242,23 +241,6 @@ void RevertButton(const ParamRowContext& row, const core::ParamSpec& spec,
   if (differs && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
     ImGui::SetTooltip("back to the file's value: %s", core::FormatParamValue(spec, *file).c_str());
   }
-}
-
-bool ElementsMatch(const core::WorldDesc& world, const core::ElementIndex& element,
-                   core::ElementUid uid) {
-  switch (element.kind) {
-    case core::ElementKind::kTerrain:
-      return world.terrains[element.index].uid == uid;
-    case core::ElementKind::kObject:
-      return world.objects[element.index].uid == uid;
-    case core::ElementKind::kRobot:
-    case core::ElementKind::kLink:
-    case core::ElementKind::kDriver:
-      return world.robots[element.index].uid == uid;
-    case core::ElementKind::kSettings:
-      break;
-  }
-  return true;
 }
 
 }  // namespace
@@ -275,34 +257,6 @@ const char* ApplyKindText(core::ParamApply apply) {
       return "an initial condition: takes effect at Reset";
   }
   return "";
-}
-
-std::optional<core::ElementIndex> FileElement(const core::WorldDesc& file_world,
-                                              const core::ElementRef& ref) {
-  auto index_of = [&](const auto& elements) {
-    for (size_t i = 0; i < elements.size(); ++i) {
-      if (elements[i].uid == ref.uid) return static_cast<int>(i);
-    }
-    return -1;
-  };
-  core::ElementIndex element{ref.kind, -1, ref.sub};
-  switch (ref.kind) {
-    case core::ElementKind::kSettings:
-      return core::ElementIndex::Settings();
-    case core::ElementKind::kTerrain:
-      element.index = index_of(file_world.terrains);
-      break;
-    case core::ElementKind::kObject:
-      element.index = index_of(file_world.objects);
-      break;
-    case core::ElementKind::kRobot:
-    case core::ElementKind::kLink:
-    case core::ElementKind::kDriver:
-      element.index = index_of(file_world.robots);
-      break;
-  }
-  if (element.index < 0 || core::CheckElement(file_world, element)) return std::nullopt;
-  return ElementsMatch(file_world, element, ref.uid) ? std::optional(element) : std::nullopt;
 }
 
 void DrawParamRow(const ParamRowContext& row, const core::ParamSpec& spec, EditorActions* actions) {

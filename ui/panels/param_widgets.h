@@ -30,10 +30,6 @@ void DrawParamRow(const ParamRowContext& row, const core::ParamSpec& spec, Edito
 void DrawParamTable(const char* id, const ParamRowContext& row, core::ElementKind kind,
                     EditorActions* actions, bool (*filter)(const core::ParamSpec&) = nullptr);
 
-/// The element of `file_world` with the same uid as `ref` (nullopt when it was not in the file).
-std::optional<core::ElementIndex> FileElement(const core::WorldDesc& file_world,
-                                              const core::ElementRef& ref);
-
 /// "live", "rebuilds the geometry", ... for tooltips.
 const char* ApplyKindText(core::ParamApply apply);
 

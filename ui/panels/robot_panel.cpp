@@ -6,7 +6,6 @@
 // saved).
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include <imgui.h>
 
@@ -27,17 +26,10 @@ int SelectedRobot(const core::WorldDesc& world, int id) {
   return robot ? body.index : -1;
 }
 
-// where the joint sliders point (per robot); follows the commanded configuration until a
-// slider moves, and after a reset
-struct JointTargets {
-  std::map<int, core::VecX> by_robot;
-  double time = -1.0;
-};
-
-core::VecX& TargetsOf(JointTargets* targets, int robot, const RobotFrame& frame, double time) {
-  if (time < targets->time) targets->by_robot.clear();  // a reset or an undo went back
-  targets->time = time;
-  core::VecX& q = targets->by_robot[robot];
+core::VecX& TargetsOf(ViewerState* state, int robot, const RobotFrame& frame, double time) {
+  if (time < state->joint_targets_time) state->joint_targets.clear();  // a reset or an undo
+  state->joint_targets_time = time;
+  core::VecX& q = state->joint_targets[robot];
   if (q.size() != frame.commanded.size()) q = frame.commanded;
   return q;
 }
@@ -47,10 +39,10 @@ void SliderRange(const core::LinkDesc& link, double* low, double* high) {
   *high = std::isfinite(link.q_max) ? link.q_max : kPi;
 }
 
-void DrawJointSliders(const PanelContext& context, int r, JointTargets* targets) {
+void DrawJointSliders(const PanelContext& context, int r) {
   const core::RobotDesc& robot = context.frame.world->robots[r];
   const RobotFrame& live = context.frame.robots[r];
-  core::VecX& q = TargetsOf(targets, r, live, context.frame.time);
+  core::VecX& q = TargetsOf(context.state, r, live, context.frame.time);
   for (const core::DriverDesc& driver : robot.drivers) {
     if (driver.type != core::DriverType::kNormal || driver.links.size() != 1) continue;
     const int l = driver.links[0];
@@ -90,14 +82,13 @@ void DrawRobotPanel(const PanelContext& context) {
   if (!context.frame.loaded) return;
   const int r = SelectedRobot(*context.frame.world, context.state->selected_id);
   if (r < 0 || r >= static_cast<int>(context.frame.robots.size())) return;
-  static JointTargets targets;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x - 400, display.y * 0.55f + 40), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(390, display.y * 0.45f - 80), ImGuiCond_FirstUseEver);
   const std::string title = "Robot " + context.frame.world->robots[r].name + "###Robot";
   if (ImGui::Begin(title.c_str(), &context.state->panels.robot)) {
     if (ImGui::CollapsingHeader("joints", ImGuiTreeNodeFlags_DefaultOpen)) {
-      DrawJointSliders(context, r, &targets);
+      DrawJointSliders(context, r);
     }
     if (ImGui::CollapsingHeader("drivers", ImGuiTreeNodeFlags_DefaultOpen)) {
       DrawDrivers(context, r);

@@ -16,6 +16,18 @@ std::string SaveOutcome(bool ok, const core::Diagnostics& diagnostics, const std
   return ok ? "saved " + path : "cannot save " + path + ": " + diagnostics.FormatAll();
 }
 
+// undo or redo one entry: "undid <label>", or why not
+std::string StepHistory(core::LiveWorld& world, bool undo) {
+  const core::History& history = world.history();
+  if (undo ? !world.CanUndo() : !world.CanRedo()) {
+    return undo ? "nothing to undo" : "nothing to redo";
+  }
+  const std::string label = undo ? history.UndoLabel() : history.RedoLabel();
+  std::string error;
+  const bool ok = undo ? world.Undo(&error) : world.Redo(&error);
+  return ok ? (undo ? "undid " : "redid ") + label : error;
+}
+
 }  // namespace
 
 EditorActions::RowKey EditorActions::KeyOf(const core::ElementRef& ref,
@@ -61,21 +73,11 @@ void EditorActions::Forget(const SessionFrame& frame) {
 }
 
 void EditorActions::Undo() {
-  session_->Post([](core::LiveWorld& world) {
-    std::string error;
-    if (!world.CanUndo()) return std::string("nothing to undo");
-    const std::string label = world.history().UndoLabel();
-    return world.Undo(&error) ? "undid " + label : error;
-  });
+  session_->Post([](core::LiveWorld& world) { return StepHistory(world, true); });
 }
 
 void EditorActions::Redo() {
-  session_->Post([](core::LiveWorld& world) {
-    std::string error;
-    if (!world.CanRedo()) return std::string("nothing to redo");
-    const std::string label = world.history().RedoLabel();
-    return world.Redo(&error) ? "redid " + label : error;
-  });
+  session_->Post([](core::LiveWorld& world) { return StepHistory(world, false); });
 }
 
 void EditorActions::MakeCurrentStateInitial() {

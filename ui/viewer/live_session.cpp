@@ -316,63 +316,24 @@ void LiveSession::Loop() {
 }
 
 void LiveSession::Publish() {
-  auto frame = std::make_shared<SessionFrame>();
-  if (world_) {
-    const core::WorldDocument& document = world_->document();
-    if (!published_world_ || document.revision() != published_revision_) {
-      published_world_ = std::make_shared<const core::WorldDesc>(document.desc());
-      published_revision_ = document.revision();
-    }
-    const core::Simulator& simulator = world_->simulator();
-    frame->loaded = true;
-    frame->world = published_world_;
-    if (document.saved_revision() != file_revision_ &&
-        document.revision() == document.saved_revision()) {
-      file_world_ = published_world_;
-      file_revision_ = document.saved_revision();
-    }
-    frame->file_world = file_world_;
-    frame->path = document.path();
-    frame->dirty = document.dirty();
-    frame->undo_label = world_->history().UndoLabel();
-    frame->redo_label = world_->history().RedoLabel();
-    frame->poses = core::CurrentPoses(simulator);
-    frame->contacts = core::ContactMarkersFromSimulator(simulator);
-    for (int r = 0; r < simulator.robot_count(); ++r) {
-      frame->robots.push_back(RobotFrameOf(simulator, r));
-    }
-    frame->time = simulator.time();
-    frame->step = simulator.sim_step();
-    frame->smallest_step = smallest_step_;
-    smallest_step_ = 0.0;
-    frame->steps = simulator.statistics().steps;
-    frame->status = worst_;
-    frame->halted = simulator.halted();
-    frame->problem = ProblemText(simulator, worst_);
-    frame->kinetic_energy = simulator.KineticEnergy();
-    frame->potential_energy = simulator.PotentialEnergy();
-    frame->dragging = simulator.dragging();
-    frame->drag = simulator.drag();
-    frame->drag_impulse = std::exchange(drag_impulse_, core::Vec3::Zero());
-    for (int id = 0; id < simulator.body_count(); ++id) {
-      if (simulator.HasKinematicTarget(id)) frame->kinematic.push_back(id);
-    }
+  int sampled = -1;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    sampled = sampled_body_;
   }
+  auto frame = std::make_shared<SessionFrame>();
+  if (world_) FillFrame(sampled, frame.get());
   frame->real_time_factor = meter_.factor();
   const bool stop_here = worst_ >= core::StepStatus::kUnstable;
   worst_ = frame->halted ? core::StepStatus::kError : core::StepStatus::kNormal;
   SessionSample sample;
+  if (frame->loaded) FillSample(*frame, sampled, &sample);
   std::lock_guard<std::mutex> lock(mutex_);
   if (stop_here) playing_ = false;  // the user decides what to do (ProblemText)
-  if (frame->loaded) {
-    frame->sampled_velocity = SampledVelocity();
-    frame->sampled_contacts = core::ReadContacts(world_->simulator(), sampled_body_);
-  }
   frame->playing = playing_;
   frame->speed = speed_;
   frame->commands_done = done_count_;
   if (frame->loaded) {
-    FillSample(*frame, &sample);
     samples_.push_back(std::move(sample));
     if (samples_.size() > kMaxSamples) samples_.pop_front();
   }
@@ -380,30 +341,76 @@ void LiveSession::Publish() {
   done_.notify_all();
 }
 
-core::Twist LiveSession::SampledVelocity() const {
+// the document's side of a frame (its description is copied only after an edit)
+void LiveSession::FillDocument(SessionFrame* frame) {
+  const core::WorldDocument& document = world_->document();
+  if (!published_world_ || document.revision() != published_revision_) {
+    published_world_ = std::make_shared<const core::WorldDesc>(document.desc());
+    published_revision_ = document.revision();
+  }
+  if (document.saved_revision() != file_revision_ &&
+      document.revision() == document.saved_revision()) {
+    file_world_ = published_world_;
+    file_revision_ = document.saved_revision();
+  }
+  frame->loaded = true;
+  frame->world = published_world_;
+  frame->file_world = file_world_;
+  frame->path = document.path();
+  frame->dirty = document.dirty();
+  frame->undo_label = world_->history().UndoLabel();
+  frame->redo_label = world_->history().RedoLabel();
+}
+
+// physics thread: everything but what the mutex guards
+void LiveSession::FillFrame(int sampled, SessionFrame* frame) {
+  FillDocument(frame);
+  const core::Simulator& simulator = world_->simulator();
+  frame->poses = core::CurrentPoses(simulator);
+  frame->contacts = core::ContactMarkersFromSimulator(simulator);
+  for (int r = 0; r < simulator.robot_count(); ++r) {
+    frame->robots.push_back(RobotFrameOf(simulator, r));
+  }
+  frame->time = simulator.time();
+  frame->step = simulator.sim_step();
+  frame->smallest_step = std::exchange(smallest_step_, 0.0);
+  frame->steps = simulator.statistics().steps;
+  frame->status = worst_;
+  frame->halted = simulator.halted();
+  frame->problem = ProblemText(simulator, worst_);
+  frame->kinetic_energy = simulator.KineticEnergy();
+  frame->potential_energy = simulator.PotentialEnergy();
+  frame->dragging = simulator.dragging();
+  frame->drag = simulator.drag();
+  frame->drag_impulse = std::exchange(drag_impulse_, core::Vec3::Zero());
+  for (int id = 0; id < simulator.body_count(); ++id) {
+    if (simulator.HasKinematicTarget(id)) frame->kinematic.push_back(id);
+  }
+  frame->sampled_velocity = SampledVelocity(sampled);
+  frame->sampled_contacts = core::ReadContacts(simulator, sampled);
+}
+
+core::Twist LiveSession::SampledVelocity(int sampled) const {
   const std::optional<core::ElementIndex> element =
-      core::ElementOfWorldId(world_->document().desc(), sampled_body_);
+      core::ElementOfWorldId(world_->document().desc(), sampled);
   if (!element || element->kind != core::ElementKind::kObject) return {};
   return world_->simulator().GetObjectVelocity(element->index);
 }
 
-void LiveSession::FillSample(const SessionFrame& frame, SessionSample* sample) const {
+void LiveSession::FillSample(const SessionFrame& frame, int sampled, SessionSample* sample) const {
   sample->time = frame.time;
   sample->kinetic = frame.kinetic_energy;
   sample->potential = frame.potential_energy;
   sample->step = frame.smallest_step > 0.0 ? frame.smallest_step : frame.step;
   sample->real_time_factor = frame.real_time_factor;
-  sample->body = sampled_body_;
-  if (sampled_body_ < 0 || !world_) return;
-  const core::Simulator& simulator = world_->simulator();
-  sample->contact_force = simulator.ContactForce(sampled_body_).norm();
-  for (const core::ContactPair& pair : simulator.contact_pairs()) {
-    if (pair.a == sampled_body_ || pair.b == sampled_body_) {
-      sample->overlap = std::max(sample->overlap, pair.max_depth);
-    }
+  sample->body = sampled;
+  if (sampled < 0 || !world_) return;
+  sample->contact_force = world_->simulator().ContactForce(sampled).norm();
+  for (const core::PairReadout& pair : frame.sampled_contacts) {
+    sample->overlap = std::max(sample->overlap, pair.max_depth);
   }
   const core::WorldDesc& world = *frame.world;
-  const std::optional<core::ElementIndex> element = core::ElementOfWorldId(world, sampled_body_);
+  const std::optional<core::ElementIndex> element = core::ElementOfWorldId(world, sampled);
   if (!element || element->kind != core::ElementKind::kLink) return;
   sample->robot = element->index;
   const RobotFrame& robot = frame.robots[element->index];

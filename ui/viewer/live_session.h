@@ -153,8 +153,10 @@ class LiveSession {
   void RunCommands();
   void RunSteps(double budget_seconds);
   void Publish();
-  void FillSample(const SessionFrame& frame, SessionSample* sample) const;
-  core::Twist SampledVelocity() const;  ///< needs mutex_ held (sampled_body_)
+  void FillDocument(SessionFrame* frame);
+  void FillFrame(int sampled, SessionFrame* frame);
+  void FillSample(const SessionFrame& frame, int sampled, SessionSample* sample) const;
+  core::Twist SampledVelocity(int sampled) const;
   void Install(std::unique_ptr<core::LiveWorld> world);
   void Adopt(std::unique_ptr<core::LiveWorld> world);
 

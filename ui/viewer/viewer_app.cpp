@@ -190,6 +190,7 @@ void Viewer::OpenWorld(const std::string& path, const std::vector<std::string>& 
   frame_ = session_.frame();
   state_.open_path_input = path;
   state_.selected_id = state_.hovered_id = -1;
+  state_.joint_targets.clear();
   state_.message = "opened " + frame_->path;
   camera_chosen_ = false;
 }

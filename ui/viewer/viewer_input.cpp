@@ -3,10 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+
+#include "core/render/overlay_options.h"
 
 namespace lamina::ui {
 
@@ -15,17 +18,32 @@ namespace {
 // a press that moved less than this is a click, not a drag (pixels)
 constexpr double kClickSlop = 3.0;
 
-void ToggleOverlay(ViewerState* state, int i) {
-  bool* toggles[] = {&state->overlays.contacts, &state->overlays.normals, &state->overlays.forces,
-                     &state->overlays.padding,  &state->overlays.com,     &state->overlays.frames,
-                     &state->overlays.bbox};
-  *toggles[i] = !*toggles[i];
-}
-
+// key 1 + i toggles the i-th overlay of core::kOverlayToggles
+static_assert(std::size(core::kOverlayToggles) == 7, "keys 1 ... 7 toggle every overlay");
 template <int kIndex>
 void Overlay(ViewerState* state, bool) {
-  ToggleOverlay(state, kIndex);
+  bool& flag = state->overlays.*core::kOverlayToggles[kIndex].flag;
+  flag = !flag;
 }
+
+// the actions two keys share
+void Step(ViewerState* s, bool shift) {
+  (shift ? s->requests.step_frame : s->requests.step) = true;
+}
+void Reset(ViewerState* s, bool) {
+  s->requests.reset = true;
+}
+void Redo(ViewerState* s, bool) {
+  s->requests.redo = true;
+}
+void Screenshot(ViewerState* s, bool) {
+  s->requests.screenshot = true;
+}
+void Reframe(ViewerState* s, bool) {
+  s->requests.reframe = true;
+}
+
+const std::string kOverlayHelp = "toggle the overlays in this order: " + core::OverlayNames();
 
 template <MouseTool kTool>
 void Tool(ViewerState* state, bool) {
@@ -35,28 +53,18 @@ void Tool(ViewerState* state, bool) {
 const KeyBinding kKeys[] = {
     {GLFW_KEY_SPACE, kNoMods, false, "Space", "play / pause",
      [](ViewerState* s, bool) { s->playing = !s->playing; }},
-    {GLFW_KEY_S, kAnyShift, true, "S or Right", "one step (Shift: 1/60 s)",
-     [](ViewerState* s, bool shift) {
-       (shift ? s->requests.step_frame : s->requests.step) = true;
-     }},
-    {GLFW_KEY_RIGHT, kAnyShift, true, "", "",
-     [](ViewerState* s, bool shift) {
-       (shift ? s->requests.step_frame : s->requests.step) = true;
-     }},
-    {GLFW_KEY_R, kNoMods, false, "R or Backspace", "reset to the initial state",
-     [](ViewerState* s, bool) { s->requests.reset = true; }},
-    {GLFW_KEY_BACKSPACE, kNoMods, false, "", "",
-     [](ViewerState* s, bool) { s->requests.reset = true; }},
+    {GLFW_KEY_S, kAnyShift, true, "S or Right", "one step (Shift: 1/60 s)", Step},
+    {GLFW_KEY_RIGHT, kAnyShift, true, "", "", Step},
+    {GLFW_KEY_R, kNoMods, false, "R or Backspace", "reset to the initial state", Reset},
+    {GLFW_KEY_BACKSPACE, kNoMods, false, "", "", Reset},
     {GLFW_KEY_LEFT_BRACKET, kNoMods, false, "[", "half speed",
      [](ViewerState* s, bool) { s->speed = std::max(kMinSpeed, s->speed / 2.0); }},
     {GLFW_KEY_RIGHT_BRACKET, kNoMods, false, "]", "double speed",
      [](ViewerState* s, bool) { s->speed = std::min(kMaxSpeed, s->speed * 2.0); }},
     {GLFW_KEY_Z, kCtrl, false, "Ctrl+Z", "undo",
      [](ViewerState* s, bool) { s->requests.undo = true; }},
-    {GLFW_KEY_Z, kCtrl | kShift, false, "Ctrl+Shift+Z", "redo",
-     [](ViewerState* s, bool) { s->requests.redo = true; }},
-    {GLFW_KEY_Y, kCtrl, false, "Ctrl+Y", "redo",
-     [](ViewerState* s, bool) { s->requests.redo = true; }},
+    {GLFW_KEY_Z, kCtrl | kShift, false, "Ctrl+Shift+Z or Ctrl+Y", "redo", Redo},
+    {GLFW_KEY_Y, kCtrl, false, "", "", Redo},
     {GLFW_KEY_S, kCtrl, false, "Ctrl+S", "save",
      [](ViewerState* s, bool) { s->requests.save = true; }},
     {GLFW_KEY_S, kCtrl | kShift, false, "Ctrl+Shift+S", "save as",
@@ -70,24 +78,17 @@ const KeyBinding kKeys[] = {
     {GLFW_KEY_E, kNoMods, false, "E", "torque tool (turn)", Tool<MouseTool::kTorque>},
     {GLFW_KEY_T, kNoMods, false, "T", "kinematic drag tool", Tool<MouseTool::kKinematic>},
     {GLFW_KEY_G, kNoMods, false, "G", "pose tool (paused)", Tool<MouseTool::kPose>},
-    {GLFW_KEY_F12, kNoMods, false, "F12 or P", "screenshot",
-     [](ViewerState* s, bool) { s->requests.screenshot = true; }},
-    {GLFW_KEY_P, kNoMods, false, "", "",
-     [](ViewerState* s, bool) { s->requests.screenshot = true; }},
-    {GLFW_KEY_F, kNoMods, false, "F or Home", "frame the world",
-     [](ViewerState* s, bool) { s->requests.reframe = true; }},
-    {GLFW_KEY_HOME, kNoMods, false, "", "",
-     [](ViewerState* s, bool) { s->requests.reframe = true; }},
+    {GLFW_KEY_F12, kNoMods, false, "F12 or P", "screenshot", Screenshot},
+    {GLFW_KEY_P, kNoMods, false, "", "", Screenshot},
+    {GLFW_KEY_F, kNoMods, false, "F or Home", "frame the world", Reframe},
+    {GLFW_KEY_HOME, kNoMods, false, "", "", Reframe},
     {GLFW_KEY_H, kNoMods, false, "H", "hide / show the panels",
      [](ViewerState* s, bool) { s->show_panels = !s->show_panels; }},
     {GLFW_KEY_F1, kNoMods, false, "F1", "this help",
      [](ViewerState* s, bool) { s->panels.help = !s->panels.help; }},
     {GLFW_KEY_ESCAPE, kNoMods, false, "Esc", "clear the selection",
      [](ViewerState* s, bool) { s->selected_id = -1; }},
-    {GLFW_KEY_1, kNoMods, false, "1 ... 7",
-     "overlays: contacts, normals, forces, padding, COM, "
-     "frames, boxes",
-     Overlay<0>},
+    {GLFW_KEY_1, kNoMods, false, "1 ... 7", kOverlayHelp.c_str(), Overlay<0>},
     {GLFW_KEY_2, kNoMods, false, "", "", Overlay<1>},
     {GLFW_KEY_3, kNoMods, false, "", "", Overlay<2>},
     {GLFW_KEY_4, kNoMods, false, "", "", Overlay<3>},

@@ -4,9 +4,11 @@
 // world do not go through here: panels post them with EditorActions.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
+#include "core/math_types.h"
 #include "core/render/overlay_options.h"
 
 namespace lamina::ui {
@@ -59,6 +61,10 @@ struct ViewerState {
   int hovered_id = -1;      ///< world id of the body under the mouse, -1 for none
   int selected_id = -1;     ///< world id of the selected body, -1 for none
   std::string tree_filter;  ///< the World tree's filter text
+  /// Where the Robot panel's joint sliders point, per robot index (link space): the commanded
+  /// configuration until a slider moves; forgotten when a world opens or the time goes back.
+  std::map<int, core::VecX> joint_targets;
+  double joint_targets_time = -1.0;  ///< simulated time they were last shown at
 
   // measured, shown by the panels
   double frame_milliseconds = 0.0;
