@@ -322,11 +322,40 @@ bool ChangesStructure(const Edit& edit) {
 
 namespace {
 
+// a name or, for an unnamed element, its access path
+std::string NameOr(const std::string& name, const ElementIndex& element) {
+  return name.empty() ? ElementPath(element) : name;
+}
+
+// the element as the world names it: "block", "arm link 'elbow'", "arm driver 'shoulder'"
+std::string ElementName(const WorldDesc& world, const ElementIndex& e) {
+  switch (e.kind) {
+    case ElementKind::kSettings:
+      return "settings";
+    case ElementKind::kTerrain:
+      return NameOr(world.terrains[e.index].name, e);
+    case ElementKind::kObject:
+      return NameOr(world.objects[e.index].name, e);
+    case ElementKind::kRobot:
+      return NameOr(world.robots[e.index].name, e);
+    case ElementKind::kLink:
+      return NameOr(world.robots[e.index].name, ElementIndex::Robot(e.index)) + " link " +
+             Quoted(world.robots[e.index].links[e.sub].name);
+    case ElementKind::kDriver:
+      return NameOr(world.robots[e.index].name, ElementIndex::Robot(e.index)) + " driver " +
+             Quoted(world.robots[e.index].drivers[e.sub].name);
+  }
+  return ElementPath(e);
+}
+
 struct Describer {
+  const WorldDesc* world = nullptr;
+
   std::string operator()(const ParamEdit& e) const {
     const bool known = e.param >= 0 && e.param < static_cast<int>(Params().size());
     const std::string key = known ? std::string(Params()[e.param].key) : "?";
-    return key + " of " + RefName(e.element);
+    const std::optional<ElementIndex> index = world ? ResolveRef(*world, e.element) : std::nullopt;
+    return key + " of " + (index ? ElementName(*world, *index) : RefName(e.element));
   }
   std::string operator()(const RenameEdit& e) const {
     return "rename " + Quoted(e.before) + " to " + Quoted(e.after);
@@ -345,8 +374,8 @@ struct Describer {
 
 }  // namespace
 
-std::string Describe(const Edit& edit) {
-  return std::visit(Describer{}, edit);
+std::string Describe(const Edit& edit, const WorldDesc* world) {
+  return std::visit(Describer{world}, edit);
 }
 
 // ---- building edits -----------------------------------------------------------------------

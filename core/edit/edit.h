@@ -116,8 +116,9 @@ Edit Inverse(const Edit& edit);
 /// simulation is built anew for them: LiveWorld).
 bool ChangesStructure(const Edit& edit);
 /// A short label for a history menu: "kFriction of object #4", "rename 'box' to 'crate'",
-/// "add object 'box'", "initial state".
-std::string Describe(const Edit& edit);
+/// "add object 'box'", "initial state". With `world` (the document before the edit) elements
+/// are named as the user knows them: "kFriction of block", "servoP of arm driver 'shoulder'".
+std::string Describe(const Edit& edit, const WorldDesc* world = nullptr);
 
 // ---- building edits from a document's current values ------------------------------------
 

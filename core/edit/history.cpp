@@ -25,7 +25,9 @@ bool History::Do(EditTarget& target, const Edit& edit, std::string* error) {
   const bool opens = !(group_depth_ > 0 && group_has_entry_);
   HistoryEntry entry;
   if (opens) {
-    entry.label = group_depth_ > 0 && !group_label_.empty() ? group_label_ : Describe(edit);
+    entry.label = group_depth_ > 0 && !group_label_.empty()
+                      ? group_label_
+                      : Describe(edit, &target.document().desc());
     entry.revision_before = target.document().revision();
     target.BeginStep(entry, HistoryStep::kDo);
   }

@@ -111,7 +111,19 @@ TEST_F(HistoryTest, GroupsNestAndTheOutermostLabelNamesTheEntry) {
   EXPECT_EQ(history_.UndoLabel(), "outer");
   ASSERT_TRUE(Do(Param(Object(0), "kFriction", {0.1})));  // after the group: a new step
   EXPECT_EQ(history_.undo_count(), 2);
-  EXPECT_EQ(history_.UndoLabel(), "kFriction of object #" + std::to_string(Object(0).uid));
+  EXPECT_EQ(history_.UndoLabel(), "kFriction of base_block");
+}
+
+TEST_F(HistoryTest, EntriesNameElementsAsTheWorldDoes) {
+  ASSERT_TRUE(Do(Param(Object(1), "padding", {0.01})));
+  EXPECT_EQ(history_.UndoLabel(), "padding of top_block");
+  const ElementRef driver = *document_.RefOf(ElementIndex::Driver(0, 0));
+  ASSERT_TRUE(Do(Param(driver, "servoP", {20.0})));
+  const core::RobotDesc& arm = document_.desc().robots[0];
+  EXPECT_EQ(history_.UndoLabel(), "servoP of arm driver '" + arm.drivers[0].name + "'");
+  // without a world to name them, elements go by uid
+  EXPECT_EQ(core::Describe(Param(Object(1), "padding", {0.02})),
+            "padding of object #" + std::to_string(Object(1).uid));
 }
 
 TEST_F(HistoryTest, AnEmptyOrRefusedGroupRecordsNothing) {

@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "ui/panels/panels.h"
+#include "ui/widgets/item_registry.h"
 
 namespace lamina::ui {
 
@@ -58,17 +59,23 @@ void DrawConfirm(const PanelContext& context) {
   ImGui::Text("'%s' has unsaved changes.",
               context.frame.loaded ? context.frame.world->name.c_str() : "");
   ImGui::Text("Save them before %s?", ActionText(state->confirm.action));
-  if (ImGui::Button("Save") && context.actions->Save(context.frame)) {
+  const bool save = ImGui::Button("Save");
+  RecordItem("dialog.confirm.save");
+  if (save && context.actions->Save(context.frame)) {
     Proceed(state);
     ImGui::CloseCurrentPopup();
   }
   ImGui::SameLine();
-  if (ImGui::Button("Discard")) {
+  const bool discard = ImGui::Button("Discard");
+  RecordItem("dialog.confirm.discard");
+  if (discard) {
     Proceed(state);
     ImGui::CloseCurrentPopup();
   }
   ImGui::SameLine();
-  if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+  const bool cancel = ImGui::Button("Cancel");
+  RecordItem("dialog.confirm.cancel");
+  if (cancel || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
     state->confirm = {};
     ImGui::CloseCurrentPopup();
   }
@@ -90,13 +97,17 @@ void DrawSaveAs(const PanelContext& context) {
   if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
   const bool entered = ImGui::InputText("##path", buffer.data(), buffer.size(),
                                         ImGuiInputTextFlags_EnterReturnsTrue);
+  RecordItem("dialog.save_as.path", buffer.data());
   state->save_as_input = buffer.data();
-  if ((ImGui::Button("Save") || entered) && !state->save_as_input.empty()) {
+  const bool save = ImGui::Button("Save");
+  RecordItem("dialog.save_as.save");
+  if ((save || entered) && !state->save_as_input.empty()) {
     context.actions->SaveAs(state->save_as_input);
     ImGui::CloseCurrentPopup();
   }
   ImGui::SameLine();
   if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+  RecordItem("dialog.save_as.cancel");
   ImGui::EndPopup();
 }
 

@@ -9,8 +9,10 @@
 #include <string>
 
 #include <imgui.h>
+#include <imgui_internal.h>  // TempInputIsActive: is the user typing into a drag field?
 
 #include "core/edit/document.h"
+#include "ui/widgets/item_registry.h"
 
 namespace lamina::ui {
 
@@ -27,8 +29,9 @@ struct WidgetResult {
 
 // ---- undo groups: a widget's activation to its deactivation is one entry ---------------
 
-void TrackGroup(const core::ParamSpec& spec, EditorActions* actions) {
-  if (ImGui::IsItemActivated()) actions->BeginGroup(std::string(spec.label));
+// (the group's label is its first edit's: "kFriction of block")
+void TrackGroup(EditorActions* actions) {
+  if (ImGui::IsItemActivated()) actions->BeginGroup("");
   if (ImGui::IsItemDeactivated()) actions->EndGroup();
 }
 
@@ -36,6 +39,38 @@ void TrackGroup(const core::ParamSpec& spec, EditorActions* actions) {
 float DragSpeed(double value) {
   const double size = std::isfinite(value) ? std::abs(value) : 1.0;
   return static_cast<float>(std::max(size * 0.01, 1e-4));
+}
+
+// ---- typed values: applied when the field is left, not per keystroke ----------------------
+
+// Typing into a drag field (Ctrl+click or double-click) gives ImGui a value per keystroke: "0",
+// "0.", "0.05". They are held back and only the number in the field when it is left (Enter,
+// Tab, a click elsewhere) is applied, so a friction of 0 or a stiffness the table refuses on
+// the way to the typed number never reaches the simulation. Escape leaves the value as it was.
+struct TypedValue {
+  ImGuiID id = 0;
+  double value = 0.0;
+  bool held = false;
+};
+
+TypedValue& Typed() {
+  static TypedValue typed;  // one field has the keyboard at a time
+  return typed;
+}
+
+// call right after the drag widget; adjusts what it reports
+void HoldWhileTyping(bool* changed, double* value) {
+  TypedValue& typed = Typed();
+  const ImGuiID id = ImGui::GetItemID();
+  if (ImGui::TempInputIsActive(id)) {
+    if (*changed) typed = {id, *value, true};
+    *changed = false;
+  } else if (typed.held && typed.id == id && ImGui::IsItemDeactivated()) {
+    const bool escaped = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+    *changed = !escaped;
+    if (!escaped) *value = typed.value;
+    typed = {};
+  }
 }
 
 // ---- widgets by type --------------------------------------------------------------------
@@ -52,7 +87,8 @@ WidgetResult RealWidget(const core::ParamSpec& spec, double value, EditorActions
   if (infinite) ImGui::BeginDisabled();
   result.changed = ImGui::DragScalar("##v", ImGuiDataType_Double, &shown, DragSpeed(value), nullptr,
                                      nullptr, infinite ? "inf" : "%.6g");
-  TrackGroup(spec, actions);
+  HoldWhileTyping(&result.changed, &shown);
+  TrackGroup(actions);
   if (infinite) ImGui::EndDisabled();
   if (spec.allow_inf) {
     ImGui::SameLine();
@@ -67,13 +103,15 @@ WidgetResult RealWidget(const core::ParamSpec& spec, double value, EditorActions
   return result;
 }
 
-WidgetResult IntegerWidget(const core::ParamSpec& spec, double value, EditorActions* actions) {
+WidgetResult IntegerWidget(double value, EditorActions* actions) {
   WidgetResult result;
   long long shown = static_cast<long long>(value);
   ImGui::SetNextItemWidth(-1.0f);
   result.changed = ImGui::DragScalar("##v", ImGuiDataType_S64, &shown, 0.2f);
-  TrackGroup(spec, actions);
-  result.value = {static_cast<double>(shown)};
+  double typed = static_cast<double>(shown);
+  HoldWhileTyping(&result.changed, &typed);
+  TrackGroup(actions);
+  result.value = {typed};
   return result;
 }
 
@@ -104,14 +142,13 @@ WidgetResult ChoiceWidget(const core::ParamSpec& spec, double value) {
   return result;
 }
 
-WidgetResult Vec3Widget(const core::ParamSpec& spec, const core::ParamValue& value,
-                        EditorActions* actions) {
+WidgetResult Vec3Widget(const core::ParamValue& value, EditorActions* actions) {
   WidgetResult result{false, value};
   ImGui::SetNextItemWidth(-1.0f);
   const double largest = std::max({std::abs(value[0]), std::abs(value[1]), std::abs(value[2])});
   result.changed = ImGui::DragScalarN("##v", ImGuiDataType_Double, result.value.data(), 3,
                                       DragSpeed(largest), nullptr, nullptr, "%.4g");
-  TrackGroup(spec, actions);
+  TrackGroup(actions);
   return result;
 }
 
@@ -131,19 +168,18 @@ core::Mat3 RotationOf(const core::Vec3& rpy) {
       .toRotationMatrix();
 }
 
-WidgetResult PoseWidget(const core::ParamSpec& spec, const core::ParamValue& value,
-                        EditorActions* actions) {
+WidgetResult PoseWidget(const core::ParamValue& value, EditorActions* actions) {
   core::Pose pose = core::ValueToPose(value);
   core::Vec3 position = pose.translation();
   core::Vec3 angles = RollPitchYaw(pose.linear()) * kDegrees;
   ImGui::SetNextItemWidth(-1.0f);
   bool changed = ImGui::DragScalarN("##p", ImGuiDataType_Double, position.data(), 3, 0.005f,
                                     nullptr, nullptr, "%.4g m");
-  TrackGroup(spec, actions);
+  TrackGroup(actions);
   ImGui::SetNextItemWidth(-1.0f);
   changed |= ImGui::DragScalarN("##r", ImGuiDataType_Double, angles.data(), 3, 0.5f, nullptr,
                                 nullptr, "%.2f°");
-  TrackGroup(spec, actions);
+  TrackGroup(actions);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("roll, pitch, yaw (degrees)");
   if (!changed) return {false, value};
   pose.translation() = position;
@@ -151,17 +187,16 @@ WidgetResult PoseWidget(const core::ParamSpec& spec, const core::ParamValue& val
   return {true, core::PoseToValue(pose)};
 }
 
-WidgetResult TwistWidget(const core::ParamSpec& spec, const core::ParamValue& value,
-                         EditorActions* actions) {
+WidgetResult TwistWidget(const core::ParamValue& value, EditorActions* actions) {
   WidgetResult result{false, value};
   ImGui::SetNextItemWidth(-1.0f);
   result.changed = ImGui::DragScalarN("##w", ImGuiDataType_Double, result.value.data(), 3, 0.01f,
                                       nullptr, nullptr, "%.3g rad/s");
-  TrackGroup(spec, actions);
+  TrackGroup(actions);
   ImGui::SetNextItemWidth(-1.0f);
   result.changed |= ImGui::DragScalarN("##l", ImGuiDataType_Double, result.value.data() + 3, 3,
                                        0.01f, nullptr, nullptr, "%.3g m/s");
-  TrackGroup(spec, actions);
+  TrackGroup(actions);
   return result;
 }
 
@@ -188,17 +223,17 @@ WidgetResult DrawWidget(const core::ParamSpec& spec, const core::ParamValue& val
     case T::kReal:
       return RealWidget(spec, value.at(0), actions);
     case T::kInteger:
-      return IntegerWidget(spec, value.at(0), actions);
+      return IntegerWidget(value.at(0), actions);
     case T::kBool:
       return BoolWidget(value.at(0));
     case T::kChoice:
       return ChoiceWidget(spec, value.at(0));
     case T::kVec3:
-      return Vec3Widget(spec, value, actions);
+      return Vec3Widget(value, actions);
     case T::kPose:
-      return PoseWidget(spec, value, actions);
+      return PoseWidget(value, actions);
     case T::kTwist:
-      return TwistWidget(spec, value, actions);
+      return TwistWidget(value, actions);
     case T::kRange:
     case T::kInertia:
     case T::kVector:
@@ -237,6 +272,8 @@ void RevertButton(const ParamRowContext& row, const core::ParamSpec& spec,
   ImGui::SameLine(ImGui::GetContentRegionAvail().x - 14.0f + ImGui::GetCursorPosX());
   if (!differs) ImGui::BeginDisabled();
   if (ImGui::SmallButton("<")) actions->SetParam(row.ref, spec, *file);
+  if (ItemRecording())
+    RecordItem(core::ElementPath(row.element) + "." + std::string(spec.key) + "<");
   if (!differs) ImGui::EndDisabled();
   if (differs && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
     ImGui::SetTooltip("back to the file's value: %s", core::FormatParamValue(spec, *file).c_str());
@@ -271,7 +308,13 @@ void DrawParamRow(const ParamRowContext& row, const core::ParamSpec& spec, Edito
   LabelTooltip(spec);
   RevertButton(row, spec, shown, actions);
   ImGui::TableNextColumn();
+  ImGui::BeginGroup();
   const WidgetResult result = DrawWidget(spec, shown, actions);
+  ImGui::EndGroup();
+  if (ItemRecording()) {
+    RecordItem(core::ElementPath(row.element) + "." + std::string(spec.key),
+               core::FormatParamValue(spec, shown));
+  }
   if (result.changed) actions->SetParam(row.ref, spec, result.value);
   ImGui::PopID();
 }

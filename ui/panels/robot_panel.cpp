@@ -11,6 +11,7 @@
 
 #include "ui/panels/panels.h"
 #include "ui/panels/param_widgets.h"
+#include "ui/widgets/item_registry.h"
 
 namespace lamina::ui {
 
@@ -65,7 +66,9 @@ void DrawDrivers(const PanelContext& context, int r) {
   const core::RobotDesc& robot = context.frame.world->robots[r];
   for (int d = 0; d < static_cast<int>(robot.drivers.size()); ++d) {
     ImGui::PushID(d);
-    if (ImGui::TreeNode(robot.drivers[d].name.c_str())) {
+    const bool open = ImGui::TreeNode(robot.drivers[d].name.c_str());
+    if (ItemRecording()) RecordItem(core::ElementPath(core::ElementIndex::Driver(r, d)));
+    if (open) {
       const ParamRowContext row{*context.frame.world, context.file_world,
                                 core::ElementIndex::Driver(r, d),
                                 core::ElementRef::Driver(robot.uid, d)};

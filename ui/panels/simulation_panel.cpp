@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Simulation panel: the transport controls, the mouse tool and what the simulation is doing.
+#include <string>
+
 #include <imgui.h>
 
 #include "ui/panels/panels.h"
 #include "ui/panels/param_widgets.h"
+#include "ui/widgets/item_registry.h"
 
 namespace lamina::ui {
 
@@ -14,11 +17,14 @@ void DrawTransport(const PanelContext& context) {
   if (ImGui::Button(state->playing ? "Pause" : "Play", ImVec2(70, 0))) {
     state->playing = !state->playing;
   }
+  RecordItem("button.play");
   ImGui::SameLine();
   if (ImGui::Button("Step")) state->requests.step = true;
+  RecordItem("button.step");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("one physics step (S or Right); Shift: 1/60 s");
   ImGui::SameLine();
   if (ImGui::Button("Reset")) state->requests.reset = true;
+  RecordItem("button.reset");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the initial state (R or Backspace)");
   float speed = static_cast<float>(state->speed);
   if (ImGui::SliderFloat("speed", &speed, static_cast<float>(kMinSpeed),
@@ -45,6 +51,7 @@ void DrawToolChoice(ViewerState* state) {
     if (i++ != 3) ImGui::SameLine(i > 3 ? 0.0f : 45.0f + 75.0f * static_cast<float>(i - 1));
     if (i == 4) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + 45.0f);
     if (ImGui::RadioButton(choice.name, state->tool == choice.tool)) state->tool = choice.tool;
+    RecordItem(std::string("tool.") + choice.name);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", choice.help);
   }
 }

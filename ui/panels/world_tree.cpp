@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "ui/panels/panels.h"
+#include "ui/widgets/item_registry.h"
 
 namespace lamina::ui {
 
@@ -49,6 +50,7 @@ void Leaf(const std::string& name, int id, ViewerState* state) {
   const bool selected = state->selected_id == id;
   const std::string label = name + "##" + std::to_string(id);
   if (ImGui::Selectable(label.c_str(), selected)) state->selected_id = id;
+  RecordItem("tree." + std::to_string(id), name);
   if (selected && ImGui::IsWindowAppearing()) ImGui::SetScrollHereY();
 }
 

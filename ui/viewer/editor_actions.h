@@ -29,6 +29,7 @@ class EditorActions {
   // ---- edits of the document (through core::LiveWorld::Do: one undo step each) ------------
   /// Row `spec` of element `ref` becomes `value` (checked by the table on the physics thread).
   void SetParam(const core::ElementRef& ref, const core::ParamSpec& spec, core::ParamValue value);
+  /// Edits until EndGroup are one undo step named `label` ("": named by its first edit).
   void BeginGroup(std::string label);
   void EndGroup();
   /// `current` (the frame's value), or the value of an edit of this row still on its way.

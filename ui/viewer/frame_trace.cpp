@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "ui/viewer/frame_trace.h"
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "core/render/world_poses.h"
+#include "ui/widgets/item_registry.h"
 
 namespace lamina::ui {
 
@@ -46,11 +49,43 @@ nlohmann::json ObjectPositions(const SessionFrame& frame) {
   return positions;
 }
 
+// JSON has no infinity: "inf" (nlohmann would write null)
+nlohmann::json Number(double value) {
+  if (std::isfinite(value)) return value;
+  return value > 0 ? "inf" : "-inf";
+}
+
+// the sampled (selected) body's contacts now, one entry per partner
+nlohmann::json ContactsJson(const SessionFrame& frame) {
+  nlohmann::json contacts = nlohmann::json::array();
+  for (const core::PairReadout& pair : frame.sampled_contacts) {
+    contacts.push_back({{"partner", pair.partner},
+                        {"friction", pair.friction.value},
+                        {"own_friction", pair.friction.own},
+                        {"partner_friction", pair.friction.partner},
+                        {"restitution", pair.restitution.value},
+                        {"stiffness", Number(pair.stiffness.value)},
+                        {"damping", Number(pair.damping.value)},
+                        {"count", pair.contact_count},
+                        {"max_depth", pair.max_depth}});
+  }
+  return contacts;
+}
+
+// the named items the panels drew (item_registry.h): rectangle and text
+nlohmann::json ItemsJson() {
+  nlohmann::json items = nlohmann::json::object();
+  for (const auto& [name, item] : RecordedItems())
+    items[name] = {{"rect", {item.x0, item.y0, item.x1, item.y1}}, {"text", item.text}};
+  return items;
+}
+
 }  // namespace
 
 bool FrameTrace::Open(const std::string& path, std::string* error) {
   out_.open(path, std::ios::trunc);
   if (!out_) *error = "--trace: cannot write '" + path + "'";
+  SetItemRecording(static_cast<bool>(out_));
   return static_cast<bool>(out_);
 }
 
@@ -71,7 +106,9 @@ void FrameTrace::Write(const SessionFrame& frame, const ViewerState& state) {
     line["objects"] = ObjectPositions(frame);
     line["sampled_velocity"] = {Vector(frame.sampled_velocity.angular),
                                 Vector(frame.sampled_velocity.linear)};
+    line["contacts"] = ContactsJson(frame);
   }
+  line["items"] = ItemsJson();
   out_ << line.dump() << "\n";
   out_.flush();
 }

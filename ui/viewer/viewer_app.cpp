@@ -33,6 +33,7 @@
 #include "ui/viewer/mouse_tools.h"
 #include "ui/viewer/viewer_input.h"
 #include "ui/viewer/world_files.h"
+#include "ui/widgets/item_registry.h"
 
 namespace lamina::ui {
 
@@ -356,6 +357,7 @@ void Viewer::RunFrame() {
   window_.FramebufferSize(&width, &height);
   HandleShortcuts(&state_);
   if (width > 0 && height > 0) HandleMouse(width, height);
+  ClearRecordedItems();
   DrawPanels();
   ApplyRequests();
   if (state_.playing != was_playing) session_.SetPlaying(state_.playing);
