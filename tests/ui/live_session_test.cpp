@@ -133,6 +133,94 @@ TEST(LiveSessionTest, ThePhysicsThreadRunsCommandsBetweenStepsAndPublishesFrames
   EXPECT_FALSE(session.TakeSamples().empty());
 }
 
+// the latest frame once `done` holds for it (up to 20 s; no timing claim, a generous wait)
+std::shared_ptr<const SessionFrame> WaitFor(LiveSession* session,
+                                            bool (*done)(const SessionFrame& frame)) {
+  for (int i = 0; i < 2000 && !done(*session->frame()); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return session->frame();
+}
+
+LiveSession::Command SetSolverRow(double choice) {
+  return [choice](core::LiveWorld& world) {
+    std::string error;
+    const auto edit = core::MakeParamEdit(world.document(), core::ElementRef::Settings(), "solver",
+                                          {choice}, &error);
+    return edit && world.Do(*edit, &error) ? std::string() : error;
+  };
+}
+
+// The real-time solver choice on the physics thread, with a budget of 0 so that any measured
+// cost is too much (the switch does not depend on this machine's speed): QuickStep runs while
+// the document still says exact and stays unedited; a Reset and a rebuild keep the choice;
+// turning it off
+// puts the exact solver back; turning it on again chooses again.
+TEST(LiveSessionTest, TheSolverChoiceRunsQuickStepWithoutEditingTheWorld) {
+  LiveSession session(true);
+  session.SetPhysicsBudget(0.0);
+  session.SetSpeed(4.0);
+  ASSERT_TRUE(Load(&session, kBounce));
+  ASSERT_EQ(session.frame()->solver.type, core::SolverType::kStep);
+  std::shared_ptr<const SessionFrame> frame =
+      WaitFor(&session, [](const SessionFrame& f) { return f.solver_chosen; });
+  ASSERT_TRUE(frame->solver_chosen);
+  EXPECT_EQ(frame->solver.type, core::SolverType::kQuickStep);
+  EXPECT_EQ(frame->world->settings.solver, core::SolverType::kStep);
+  EXPECT_FALSE(frame->dirty);
+  EXPECT_NE(SolverText(*frame).find("chosen for real time"), std::string::npos);
+  const std::vector<std::string> messages = session.TakeMessages();
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_NE(messages[0].find("QuickStep"), std::string::npos) << messages[0];
+
+  session.Post([](core::LiveWorld& world) {
+    world.simulator().Reset();
+    return std::string();
+  });
+  session.Post(SetObjectRow("mass", {2.0}));  // rebuilds the simulation from the document
+  session.Flush();
+  frame = session.frame();
+  EXPECT_EQ(frame->world->objects[0].mass, 2.0);
+  EXPECT_EQ(frame->solver.type, core::SolverType::kQuickStep) << "a rebuild dropped the choice";
+  EXPECT_TRUE(frame->solver_chosen);
+
+  session.SetAutoSolver(false);
+  frame = WaitFor(&session, [](const SessionFrame& f) { return !f.auto_solver; });
+  session.Flush();
+  frame = session.frame();
+  EXPECT_FALSE(frame->solver_chosen);
+  EXPECT_EQ(frame->solver.type, core::SolverType::kStep);
+  session.SetAutoSolver(true);
+  frame = WaitFor(&session, [](const SessionFrame& f) { return f.solver_chosen; });
+  EXPECT_TRUE(frame->solver_chosen);
+}
+
+// Choosing a solver in the settings is the user's decision: the choice ends for the world, and
+// undoing the edit runs the world's exact solver again without choosing anew.
+TEST(LiveSessionTest, ChoosingASolverInTheSettingsEndsTheChoice) {
+  LiveSession session(true);
+  session.SetPhysicsBudget(0.0);
+  session.SetSpeed(4.0);
+  ASSERT_TRUE(Load(&session, kBounce));
+  ASSERT_TRUE(
+      WaitFor(&session, [](const SessionFrame& f) { return f.solver_chosen; })->solver_chosen);
+  session.Post(SetSolverRow(1.0));  // quick, in the world
+  session.Flush();
+  std::shared_ptr<const SessionFrame> frame =
+      WaitFor(&session, [](const SessionFrame& f) { return !f.solver_chosen; });
+  EXPECT_FALSE(frame->solver_chosen);
+  EXPECT_EQ(frame->solver.type, core::SolverType::kQuickStep);
+  EXPECT_EQ(frame->world->settings.solver, core::SolverType::kQuickStep);
+  EXPECT_TRUE(frame->dirty);
+  session.Post([](core::LiveWorld& world) { return world.Undo() ? "" : std::string("no undo"); });
+  session.Flush();
+  const double undone_at = session.frame()->time;
+  frame = WaitFor(&session, [](const SessionFrame& f) { return f.time > 2.0; });
+  ASSERT_GT(frame->time, undone_at + 1.0);  // long enough for the choice to have acted again
+  EXPECT_EQ(frame->solver.type, core::SolverType::kStep);
+  EXPECT_FALSE(frame->solver_chosen);
+}
+
 TEST(LiveSessionTest, AnErrorPausesTheSimulationAndSaysWhatToTry) {
   LiveSession session(false);
   ASSERT_TRUE(Load(&session, kArm));

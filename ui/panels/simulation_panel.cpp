@@ -56,6 +56,35 @@ void DrawToolChoice(ViewerState* state) {
   }
 }
 
+// the solver running now (orange when the real-time choice put QuickStep in place of the world's
+// exact solver), and the choice's switch (solver_choice.h)
+void DrawSolver(const PanelContext& context) {
+  const SessionFrame& frame = context.frame;
+  const char* name = frame.solver.type == core::SolverType::kStep ? "exact" : "quick step";
+  ImGui::TextUnformatted("solver     ");
+  ImGui::SameLine();
+  if (frame.solver_chosen) {
+    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", name);
+  } else {
+    ImGui::TextUnformatted(name);
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "%s%s", SolverText(frame).c_str(),
+        frame.solver_chosen ? ".\nThe world's own solver is exact; its file keeps it." : "");
+  }
+  ImGui::SameLine(190.0f);
+  bool on = frame.auto_solver;
+  if (ImGui::Checkbox("auto", &on)) context.actions->SetAutoSolver(on);
+  RecordItem("solver.auto");
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "When the exact solver cannot keep real time within 80 %% of a core, play with QuickStep\n"
+        "instead (faster, softer; the world's file is not changed). Off: always the world's "
+        "solver.");
+  }
+}
+
 void DrawStatistics(const PanelContext& context) {
   const SessionFrame& frame = context.frame;
   if (!frame.loaded) {
@@ -64,8 +93,8 @@ void DrawStatistics(const PanelContext& context) {
   }
   ImGui::Text("time        %.3f s", frame.time);
   ImGui::Text("real time   %.2fx %s", frame.real_time_factor, frame.playing ? "" : "(paused)");
-  ImGui::Text("step        %.4g s (%s)", frame.step,
-              frame.world->settings.solver == core::SolverType::kStep ? "exact" : "quick step");
+  ImGui::Text("step        %.4g s", frame.step);
+  DrawSolver(context);
   ImGui::Text("status      %s", core::StepStatusName(frame.status));
   ImGui::Text("steps       %ld", frame.steps);
   ImGui::Text("contacts    %zu", frame.contacts.size());

@@ -70,12 +70,15 @@ class Renderer {
                     float alpha_scale);
   void DrawLines(const core::RenderScene& scene, const FrameParameters& frame, float alpha_scale);
   void DrawFxaa(unsigned framebuffer, int width, int height);
+  /// Whether the context's own framebuffer has a depth buffer (asked once).
+  bool DefaultFramebufferHasDepth();
 
   RenderSettings settings_;
   std::unique_ptr<Resources> resources_;
   std::string gl_version_, gl_renderer_;
   int max_samples_ = 1;
   int samples_used_ = 1;
+  int default_depth_bits_ = -1;  ///< -1: not asked yet
 };
 
 }  // namespace lamina::ui

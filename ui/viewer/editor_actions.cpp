@@ -46,6 +46,10 @@ void EditorActions::SetParam(const core::ElementRef& ref, const core::ParamSpec&
   pending_[KeyOf(ref, spec)] = {sequence, std::move(value)};
 }
 
+void EditorActions::SetAutoSolver(bool on) {
+  session_->SetAutoSolver(on);
+}
+
 void EditorActions::BeginGroup(std::string label) {
   session_->Post([label = std::move(label)](core::LiveWorld& world) {
     world.BeginGroup(label);

@@ -47,6 +47,8 @@ class EditorActions {
 
   // ---- time -----------------------------------------------------------------------------
   void Reset();
+  /// The real-time solver choice on or off (LiveSession::SetAutoSolver).
+  void SetAutoSolver(bool on);
   /// `steps` physics steps now (while paused).
   void Step(int steps);
 

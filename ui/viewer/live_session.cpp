@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <utility>
@@ -76,6 +77,7 @@ std::string ProblemText(const core::Simulator& simulator, core::StepStatus statu
 
 LiveSession::LiveSession(bool threaded) : threaded_(threaded) {
   frame_ = std::make_shared<SessionFrame>();
+  auto_solver_ = threaded_;
   if (threaded_) thread_ = std::thread([this] { Loop(); });
 }
 
@@ -139,6 +141,49 @@ void LiveSession::Adopt(std::unique_ptr<core::LiveWorld> world) {
   worst_ = core::StepStatus::kNormal;
   clock_.Clear();
   meter_.Clear();
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    choice_ = SolverChoice(physics_budget_);
+  }
+  chosen_.reset();
+  world_solver_ = world_->document().desc().settings.solver_settings();
+  user_chose_solver_ = false;
+}
+
+// after commands: a reset or rebuild went back to the document's solver (the choice is put back),
+// the user chose a solver in the settings (the choice ends for this world), or the choice was
+// turned off (the world's solver is put back)
+void LiveSession::KeepSolverChoice(bool auto_on) {
+  if (!world_) return;
+  core::Simulator& simulator = world_->simulator();
+  const core::SolverSettings document = world_->document().desc().settings.solver_settings();
+  if (document != world_solver_) user_chose_solver_ = true;
+  world_solver_ = document;
+  if (chosen_ && (!auto_on || user_chose_solver_)) {
+    chosen_.reset();
+    if (simulator.solver() != document) simulator.SetSolver(document);
+    return;
+  }
+  if (chosen_ && simulator.solver() != *chosen_) simulator.SetSolver(*chosen_);
+}
+
+// after steps: `step_wall` seconds of stepping gave `simulated` seconds
+void LiveSession::MeasureSolver(double step_wall, double simulated, double speed, bool auto_on) {
+  if (!auto_on || user_chose_solver_ || chosen_) return;
+  core::Simulator& simulator = world_->simulator();
+  const core::SolverSettings solver = simulator.solver();
+  if (solver.type != core::SolverType::kStep) return;
+  choice_.Add(step_wall, simulated, speed);
+  if (!choice_.too_slow()) return;
+  chosen_ = core::SolverSettings{core::SolverType::kQuickStep, solver.quick_step_iterations};
+  simulator.SetSolver(*chosen_);
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "the exact solver reached %.2fx real time on this machine: playing with "
+                "QuickStep (%d iterations) instead; the world keeps its solver",
+                choice_.reachable_factor() / speed, chosen_->quick_step_iterations);
+  std::lock_guard<std::mutex> lock(mutex_);
+  messages_.push_back(text);
 }
 
 long LiveSession::Post(Command command) {
@@ -163,6 +208,33 @@ void LiveSession::SetPlaying(bool playing) {
 void LiveSession::SetSpeed(double speed) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (speed > 0.0 && std::isfinite(speed)) speed_ = speed;
+}
+
+std::string SolverText(const SessionFrame& frame) {
+  if (frame.solver.type == core::SolverType::kStep) return "exact";
+  char text[160];
+  std::snprintf(text, sizeof text, "quick step (%d iterations)",
+                frame.solver.quick_step_iterations);
+  std::string out = text;
+  if (frame.solver_chosen) {
+    std::snprintf(text, sizeof text, ", chosen for real time: exact reached %.2fx",
+                  frame.exact_factor);
+    out += text;
+  }
+  return out;
+}
+
+void LiveSession::SetAutoSolver(bool on) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto_solver_ = on && threaded_;
+  }
+  wake_.notify_all();
+}
+
+void LiveSession::SetPhysicsBudget(double share_of_core) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (share_of_core >= 0.0 && std::isfinite(share_of_core)) physics_budget_ = share_of_core;
 }
 
 void LiveSession::SetSampledBody(int id) {
@@ -287,19 +359,23 @@ void LiveSession::Loop() {
     const double wall = std::chrono::duration<double>(now - last).count();
     last = now;
     double speed = 1.0;
-    bool playing = false;
+    bool playing = false, auto_solver = false;
     {
       std::lock_guard<std::mutex> lock(mutex_);
       if (stop_) return;
       speed = speed_;
       playing = playing_;
+      auto_solver = auto_solver_;
     }
+    KeepSolverChoice(auto_solver);
     double simulated = 0.0;
     if (world_ && playing && !world_->simulator().halted()) {
       const double before = world_->simulator().time();
       owed_ = std::min(owed_ + wall * speed, kMaxLag * speed);
+      const auto start = Clock::now();
       RunSteps(kPublishInterval);
       simulated = world_->simulator().time() - before;
+      MeasureSolver(SecondsSince(start), simulated, speed, auto_solver);
     } else {
       owed_ = 0.0;
     }
@@ -332,6 +408,7 @@ void LiveSession::Publish() {
   if (stop_here) playing_ = false;  // the user decides what to do (ProblemText)
   frame->playing = playing_;
   frame->speed = speed_;
+  frame->auto_solver = auto_solver_;
   frame->commands_done = done_count_;
   if (frame->loaded) {
     samples_.push_back(std::move(sample));
@@ -373,6 +450,9 @@ void LiveSession::FillFrame(int sampled, SessionFrame* frame) {
   }
   frame->time = simulator.time();
   frame->step = simulator.sim_step();
+  frame->solver = simulator.solver();
+  frame->solver_chosen = chosen_.has_value();
+  frame->exact_factor = choice_.reachable_factor();
   frame->smallest_step = std::exchange(smallest_step_, 0.0);
   frame->steps = simulator.statistics().steps;
   frame->status = worst_;

@@ -31,6 +31,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -41,6 +42,7 @@
 #include "core/render/world_poses.h"
 #include "core/sim/contact_readout.h"
 #include "ui/viewer/sim_clock.h"
+#include "ui/viewer/solver_choice.h"
 
 namespace lamina::ui {
 
@@ -89,8 +91,20 @@ struct SessionFrame {
   /// normal forces (core::ReadContacts).
   std::vector<core::PairReadout> sampled_contacts;
 
+  /// The solver the simulation runs now, and whether the real-time choice (solver_choice.h)
+  /// put QuickStep in place of the world's exact solver; exact_factor is the real-time factor
+  /// the exact solver reached when it was measured (0: not measured).
+  core::SolverSettings solver;
+  bool solver_chosen = false;
+  bool auto_solver = false;  ///< the real-time choice is on
+  double exact_factor = 0.0;
+
   long commands_done = 0;  ///< sequence number of the last command carried out
 };
+
+/// The solver a frame's simulation runs: "exact", "quick step (20 iterations)", or "quick step
+/// (20 iterations), chosen for real time: exact reached 0.52x".
+std::string SolverText(const SessionFrame& frame);
 
 /// One row of the plots (see the file comment).
 struct SessionSample {
@@ -130,6 +144,14 @@ class LiveSession {
   void SetSpeed(double speed);
   /// The body whose contacts and robot the samples follow (-1: none).
   void SetSampledBody(int id);
+  /// The real-time solver choice (solver_choice.h): on by default with a physics thread, never
+  /// in lockstep. Off puts the world's own solver back. Choosing a solver in the settings also
+  /// ends it for that world (the user's decision wins).
+  void SetAutoSolver(bool on);
+  /// The share of one core the physics may take before the choice switches to QuickStep
+  /// (SolverChoice::kPhysicsBudget unless set; 0: any measured cost is too much). Takes effect
+  /// for the next world loaded.
+  void SetPhysicsBudget(double share_of_core);
 
   /// Lockstep only: carries out the queued commands, then simulates the steps owed for
   /// `wall_seconds` at the current speed, then publishes a frame.
@@ -158,6 +180,8 @@ class LiveSession {
   void FillSample(const SessionFrame& frame, int sampled, SessionSample* sample) const;
   core::Twist SampledVelocity(int sampled) const;
   void Install(std::unique_ptr<core::LiveWorld> world);
+  void KeepSolverChoice(bool auto_on);
+  void MeasureSolver(double step_wall, double simulated, double speed, bool auto_on);
   void Adopt(std::unique_ptr<core::LiveWorld> world);
 
   const bool threaded_;
@@ -178,6 +202,8 @@ class LiveSession {
   bool playing_ = true;
   double speed_ = 1.0;
   int sampled_body_ = -1;
+  bool auto_solver_ = false;
+  double physics_budget_ = SolverChoice::kPhysicsBudget;
   bool stop_ = false;
 
   // physics thread only
@@ -186,7 +212,11 @@ class LiveSession {
   double smallest_step_ = 0.0;                    ///< since the previous frame (0: no step)
   core::Vec3 drag_impulse_ = core::Vec3::Zero();  ///< since the previous frame
   RealTimeFactorMeter meter_;
-  FixedStepClock clock_;  ///< lockstep pacing
+  SolverChoice choice_;
+  std::optional<core::SolverSettings> chosen_;  ///< QuickStep, chosen for real time
+  core::SolverSettings world_solver_;           ///< the document's when the world was adopted
+  bool user_chose_solver_ = false;              ///< the solver row was edited: no choice made
+  FixedStepClock clock_;                        ///< lockstep pacing
   std::thread thread_;
 };
 

@@ -51,6 +51,9 @@ using Clock = std::chrono::steady_clock;
 
 constexpr int kBenchWarmupFrames = 5;
 constexpr double kFrameStepSeconds = 1.0 / 60.0;
+// the shadow map on a software rasterizer: a quarter of the 2048² texels (2–3 ms a frame less
+// for the ATHLETE world at 1280x720 on llvmpipe; docs/rendering.md)
+constexpr int kSoftwareShadowMapSize = 1024;
 
 double MillisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -144,7 +147,7 @@ bool Viewer::Start() {
   }
   if (options_.samples == 0 && !options_.fxaa && IsSoftwareRenderer(renderer_.gl_renderer())) {
     renderer_.settings().samples = 1;
-    renderer_.settings().fxaa = true;
+    renderer_.settings().shadow_map_size = kSoftwareShadowMapSize;
   }
   if (!options_.trace_path.empty() && !trace_.Open(options_.trace_path, &error)) {
     std::cerr << "lamina: " << error << "\n";
@@ -156,6 +159,7 @@ bool Viewer::Start() {
   state_.world_files = WorldFilesUnder(options_.worlds_dir);
   state_.worlds_dir = options_.worlds_dir;
   session_.SetPlaying(false);  // --time first, then play as asked
+  session_.SetAutoSolver(options_.solver_choice);
   std::vector<std::string> sets = options_.sets;
   if (options_.sleep) sets.push_back("settings.sleeping=true");
   OpenWorld(options_.world_path, sets);
@@ -378,11 +382,11 @@ void Viewer::RunFrame() {
 void Viewer::PrintBenchmark() const {
   std::printf(
       "frames %zu at %dx%d, %d samples%s: median render %.2f ms, frame (render + panels + swap; "
-      "physics on %s) %.2f ms, real-time factor %.2f\n",
+      "physics on %s) %.2f ms, real-time factor %.2f, solver %s\n",
       times_.frame.size(), options_.width, options_.height, renderer_.samples_used(),
       renderer_.settings().fxaa ? " + FXAA" : "", Median(times_.render),
       session_.threaded() ? "its own thread" : "this thread", Median(times_.frame),
-      frame_->real_time_factor);
+      frame_->real_time_factor, SolverText(*frame_).c_str());
 }
 
 int Viewer::Run() {

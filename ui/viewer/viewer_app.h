@@ -27,8 +27,8 @@ struct ViewerOptions {
   bool sleep = false;  ///< idle objects sleep (core::Simulator::SetSleeping)
   /// --set PATH=VALUE arguments applied to the first world's description (access paths)
   std::vector<std::string> sets;
-  /// Multisampling of the 3D view (1, 2 or 4); 0 = automatic: FXAA on software GL (llvmpipe,
-  /// where 4x multisampling costs 40 ms a frame at 1280x720), 4x multisampling on a GPU.
+  /// Multisampling of the 3D view (1, 2 or 4); 0 = automatic: none on software GL (llvmpipe,
+  /// where 4x multisampling costs 40 ms a frame at 1280x720 and FXAA 10 ms), 4x on a GPU.
   int samples = 0;
   bool fxaa = false;     ///< FXAA instead of multisampling (cheaper on software GL)
   int bench_frames = 0;  ///< > 0: time this many frames without vsync and print the medians
@@ -36,6 +36,9 @@ struct ViewerOptions {
   /// frame, whatever the wall clock: reproducible runs for scripted tests and recordings.
   /// Otherwise the physics runs on its own thread in real time (LiveSession).
   bool lockstep = false;
+  /// QuickStep in place of an exact solver too slow for real time (solver_choice.h); only with
+  /// the physics on its own thread.
+  bool solver_choice = true;
   /// When set: a JSON line per frame with the selection, the drag, the selected body's state and
   /// contacts, for scripted UI tests (docs/editor.md, "Scripted tests").
   std::string trace_path;
