@@ -76,6 +76,10 @@ int main(int argc, char** argv) {
   app.add_flag("--lockstep", options.lockstep,
                "physics on the window's thread, exactly 1/60 s of simulated time per frame "
                "(reproducible runs for scripted tests; default: its own thread, real time)");
+  std::string panels;
+  app.add_option("--panels", panels,
+                 "the panels shown at start, e.g. 'inspector,plots' (or all, none): simulation, "
+                 "world, inspector, robot, settings, plots, overlays, help, open");
   bool no_solver_choice = false;
   app.add_flag("--no-solver-choice", no_solver_choice,
                "always run the world's own solver, even when the exact one cannot keep real "
@@ -91,5 +95,13 @@ int main(int argc, char** argv) {
   }
   options.show_panels = !no_ui;
   options.solver_choice = !no_solver_choice;
+  if (!panels.empty()) {
+    lamina::ui::PanelVisibility shown;
+    if (!lamina::ui::ParsePanelList(panels, &shown, &error)) {
+      std::cerr << "lamina: " << error << "\n";
+      return 2;
+    }
+    options.panels = shown;
+  }
   return lamina::ui::RunViewer(options);
 }

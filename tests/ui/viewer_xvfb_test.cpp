@@ -24,6 +24,12 @@ const std::string kWorlds = LAMINA_WORLDS_DIR;
 // a pixel differs when a channel differs by more than this; at most this fraction may differ
 constexpr int kChannelTolerance = 24;
 constexpr double kMaxDifferingFraction = 0.02;
+// panels: text and lines must match (a misplaced widget moves thousands of pixels)
+constexpr double kMaxPanelDifference = 0.003;
+
+bool Have(const char* program) {
+  return std::system((std::string("command -v ") + program + " > /dev/null 2>&1").c_str()) == 0;
+}
 
 bool HaveXvfb() {
   return std::system("command -v xvfb-run > /dev/null 2>&1") == 0;
@@ -150,6 +156,68 @@ TEST(ViewerUnderXvfb, PanelsSmokeOnTheDefaultWorld) {
   const Image image = ReadImage("panels.png");
   EXPECT_EQ(image.width, 960);
   ExpectNotBlank(image);
+}
+
+// Golden screenshots of the editor's panels: `lamina` in lockstep (the same simulated states on
+// every machine) with a chosen set of panels (--panels), compared with tests/ui/golden/NAME.png
+// within the tolerance above (the frame-time read-outs, a few hundred pixels, are the only text
+// that changes from run to run). LAMINA_UPDATE_GOLDEN=1 writes the references instead.
+void ExpectPanelsMatchGolden(const std::string& name, const std::string& world,
+                             const std::string& options) {
+  if (!HaveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const std::string png = name + ".png";
+  // the pointer in a corner: Xvfb puts it in the middle, where it would hover a panel, and
+  // moves it only once a window exists (the 120 lockstep frames take over a second)
+  const std::string pointer =
+      Have("xdotool")
+          ? "(for i in 1 2 3 4 5 6 7 8; do sleep 0.1; xdotool mousemove 1279 0; done) & "
+          : "";
+  const std::string command = pointer + kBin + "/lamina " + world +
+                              " --lockstep --size 1280x720 --frames 120 " + options +
+                              " --screenshot " + png;
+  ASSERT_EQ(RunUnderXvfb(command, name + ".log"), 0) << command << "\n" << ReadText(name + ".log");
+  const Image actual = ReadImage(png);
+  const std::string golden = std::string(LAMINA_UI_GOLDEN_DIR) + "/" + png;
+  const char* update = std::getenv("LAMINA_UPDATE_GOLDEN");
+  if (update != nullptr && std::string(update) == "1") {
+    ASSERT_TRUE(lamina::test::WritePng(golden, actual)) << golden;
+    return;
+  }
+  Image expected;
+  ASSERT_TRUE(lamina::test::ReadPng(golden, &expected))
+      << "missing reference " << golden << " (LAMINA_UPDATE_GOLDEN=1 creates it)";
+  ASSERT_EQ(expected.width, actual.width);
+  ASSERT_EQ(expected.height, actual.height);
+  const auto difference = lamina::test::CompareImages(expected, actual, kChannelTolerance);
+  std::cout << name << ": " << 100.0 * difference.differing_fraction << " % of the pixels differ\n";
+  if (difference.differing_fraction > kMaxPanelDifference) {
+    lamina::test::WritePng(name + "_diff.png", difference.diff);
+  }
+  EXPECT_LE(difference.differing_fraction, kMaxPanelDifference)
+      << "expected " << golden << "\nactual   " << png << "\ndiff     " << name << "_diff.png";
+}
+
+const std::string kEditorData = std::string(LAMINA_TEST_DATA_DIR) + "/editor";
+const std::string kBoxesCamera = " --camera 'target=0.25,0,0.1;yaw=-60;pitch=25;dist=2.2'";
+
+TEST(PanelGolden, InspectorWithTheBodysContactsNowWorldTreeAndSimulation) {
+  ExpectPanelsMatchGolden("panels_inspector", kEditorData + "/two_boxes.xml",
+                          "--select 1 --panels simulation,world,inspector" + kBoxesCamera);
+}
+
+TEST(PanelGolden, RobotPanelWithJointSlidersAndDriversAndOpenWorld) {
+  ExpectPanelsMatchGolden("panels_robot", kEditorData + "/planar_arm.xml",
+                          "--select 2 --panels robot,inspector,world,open");
+}
+
+TEST(PanelGolden, SettingsOverlaysAndPlots) {
+  ExpectPanelsMatchGolden("panels_settings_plots", kEditorData + "/planar_arm.xml",
+                          "--select 3 --panels simulation,settings,overlays,plots");
+}
+
+TEST(PanelGolden, KeysAndMouseHelp) {
+  ExpectPanelsMatchGolden("panels_help", kEditorData + "/two_boxes.xml",
+                          "--panels help" + kBoxesCamera);
 }
 
 TEST(ViewerUnderXvfb, BenchmarkPrintsMedianFrameTimes) {

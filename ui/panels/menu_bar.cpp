@@ -48,13 +48,10 @@ void DrawEditMenu(const PanelContext& context) {
 void DrawViewMenu(ViewerState* state) {
   if (!ImGui::BeginMenu("View")) return;
   PanelVisibility& panels = state->panels;
-  ImGui::MenuItem("Simulation", nullptr, &panels.simulation);
-  ImGui::MenuItem("World tree", nullptr, &panels.world_tree);
-  ImGui::MenuItem("Inspector", nullptr, &panels.inspector);
-  ImGui::MenuItem("Robot", nullptr, &panels.robot);
-  ImGui::MenuItem("Simulation settings", nullptr, &panels.settings);
-  ImGui::MenuItem("Plots", nullptr, &panels.plots);
-  ImGui::MenuItem("Overlays", nullptr, &panels.overlays);
+  for (const PanelEntry& panel : kPanels) {
+    if (panel.shown != &PanelVisibility::help && panel.shown != &PanelVisibility::open)
+      ImGui::MenuItem(panel.title, nullptr, &(panels.*panel.shown));
+  }
   ImGui::Separator();
   ImGui::MenuItem("All panels", "H", &state->show_panels);
   if (ImGui::MenuItem("Frame the world", "F")) state->requests.reframe = true;

@@ -16,12 +16,12 @@ void DrawScale(const char* label, double* value, float minimum, float maximum) {
   }
 }
 
-// the toggles of core::kOverlayToggles, three to a row, each with its help as a tooltip
+// the toggles of core::kOverlayToggles, two to a row, each with its help as a tooltip
 void DrawToggles(core::OverlayOptions* overlays) {
-  constexpr float kColumn = 100.0f;  // px between the starts of the toggles in a row
+  constexpr float kColumn = 78.0f;  // px between the starts of the toggles in a row
   int i = 0;
   for (const core::OverlayToggle& toggle : core::kOverlayToggles) {
-    if (i % 3 != 0) ImGui::SameLine(10.0f + kColumn * static_cast<float>(i % 3));
+    if (i % 2 != 0) ImGui::SameLine(8.0f + kColumn);
     ImGui::Checkbox(toggle.name, &(overlays->*toggle.flag));
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", toggle.help);
     ++i;
@@ -31,14 +31,17 @@ void DrawToggles(core::OverlayOptions* overlays) {
 }  // namespace
 
 void DrawOverlaysPanel(ViewerState* state) {
-  ImGui::SetNextWindowPos(ImVec2(320, 40), ImGuiCond_FirstUseEver);
+  // beside the Simulation panel, narrow enough to leave the Simulation settings room
+  ImGui::SetNextWindowPos(ImVec2(318, MenuBarHeight() + 8), ImGuiCond_FirstUseEver);
   if (ImGui::Begin("Overlays", &state->panels.overlays, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::PushItemWidth(200);
+    ImGui::PushItemWidth(72);
     core::OverlayOptions& overlays = state->overlays;
     DrawToggles(&overlays);
     ImGui::Separator();
     DrawScale("normal m", &overlays.normal_length, 0.005f, 1.0f);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("length of a contact normal (m)");
     DrawScale("force m/N", &overlays.force_scale, 0.0001f, 0.1f);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("length of a force arrow per newton (m/N)");
     ImGui::PopItemWidth();
   }
   ImGui::End();

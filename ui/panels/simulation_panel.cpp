@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Simulation panel: the transport controls, the mouse tool and what the simulation is doing.
+#include <algorithm>
 #include <string>
 
 #include <imgui.h>
@@ -130,9 +131,10 @@ void DrawSimulationPanel(const PanelContext& context) {
 void DrawSettingsPanel(const PanelContext& context) {
   if (!context.frame.loaded) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f - 200, MenuBarHeight() + 8),
-                          ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(400, 480), ImGuiCond_FirstUseEver);
+  // between the Overlays panel and the Inspector, above the Plots
+  ImGui::SetNextWindowPos(ImVec2(display.x - 792, MenuBarHeight() + 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(390, std::max(200.0f, display.y - 440 - MenuBarHeight())),
+                           ImGuiCond_FirstUseEver);
   if (ImGui::Begin("Simulation settings", &context.state->panels.settings)) {
     const ParamRowContext row{*context.frame.world, context.file_world,
                               core::ElementIndex::Settings(), core::ElementRef::Settings()};

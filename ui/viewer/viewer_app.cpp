@@ -155,6 +155,7 @@ bool Viewer::Start() {
   }
   state_.overlays = options_.overlays;
   state_.show_panels = options_.show_panels;
+  if (options_.panels) state_.panels = *options_.panels;
   state_.playing = !options_.paused;
   state_.world_files = WorldFilesUnder(options_.worlds_dir);
   state_.worlds_dir = options_.worlds_dir;

@@ -4,10 +4,12 @@
 // lamina's main parses the command line into ViewerOptions and calls RunViewer.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/render/overlay_options.h"
+#include "ui/viewer/viewer_state.h"
 
 namespace lamina::ui {
 
@@ -36,6 +38,8 @@ struct ViewerOptions {
   /// frame, whatever the wall clock: reproducible runs for scripted tests and recordings.
   /// Otherwise the physics runs on its own thread in real time (LiveSession).
   bool lockstep = false;
+  /// The panels shown at start (--panels; ParsePanelList), when set.
+  std::optional<PanelVisibility> panels;
   /// QuickStep in place of an exact solver too slow for real time (solver_choice.h); only with
   /// the physics on its own thread.
   bool solver_choice = true;

@@ -45,6 +45,28 @@ struct PanelVisibility {
   bool settings = false, overlays = false, plots = false, help = false, open = false;
 };
 
+/// Every panel once: its name for `--panels`, its title in the View menu, its flag.
+struct PanelEntry {
+  const char* name;
+  const char* title;
+  bool PanelVisibility::*shown;
+};
+inline constexpr PanelEntry kPanels[] = {
+    {"simulation", "Simulation", &PanelVisibility::simulation},
+    {"world", "World tree", &PanelVisibility::world_tree},
+    {"inspector", "Inspector", &PanelVisibility::inspector},
+    {"robot", "Robot", &PanelVisibility::robot},
+    {"settings", "Simulation settings", &PanelVisibility::settings},
+    {"plots", "Plots", &PanelVisibility::plots},
+    {"overlays", "Overlays", &PanelVisibility::overlays},
+    {"help", "Keys and mouse", &PanelVisibility::help},
+    {"open", "Open world", &PanelVisibility::open},
+};
+
+/// "simulation,plots" (or "all", or "none"): exactly those panels shown. False with `error`
+/// naming the unknown name and the known ones.
+bool ParsePanelList(const std::string& text, PanelVisibility* panels, std::string* error);
+
 /// A question the editor asks before it drops unsaved edits.
 struct PendingConfirmation {
   enum class Action { kNone, kQuit, kOpen, kRevert } action = Action::kNone;
