@@ -285,7 +285,7 @@ StepStatus Simulator::Step(double step) {
   RunControllers(step);
   if (!contacts_.current()) DetectContacts();
   StepGuard::MeasureUnknownEnergies(&bodies_);
-  if (const int stopped = StepGuard::StopOverflowingBodies(&bodies_)) {
+  if (const int stopped = StepGuard::StopOverflowingBodies(&bodies_, &progress.corrected_bodies)) {
     progress.flags |= kStepOverflowStop;
     progress.corrections += stopped;
   }
@@ -313,7 +313,8 @@ Simulator::SubStep Simulator::TrySubStep(double* h, StepProgress* progress, bool
     // a step that blew up is undone once with the culprits stopped
     const int stopped = *recovered ? -1
                                    : guard_.RecoverFromFailedStep(
-                                         &bodies_, [this](const SimState& s) { RestoreState(s); });
+                                         &bodies_, [this](const SimState& s) { RestoreState(s); },
+                                         &progress->corrected_bodies);
     if (stopped < 0) {
       return Halt("a body state became non-finite at t = " + std::to_string(time_) + " s");
     }
@@ -339,7 +340,7 @@ Simulator::SubStep Simulator::TrySubStep(double* h, StepProgress* progress, bool
   const int corrected = guard_.CorrectInstabilities(
       &bodies_, contacts_.before(),
       [this](const ContactPair& pair) { return PairSurface(pair.a, pair.b).stiffness; },
-      world_.settings.gravity, *h);
+      world_.settings.gravity, *h, &progress->corrected_bodies);
   if (corrected > 0) {
     progress->flags |= kStepCorrected;
     progress->corrections += corrected;
@@ -429,6 +430,7 @@ StepStatus Simulator::AcceptStep(double step, StepProgress* progress) {
                         joints,
                         progress->rollbacks,
                         progress->corrections,
+                        progress->corrected_bodies,
                         contacts_.pairs(),
                         feedback_};
   AccumulateStep(event, &statistics_);

@@ -321,6 +321,7 @@ class Simulator {
     unsigned flags = 0;
     int rollbacks = 0;
     int corrections = 0;
+    std::vector<int> corrected_bodies;  ///< world ids of the bodies slowed or stopped
   };
   enum class IntegrateResult { kOk, kOdeError, kNonFinite };
   enum class SubStep { kAccepted, kRetake, kError };

@@ -64,14 +64,16 @@ void StepGuard::MeasureUnknownEnergies(BodyTable* bodies) {
   }
 }
 
-int StepGuard::StopOverflowingBodies(BodyTable* bodies) {
+int StepGuard::StopOverflowingBodies(BodyTable* bodies, std::vector<int>* ids) {
   int stopped = 0;
-  for (BodyRecord& body : *bodies) {
+  for (int id = 0; id < bodies->size(); ++id) {
+    BodyRecord& body = (*bodies)[id];
     if (!body.moves_freely() || std::isfinite(body.energy)) continue;
     dBodySetLinearVel(body.body, 0, 0, 0);
     dBodySetAngularVel(body.body, 0, 0, 0);
     body.energy = 0.0;
     ++stopped;
+    if (ids) ids->push_back(id);
   }
   return stopped;
 }
@@ -133,7 +135,8 @@ void StepGuard::CollectSamples(BodyTable* bodies, const std::vector<ContactPair>
 }
 
 int StepGuard::RecoverFromFailedStep(BodyTable* bodies,
-                                     const std::function<void(const SimState&)>& restore) {
+                                     const std::function<void(const SimState&)>& restore,
+                                     std::vector<int>* stopped_ids) {
   const std::vector<bool> blown = BlownUp(*bodies);
   restore(rollback_state_);
   int stopped = 0;
@@ -146,13 +149,14 @@ int StepGuard::RecoverFromFailedStep(BodyTable* bodies,
     dBodySetLinearVel(body.body, 0, 0, 0);
     dBodySetAngularVel(body.body, 0, 0, 0);
     body.energy = 0.0;
+    if (stopped_ids) stopped_ids->push_back(ids[i]);
   }
   return stopped;
 }
 
 int StepGuard::CorrectInstabilities(BodyTable* bodies, const std::vector<ContactPair>& before,
                                     const PairStiffness& stiffness, const Vec3& gravity,
-                                    double step) {
+                                    double step, std::vector<int>* ids) {
   CollectSamples(bodies, before, stiffness, gravity, step);
   const std::vector<double> scales = InstabilityScales(scratch_.samples);
   int corrected = 0;
@@ -165,6 +169,7 @@ int StepGuard::CorrectInstabilities(BodyTable* bodies, const std::vector<Contact
     dBodySetAngularVel(body.body, w.x(), w.y(), w.z());
     body.energy *= scales[k] * scales[k];
     ++corrected;
+    if (ids) ids->push_back(scratch_.checked[k]);
   }
   return corrected;
 }

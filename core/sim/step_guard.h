@@ -57,17 +57,20 @@ class StepGuard {
   /// Bodies whose energy is unknown (just set) take it from their current state, so that the set
   /// itself is not mistaken for a blow-up.
   static void MeasureUnknownEnergies(BodyTable* bodies);
-  /// Stops every freely moving body whose energy overflows; the number stopped.
-  static int StopOverflowingBodies(BodyTable* bodies);
+  /// Stops every freely moving body whose energy overflows; the number stopped. Each of these
+  /// corrections appends the world ids of the bodies it slowed or stopped to `ids` (when given).
+  static int StopOverflowingBodies(BodyTable* bodies, std::vector<int>* ids = nullptr);
   /// After a step that left a non-finite state: back to rollback_state() with the bodies that blew
   /// up stopped (the number of them); -1 when nothing can be recovered (nothing blew up, or the
   /// state before was not finite). `restore` restores a SimState.
-  int RecoverFromFailedStep(BodyTable* bodies, const std::function<void(const SimState&)>& restore);
+  int RecoverFromFailedStep(BodyTable* bodies, const std::function<void(const SimState&)>& restore,
+                            std::vector<int>* ids = nullptr);
   /// Checks the accepted step of length `step`: every rigid object over its energy allowance is
   /// slowed down (energy_guard.h); the number of corrected bodies. `before` are the contacts the
   /// step was taken with.
   int CorrectInstabilities(BodyTable* bodies, const std::vector<ContactPair>& before,
-                           const PairStiffness& stiffness, const Vec3& gravity, double step);
+                           const PairStiffness& stiffness, const Vec3& gravity, double step,
+                           std::vector<int>* ids = nullptr);
 
  private:
   std::vector<bool> BlownUp(const BodyTable& bodies) const;

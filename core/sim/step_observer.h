@@ -61,6 +61,7 @@ struct StepEvent {
   int contact_joints = 0;      ///< contacts of the pairs the step was solved with (as before)
   int rollbacks = 0;           ///< tentative steps undone since the previous accepted one
   int corrections = 0;         ///< bodies slowed or stopped by the stability checks
+  const std::vector<int>& corrected_bodies;  ///< their world ids (a body may appear twice)
   const std::vector<ContactPair>& contacts;  ///< touching pairs after the step
   const FeedbackRecorder& feedback;          ///< recorded pairs, this step's forces
 };

@@ -4,6 +4,7 @@
 // state can be written back into a world description.
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -174,10 +175,16 @@ TEST(SimBodyTest, UpdateWorldWritesTheStateBack) {
 TEST(SimBodyTest, AbsurdVelocityIsStoppedNotPropagatedAsNaN) {
   const core::WorldDesc world = FloatingBox(1.0);
   core::Simulator simulator(world);
+  std::vector<int> corrected;  // the observers learn which body it was
+  simulator.AddStepObserver([&corrected](const core::StepEvent& event) {
+    corrected.insert(corrected.end(), event.corrected_bodies.begin(), event.corrected_bodies.end());
+  });
   simulator.SetObjectVelocity(0, {Vec3(1e307, 0, 0), Vec3(0, 0, 1e307)});
   const core::StepStatus status = simulator.Simulate(0.01);
   EXPECT_EQ(status, core::StepStatus::kUnstable) << simulator.statistics().error;
   EXPECT_GE(simulator.statistics().instability_corrections, 1);
+  ASSERT_FALSE(corrected.empty());
+  for (int id : corrected) EXPECT_EQ(id, world.ObjectId(0));
   EXPECT_TRUE(simulator.GetObjectPose(0).translation().allFinite());
   EXPECT_TRUE(simulator.GetObjectVelocity(0).linear.allFinite());
 }

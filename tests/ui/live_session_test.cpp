@@ -221,6 +221,33 @@ TEST(LiveSessionTest, ChoosingASolverInTheSettingsEndsTheChoice) {
   EXPECT_FALSE(frame->solver_chosen);
 }
 
+// An instability the step guard corrects pauses the simulation and names the body; the text
+// stays while paused (the status line gets it once) and goes when the simulation plays again.
+TEST(LiveSessionTest, AnInstabilityPausesAndNamesTheBody) {
+  LiveSession session(false);
+  ASSERT_TRUE(Load(&session, kArm));
+  session.Post([](core::LiveWorld& world) {
+    world.simulator().SetObjectVelocity(2, {core::Vec3(1e307, 0, 0), core::Vec3(0, 0, 1e307)});
+    return std::string();
+  });
+  for (int i = 0; i < 10 && session.frame()->playing; ++i) session.Advance(kFrame);
+  std::shared_ptr<const SessionFrame> frame = session.frame();
+  ASSERT_FALSE(frame->playing);
+  const int id = frame->world->ObjectId(2);
+  EXPECT_NE(frame->problem.find("'falling_block' (id " + std::to_string(id) + ")"),
+            std::string::npos)
+      << frame->problem;
+  EXPECT_NE(frame->problem.find("kStiffness"), std::string::npos) << frame->problem;
+  session.Advance(kFrame);  // paused: still said
+  EXPECT_EQ(session.frame()->problem, frame->problem);
+  const std::vector<std::string> messages = session.TakeMessages();
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_EQ(messages[0], frame->problem);
+  session.SetPlaying(true);
+  session.Advance(kFrame);
+  EXPECT_TRUE(session.frame()->problem.empty()) << session.frame()->problem;
+}
+
 TEST(LiveSessionTest, AnErrorPausesTheSimulationAndSaysWhatToTry) {
   LiveSession session(false);
   ASSERT_TRUE(Load(&session, kArm));

@@ -59,14 +59,28 @@ RobotFrame RobotFrameOf(const core::Simulator& simulator, int robot) {
 }
 
 // what to try when the simulation stopped or had to be corrected
-std::string ProblemText(const core::Simulator& simulator, core::StepStatus status) {
+// "'box' (id 3)" or "'box' (id 3) and 'lid' (id 4)": the bodies a stability check corrected
+std::string BodiesText(const core::Simulator& simulator, const std::vector<int>& ids) {
+  std::string text;
+  for (size_t i = 0; i < ids.size() && i < 3; ++i) {
+    if (i > 0) text += i + 1 == ids.size() ? " and " : ", ";
+    text +=
+        "'" + core::BodyLabel(simulator.world(), ids[i]) + "' (id " + std::to_string(ids[i]) + ")";
+  }
+  if (ids.size() > 3) text += " and " + std::to_string(ids.size() - 3) + " more";
+  return text;
+}
+
+std::string ProblemText(const core::Simulator& simulator, core::StepStatus status,
+                        const std::vector<int>& corrected) {
   const std::string at = " at t = " + std::to_string(simulator.time()) + " s";
   if (simulator.halted()) {
     return "The simulation stopped" + at + ": " + simulator.statistics().error +
            ". Undo the last edit, Reset, or lower kStiffness / raise padding or damping.";
   }
   if (status == core::StepStatus::kUnstable) {
-    return "Energy blew up" + at +
+    const std::string in = corrected.empty() ? "" : " in " + BodiesText(simulator, corrected);
+    return "Energy blew up" + in + at +
            " and was corrected (paused). Try lower kStiffness, more kDamping or padding, or a "
            "smaller timestep; Space resumes, Ctrl+Z undoes the last edit.";
   }
@@ -136,6 +150,10 @@ void LiveSession::Adopt(std::unique_ptr<core::LiveWorld> world) {
   world_->AddStepObserver([this](const core::StepEvent& event) {
     smallest_step_ = smallest_step_ > 0.0 ? std::min(smallest_step_, event.h) : event.h;
     if (event.simulator.dragging()) drag_impulse_ += event.simulator.drag().force * event.h;
+    for (int id : event.corrected_bodies) {
+      if (std::find(corrected_.begin(), corrected_.end(), id) == corrected_.end())
+        corrected_.push_back(id);
+    }
   });
   owed_ = 0.0;
   worst_ = core::StepStatus::kNormal;
@@ -311,6 +329,7 @@ void LiveSession::Advance(double wall_seconds) {
   }
   double simulated = 0.0;
   if (world_ && playing && !world_->simulator().halted()) {
+    problem_.clear();
     core::Simulator& simulator = world_->simulator();
     const int steps = clock_.StepsForFrame(wall_seconds, speed, simulator.sim_step());
     const double before = simulator.time();
@@ -370,6 +389,7 @@ void LiveSession::Loop() {
     KeepSolverChoice(auto_solver);
     double simulated = 0.0;
     if (world_ && playing && !world_->simulator().halted()) {
+      problem_.clear();
       const double before = world_->simulator().time();
       owed_ = std::min(owed_ + wall * speed, kMaxLag * speed);
       const auto start = Clock::now();
@@ -405,7 +425,10 @@ void LiveSession::Publish() {
   SessionSample sample;
   if (frame->loaded) FillSample(*frame, sampled, &sample);
   std::lock_guard<std::mutex> lock(mutex_);
-  if (stop_here) playing_ = false;  // the user decides what to do (ProblemText)
+  if (stop_here) {
+    if (playing_) messages_.push_back(frame->problem);  // the status line says it once
+    playing_ = false;                                   // the user decides what to do (ProblemText)
+  }
   frame->playing = playing_;
   frame->speed = speed_;
   frame->auto_solver = auto_solver_;
@@ -457,7 +480,15 @@ void LiveSession::FillFrame(int sampled, SessionFrame* frame) {
   frame->steps = simulator.statistics().steps;
   frame->status = worst_;
   frame->halted = simulator.halted();
-  frame->problem = ProblemText(simulator, worst_);
+  // an error shows while the simulation is halted; a corrected instability until it plays again
+  std::string problem = ProblemText(simulator, worst_, corrected_);
+  corrected_.clear();
+  if (simulator.halted()) {
+    frame->problem = std::move(problem);
+  } else {
+    if (!problem.empty()) problem_ = std::move(problem);
+    frame->problem = problem_;
+  }
   frame->kinetic_energy = simulator.KineticEnergy();
   frame->potential_energy = simulator.PotentialEnergy();
   frame->dragging = simulator.dragging();

@@ -211,6 +211,8 @@ class LiveSession {
   core::StepStatus worst_ = core::StepStatus::kNormal;
   double smallest_step_ = 0.0;                    ///< since the previous frame (0: no step)
   core::Vec3 drag_impulse_ = core::Vec3::Zero();  ///< since the previous frame
+  std::vector<int> corrected_;  ///< bodies the stability checks corrected since the previous frame
+  std::string problem_;         ///< what went wrong, until play resumes or a command runs
   RealTimeFactorMeter meter_;
   SolverChoice choice_;
   std::optional<core::SolverSettings> chosen_;  ///< QuickStep, chosen for real time
