@@ -75,7 +75,9 @@ void HoldWhileTyping(bool* changed, double* value) {
 
 // ---- widgets by type --------------------------------------------------------------------
 
-WidgetResult RealWidget(const core::ParamSpec& spec, double value, EditorActions* actions) {
+// `finite`: what unticking `inf` gives
+WidgetResult RealWidget(const core::ParamSpec& spec, double value, double finite,
+                        EditorActions* actions) {
   WidgetResult result;
   const bool infinite = std::isinf(value);
   if (spec.allow_inf) {
@@ -95,7 +97,7 @@ WidgetResult RealWidget(const core::ParamSpec& spec, double value, EditorActions
     bool inf = infinite;
     if (ImGui::Checkbox("inf", &inf)) {
       result.changed = true;
-      shown = inf ? kInf : (std::isfinite(spec.min) ? std::max(spec.min, 1.0) : 1.0);
+      shown = inf ? kInf : finite;
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("infinite: rigid / no limit");
   }
@@ -216,12 +218,12 @@ WidgetResult TextWidget(const core::ParamSpec& spec, const core::ParamValue& val
   return {*parsed != value, *parsed};
 }
 
-WidgetResult DrawWidget(const core::ParamSpec& spec, const core::ParamValue& value,
+WidgetResult DrawWidget(const core::ParamSpec& spec, const core::ParamValue& value, double finite,
                         EditorActions* actions) {
   using T = core::ParamType;
   switch (spec.type) {
     case T::kReal:
-      return RealWidget(spec, value.at(0), actions);
+      return RealWidget(spec, value.at(0), finite, actions);
     case T::kInteger:
       return IntegerWidget(value.at(0), actions);
     case T::kBool:
@@ -262,6 +264,13 @@ std::optional<core::ParamValue> FileValue(const ParamRowContext& row, const core
   const std::optional<core::ElementIndex> element = core::ResolveRef(*row.file_world, row.ref);
   if (!element) return std::nullopt;
   return core::GetParam(*row.file_world, *element, spec);
+}
+
+// what unticking `inf` gives: the file's value when it is finite, else 1 (or the row's minimum)
+double FiniteFallback(const ParamRowContext& row, const core::ParamSpec& spec) {
+  const std::optional<core::ParamValue> file = FileValue(row, spec);
+  if (file && file->size() == 1 && std::isfinite((*file)[0])) return (*file)[0];
+  return std::isfinite(spec.min) ? std::max(spec.min, 1.0) : 1.0;
 }
 
 void RevertButton(const ParamRowContext& row, const core::ParamSpec& spec,
@@ -309,7 +318,7 @@ void DrawParamRow(const ParamRowContext& row, const core::ParamSpec& spec, Edito
   RevertButton(row, spec, shown, actions);
   ImGui::TableNextColumn();
   ImGui::BeginGroup();
-  const WidgetResult result = DrawWidget(spec, shown, actions);
+  const WidgetResult result = DrawWidget(spec, shown, FiniteFallback(row, spec), actions);
   ImGui::EndGroup();
   if (ItemRecording()) {
     RecordItem(core::ElementPath(row.element) + "." + std::string(spec.key),
