@@ -76,6 +76,19 @@ double BodyTable::KineticEnergy(const BodyRecord& body) const {
                              ToVec3(dBodyGetAngularVel(body.body)));
 }
 
+std::vector<int> BodyTable::NonFiniteBodies() const {
+  std::vector<int> ids;
+  for (int id = 0; id < size(); ++id) {
+    const BodyRecord& body = records_[id];
+    if (body.body == nullptr || !body.owns_body) continue;
+    const Vec3 p = ToVec3(dBodyGetPosition(body.body));
+    const Vec3 v = ToVec3(dBodyGetLinearVel(body.body));
+    const Vec3 w = ToVec3(dBodyGetAngularVel(body.body));
+    if (!p.allFinite() || !v.allFinite() || !w.allFinite()) ids.push_back(id);
+  }
+  return ids;
+}
+
 bool BodyTable::StateIsFinite() const {
   for (const BodyRecord& body : records_) {
     if (body.body == nullptr) continue;

@@ -86,6 +86,9 @@ class BodyTable {
   double KineticEnergy(const BodyRecord& body) const;
   /// Every ODE body's position and velocities are finite.
   bool StateIsFinite() const;
+  /// The world ids of the bodies whose position or velocities are not finite (for a merged
+  /// link: the link that owns the ODE body).
+  std::vector<int> NonFiniteBodies() const;
   /// Adds this step's forces to the ODE bodies: the one-call forces and the held wrenches of
   /// every awake, freely moving body.
   void ApplyForces() const;

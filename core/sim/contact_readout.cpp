@@ -161,4 +161,15 @@ std::string BodyLabel(const WorldDesc& world, int id) {
   return "id " + std::to_string(id);
 }
 
+std::string BodiesText(const WorldDesc& world, const std::vector<int>& ids) {
+  constexpr size_t kNamed = 3;
+  std::string text;
+  for (size_t i = 0; i < ids.size() && i < kNamed; ++i) {
+    if (i > 0) text += i + 1 == ids.size() ? " and " : ", ";
+    text += "'" + BodyLabel(world, ids[i]) + "' (id " + std::to_string(ids[i]) + ")";
+  }
+  if (ids.size() > kNamed) text += " and " + std::to_string(ids.size() - kNamed) + " more";
+  return text;
+}
+
 }  // namespace lamina::core

@@ -74,5 +74,8 @@ std::string DescribeLayer(const char* symbol, double own, double partner,
 
 /// A world id's name: the element's own, or its kind and index when it has none.
 std::string BodyLabel(const WorldDesc& world, int id);
+/// "'box' (id 3)", "'box' (id 3) and 'lid' (id 4)", "'a' (id 1), 'b' (id 2), 'c' (id 3) and
+/// 2 more": bodies named in messages.
+std::string BodiesText(const WorldDesc& world, const std::vector<int>& ids);
 
 }  // namespace lamina::core

@@ -11,6 +11,7 @@
 
 #include <ode/ode.h>
 
+#include "core/sim/contact_readout.h"
 #include "core/sim/ode_conversions.h"
 #include "core/sim/ode_handle.h"
 #include "core/sim/ode_robot.h"
@@ -308,15 +309,22 @@ StepStatus Simulator::Step(double step) {
 Simulator::SubStep Simulator::TrySubStep(double* h, StepProgress* progress, bool* recovered) {
   CaptureBodyState(&guard_.rollback_state(), false);  // reuses its storage
   const IntegrateResult result = Integrate(*h);
-  if (result == IntegrateResult::kOdeError) return Halt("");
+  if (result == IntegrateResult::kOdeError) {
+    const std::vector<int> blown = bodies_.NonFiniteBodies();
+    if (!blown.empty()) statistics_.error += " (non-finite: " + BodiesText(world_, blown) + ")";
+    return Halt("");
+  }
   if (result == IntegrateResult::kNonFinite) {
+    const std::vector<int> blown = bodies_.NonFiniteBodies();  // (before the state is restored)
     // a step that blew up is undone once with the culprits stopped
     const int stopped = *recovered ? -1
                                    : guard_.RecoverFromFailedStep(
                                          &bodies_, [this](const SimState& s) { RestoreState(s); },
                                          &progress->corrected_bodies);
     if (stopped < 0) {
-      return Halt("a body state became non-finite at t = " + std::to_string(time_) + " s");
+      const std::string in = blown.empty() ? "" : " in " + BodiesText(world_, blown);
+      return Halt("a body state became non-finite" + in + " at t = " + std::to_string(time_) +
+                  " s");
     }
     *recovered = true;
     progress->flags |= kStepRecovered;

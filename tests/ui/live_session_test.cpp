@@ -248,6 +248,27 @@ TEST(LiveSessionTest, AnInstabilityPausesAndNamesTheBody) {
   EXPECT_TRUE(session.frame()->problem.empty()) << session.frame()->problem;
 }
 
+// An absurd robot velocity (energy beyond a double) is stopped by the step guard before the
+// step: the simulation pauses and the message names the robot's links.
+TEST(LiveSessionTest, AnAbsurdRobotVelocityPausesAndNamesTheLinks) {
+  LiveSession session(false);
+  ASSERT_TRUE(Load(&session, kArm));
+  session.Post([](core::LiveWorld& world) {
+    const int n = static_cast<int>(world.simulator().GetRobotConfig(0).size());
+    world.simulator().SetRobotVelocity(0, core::VecX::Constant(n, 1e300));
+    return std::string();
+  });
+  for (int i = 0; i < 10 && session.frame()->playing; ++i) session.Advance(kFrame);
+  const std::shared_ptr<const SessionFrame> frame = session.frame();
+  ASSERT_FALSE(frame->playing);
+  EXPECT_NE(frame->problem.find("Energy blew up in"), std::string::npos) << frame->problem;
+  const core::RobotDesc& arm = frame->world->robots[0];
+  EXPECT_NE(frame->problem.find("'" + arm.links[1].name + "' (id " +
+                                std::to_string(frame->world->RobotLinkId(0, 1)) + ")"),
+            std::string::npos)
+      << frame->problem;
+}
+
 TEST(LiveSessionTest, AnErrorPausesTheSimulationAndSaysWhatToTry) {
   LiveSession session(false);
   ASSERT_TRUE(Load(&session, kArm));

@@ -59,18 +59,6 @@ RobotFrame RobotFrameOf(const core::Simulator& simulator, int robot) {
 }
 
 // what to try when the simulation stopped or had to be corrected
-// "'box' (id 3)" or "'box' (id 3) and 'lid' (id 4)": the bodies a stability check corrected
-std::string BodiesText(const core::Simulator& simulator, const std::vector<int>& ids) {
-  std::string text;
-  for (size_t i = 0; i < ids.size() && i < 3; ++i) {
-    if (i > 0) text += i + 1 == ids.size() ? " and " : ", ";
-    text +=
-        "'" + core::BodyLabel(simulator.world(), ids[i]) + "' (id " + std::to_string(ids[i]) + ")";
-  }
-  if (ids.size() > 3) text += " and " + std::to_string(ids.size() - 3) + " more";
-  return text;
-}
-
 std::string ProblemText(const core::Simulator& simulator, core::StepStatus status,
                         const std::vector<int>& corrected) {
   const std::string at = " at t = " + std::to_string(simulator.time()) + " s";
@@ -79,7 +67,8 @@ std::string ProblemText(const core::Simulator& simulator, core::StepStatus statu
            ". Undo the last edit, Reset, or lower kStiffness / raise padding or damping.";
   }
   if (status == core::StepStatus::kUnstable) {
-    const std::string in = corrected.empty() ? "" : " in " + BodiesText(simulator, corrected);
+    const std::string in =
+        corrected.empty() ? "" : " in " + core::BodiesText(simulator.world(), corrected);
     return "Energy blew up" + in + at +
            " and was corrected (paused). Try lower kStiffness, more kDamping or padding, or a "
            "smaller timestep; Space resumes, Ctrl+Z undoes the last edit.";
