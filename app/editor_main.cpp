@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
                  "software GL)")
       ->check(CLI::IsMember({1, 2, 4}));
   app.add_flag("--fxaa", options.fxaa,
-               "FXAA instead of multisampling (10 ms a frame at 1280x720 on software GL)");
+               "FXAA instead of multisampling (about 20 ms a frame at 1280x720 on software GL)");
   app.add_option("--set", options.sets,
                  "PATH=VALUE: set what an access path names in the world before it opens, e.g. "
                  "'objects[box].kFriction=0.1' (repeatable; docs/access-paths.md)")

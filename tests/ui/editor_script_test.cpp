@@ -252,8 +252,9 @@ double HarmonicMean(double a, double b) {
 // The inspector, as a user works it: a click in the World tree selects the left box, a
 // Ctrl+click on its kFriction field and typing 0.2 changes it, and the blended friction of its
 // contact with the ground — the value the contact rows use — becomes the harmonic mean of 0.2
-// and the ground's. Ctrl+Z brings 0.5 back (field and blend), Ctrl+Shift+Z 0.2 again; Save As
-// (typing a path into its dialog) writes it, and the saved world opened again shows 0.2.
+// and the ground's. Ctrl+Z brings 0.5 back (field and blend), Ctrl+Shift+Z 0.2 again; typing
+// 0.2 over 0.2 changes nothing; Save As (typing a path into its dialog) writes it, and the saved
+// world opened again shows 0.2. No frame ever sees a friction other than 0.5 or 0.2.
 TEST(EditorScriptTest, AnInspectorFrictionEditChangesTheBlendUndoRedoAndSaveAsKeepIt) {
   if (!Have("Xvfb") || !Have("xdotool")) GTEST_SKIP() << "needs Xvfb and xdotool";
   const std::string saved = std::filesystem::absolute("friction_edit_saved.xml").string();
@@ -302,6 +303,16 @@ TEST(EditorScriptTest, AnInspectorFrictionEditChangesTheBlendUndoRedoAndSaveAsKe
     run.Press("ctrl+shift+z");
     line = run.WaitFor(blend_is(0.2));
     ASSERT_FALSE(line.is_null()) << "Ctrl+Shift+Z did not redo the edit";
+    EXPECT_EQ(ItemText(line, kFriction), "0.2");
+
+    // typing the value the field already has changes nothing: "0" and "0." on the way are held
+    // back (the check over every frame below) and the end equals the start
+    const int frame_before = line["frame"];
+    run.ClickItem(line, kFriction, 20, "ctrl");
+    run.Type("0.2");
+    run.Press("Return");
+    line = run.WaitFor([&](const json& l) { return l["frame"].get<int>() > frame_before + 20; });
+    ASSERT_FALSE(line.is_null());
     EXPECT_EQ(ItemText(line, kFriction), "0.2");
 
     run.Press("ctrl+shift+s");
@@ -413,6 +424,7 @@ TEST(EditorScriptTest, AGainEditedInTheRobotPanelSurvivesReset) {
   const double edited_at = line["time"];
 
   line = run.WaitForItem("button.reset");
+  ASSERT_FALSE(line.is_null()) << "no Reset button";
   run.ClickItem(line, "button.reset");
   line = run.WaitFor([&](const json& l) { return l["time"].get<double>() < edited_at; });
   ASSERT_FALSE(line.is_null()) << "Reset did not start the simulation again";

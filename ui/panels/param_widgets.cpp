@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include <imgui.h>
@@ -31,8 +33,8 @@ struct WidgetResult {
 
 // (the group's label is its first edit's: "kFriction of block")
 void TrackGroup(EditorActions* actions) {
-  if (ImGui::IsItemActivated()) actions->BeginGroup("");
-  if (ImGui::IsItemDeactivated()) actions->EndGroup();
+  if (ImGui::IsItemActivated()) actions->BeginWidgetGroup();
+  if (ImGui::IsItemDeactivated()) actions->EndWidgetGroup();
 }
 
 // drag speed: 1 % of the value's size per pixel, or a small absolute step at 0
@@ -46,10 +48,13 @@ float DragSpeed(double value) {
 // Typing into a drag field (Ctrl+click or double-click) gives ImGui a value per keystroke: "0",
 // "0.", "0.05". They are held back and only the number in the field when it is left (Enter,
 // Tab, a click elsewhere) is applied, so a friction of 0 or a stiffness the table refuses on
-// the way to the typed number never reaches the simulation. Escape leaves the value as it was.
+// the way to the typed number never reaches the simulation. Escape, or text that is not a
+// number, leaves the value as it was. The held number belongs to one field of one element: if
+// the selection changes while typing, it is dropped rather than given to another body.
 struct TypedValue {
-  ImGuiID id = 0;
+  std::string field;  ///< element path and key ("objects[0].kFriction")
   double value = 0.0;
+  int frame = -1;  ///< ImGui frame when it was last seen being typed
   bool held = false;
 };
 
@@ -58,26 +63,50 @@ TypedValue& Typed() {
   return typed;
 }
 
-// call right after the drag widget; adjusts what it reports
-void HoldWhileTyping(bool* changed, double* value) {
+// the text of the field being typed into, as a number (nullopt: not a number, e.g. "" or "-")
+std::optional<double> TypedNumber(ImGuiID id) {
+  const ImGuiInputTextState* state = ImGui::GetInputTextState(id);
+  if (state == nullptr) return std::nullopt;
+  std::string text;
+  for (int i = 0; i < state->CurLenW; ++i) {
+    if (state->TextW[i] >= 128) return std::nullopt;
+    text += static_cast<char>(state->TextW[i]);
+  }
+  char* end = nullptr;
+  const double number = std::strtod(text.c_str(), &end);
+  while (end != nullptr && *end == ' ') ++end;
+  if (end == text.c_str() || end == nullptr || *end != '\0') return std::nullopt;
+  return number;
+}
+
+// call right after the drag widget of `field`; adjusts what it reports
+void HoldWhileTyping(const std::string& field, bool* changed, double* value) {
   TypedValue& typed = Typed();
   const ImGuiID id = ImGui::GetItemID();
+  const int frame = ImGui::GetFrameCount();
   if (ImGui::TempInputIsActive(id)) {
-    if (*changed) typed = {id, *value, true};
+    const std::optional<double> number = TypedNumber(id);
+    typed = {field, number.value_or(0.0), frame, number.has_value()};
     *changed = false;
-  } else if (typed.held && typed.id == id && ImGui::IsItemDeactivated()) {
-    const bool escaped = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
-    *changed = !escaped;
-    if (!escaped) *value = typed.value;
-    typed = {};
+    return;
   }
+  const bool mine = typed.held && typed.field == field && typed.frame >= frame - 1;
+  if (mine && ImGui::IsItemDeactivated()) {
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+      *changed = false;      // (ImGui's revert to the text the field started with)
+    } else if (!*changed) {  // (a keystroke in the same frame as Enter: ImGui's value is final)
+      *changed = typed.value != *value;
+      *value = typed.value;
+    }
+  }
+  if (typed.held && (mine || typed.frame < frame - 1)) typed = {};  // used, or left undrawn
 }
 
 // ---- widgets by type --------------------------------------------------------------------
 
 // `finite`: what unticking `inf` gives
-WidgetResult RealWidget(const core::ParamSpec& spec, double value, double finite,
-                        EditorActions* actions) {
+WidgetResult RealWidget(const std::string& field, const core::ParamSpec& spec, double value,
+                        double finite, EditorActions* actions) {
   WidgetResult result;
   const bool infinite = std::isinf(value);
   if (spec.allow_inf) {
@@ -89,7 +118,7 @@ WidgetResult RealWidget(const core::ParamSpec& spec, double value, double finite
   if (infinite) ImGui::BeginDisabled();
   result.changed = ImGui::DragScalar("##v", ImGuiDataType_Double, &shown, DragSpeed(value), nullptr,
                                      nullptr, infinite ? "inf" : "%.6g");
-  HoldWhileTyping(&result.changed, &shown);
+  HoldWhileTyping(field, &result.changed, &shown);
   TrackGroup(actions);
   if (infinite) ImGui::EndDisabled();
   if (spec.allow_inf) {
@@ -105,13 +134,13 @@ WidgetResult RealWidget(const core::ParamSpec& spec, double value, double finite
   return result;
 }
 
-WidgetResult IntegerWidget(double value, EditorActions* actions) {
+WidgetResult IntegerWidget(const std::string& field, double value, EditorActions* actions) {
   WidgetResult result;
   long long shown = static_cast<long long>(value);
   ImGui::SetNextItemWidth(-1.0f);
   result.changed = ImGui::DragScalar("##v", ImGuiDataType_S64, &shown, 0.2f);
   double typed = static_cast<double>(shown);
-  HoldWhileTyping(&result.changed, &typed);
+  HoldWhileTyping(field, &result.changed, &typed);
   TrackGroup(actions);
   result.value = {typed};
   return result;
@@ -218,14 +247,14 @@ WidgetResult TextWidget(const core::ParamSpec& spec, const core::ParamValue& val
   return {*parsed != value, *parsed};
 }
 
-WidgetResult DrawWidget(const core::ParamSpec& spec, const core::ParamValue& value, double finite,
-                        EditorActions* actions) {
+WidgetResult DrawWidget(const std::string& field, const core::ParamSpec& spec,
+                        const core::ParamValue& value, double finite, EditorActions* actions) {
   using T = core::ParamType;
   switch (spec.type) {
     case T::kReal:
-      return RealWidget(spec, value.at(0), finite, actions);
+      return RealWidget(field, spec, value.at(0), finite, actions);
     case T::kInteger:
-      return IntegerWidget(value.at(0), actions);
+      return IntegerWidget(field, value.at(0), actions);
     case T::kBool:
       return BoolWidget(value.at(0));
     case T::kChoice:
@@ -318,12 +347,10 @@ void DrawParamRow(const ParamRowContext& row, const core::ParamSpec& spec, Edito
   RevertButton(row, spec, shown, actions);
   ImGui::TableNextColumn();
   ImGui::BeginGroup();
-  const WidgetResult result = DrawWidget(spec, shown, FiniteFallback(row, spec), actions);
+  const std::string field = core::ElementPath(row.element) + "." + std::string(spec.key);
+  const WidgetResult result = DrawWidget(field, spec, shown, FiniteFallback(row, spec), actions);
   ImGui::EndGroup();
-  if (ItemRecording()) {
-    RecordItem(core::ElementPath(row.element) + "." + std::string(spec.key),
-               core::FormatParamValue(spec, shown));
-  }
+  if (ItemRecording()) RecordItem(field, core::FormatParamValue(spec, shown));
   if (result.changed) actions->SetParam(row.ref, spec, result.value);
   ImGui::PopID();
 }

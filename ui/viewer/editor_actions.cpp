@@ -64,6 +64,21 @@ void EditorActions::EndGroup() {
   });
 }
 
+void EditorActions::BeginWidgetGroup() {
+  ++open_widget_groups_;
+  BeginGroup("");
+}
+
+void EditorActions::EndWidgetGroup() {
+  if (open_widget_groups_ == 0) return;
+  --open_widget_groups_;
+  EndGroup();
+}
+
+void EditorActions::EndIdleWidgetGroups(bool any_widget_active) {
+  while (!any_widget_active && open_widget_groups_ > 0) EndWidgetGroup();
+}
+
 const core::ParamValue& EditorActions::Shown(const core::ElementRef& ref,
                                              const core::ParamSpec& spec,
                                              const core::ParamValue& current) const {

@@ -32,6 +32,13 @@ class EditorActions {
   /// Edits until EndGroup are one undo step named `label` ("": named by its first edit).
   void BeginGroup(std::string label);
   void EndGroup();
+  /// A widget's group (its activation to its deactivation). A widget that is not drawn on the
+  /// frame it is left (its panel closed, the selection changed) never sees its deactivation:
+  /// EndIdleWidgetGroups, called once a frame after the panels, ends the group when no widget is
+  /// active any more, so that later edits do not join it.
+  void BeginWidgetGroup();
+  void EndWidgetGroup();
+  void EndIdleWidgetGroups(bool any_widget_active);
   /// `current` (the frame's value), or the value of an edit of this row still on its way.
   const core::ParamValue& Shown(const core::ElementRef& ref, const core::ParamSpec& spec,
                                 const core::ParamValue& current) const;
@@ -78,6 +85,7 @@ class EditorActions {
 
   LiveSession* session_;
   std::map<RowKey, Pending> pending_;
+  int open_widget_groups_ = 0;
 };
 
 }  // namespace lamina::ui

@@ -155,6 +155,7 @@ void LiveSession::Adopt(std::unique_ptr<core::LiveWorld> world) {
   chosen_.reset();
   world_solver_ = world_->document().desc().settings.solver_settings();
   user_chose_solver_ = false;
+  problem_.clear();
 }
 
 // after commands: a reset or rebuild went back to the document's solver (the choice is put back),
@@ -164,8 +165,11 @@ void LiveSession::KeepSolverChoice(bool auto_on) {
   if (!world_) return;
   core::Simulator& simulator = world_->simulator();
   const core::SolverSettings document = world_->document().desc().settings.solver_settings();
-  if (document != world_solver_) user_chose_solver_ = true;
+  // choosing a solver is the user's decision; tuning QuickStep's iterations is not
+  if (document.type != world_solver_.type) user_chose_solver_ = true;
   world_solver_ = document;
+  if (!auto_on) choice_.Clear();  // on again: measured anew
+  if (chosen_) chosen_->quick_step_iterations = document.quick_step_iterations;
   if (chosen_ && (!auto_on || user_chose_solver_)) {
     chosen_.reset();
     if (simulator.solver() != document) simulator.SetSolver(document);
@@ -188,7 +192,7 @@ void LiveSession::MeasureSolver(double step_wall, double simulated, double speed
   std::snprintf(text, sizeof text,
                 "the exact solver reached %.2fx real time on this machine: playing with "
                 "QuickStep (%d iterations) instead; the world keeps its solver",
-                choice_.reachable_factor() / speed, chosen_->quick_step_iterations);
+                choice_.reachable_factor(), chosen_->quick_step_iterations);
   std::lock_guard<std::mutex> lock(mutex_);
   messages_.push_back(text);
 }
@@ -301,6 +305,7 @@ void LiveSession::RunCommands() {
       continue;
     }
     std::string message = world_ ? entry.second(*world_) : "no world is open";
+    problem_.clear();  // an edit, an undo, a reset: what went wrong may no longer hold
     std::lock_guard<std::mutex> lock(mutex_);
     done_count_ = entry.first;
     if (!message.empty()) messages_.push_back(std::move(message));
@@ -375,6 +380,7 @@ void LiveSession::Loop() {
       playing = playing_;
       auto_solver = auto_solver_;
     }
+    auto_solver_used_ = auto_solver;
     KeepSolverChoice(auto_solver);
     double simulated = 0.0;
     if (world_ && playing && !world_->simulator().halted()) {
@@ -420,7 +426,7 @@ void LiveSession::Publish() {
   }
   frame->playing = playing_;
   frame->speed = speed_;
-  frame->auto_solver = auto_solver_;
+  frame->auto_solver = auto_solver_used_;
   frame->commands_done = done_count_;
   if (frame->loaded) {
     samples_.push_back(std::move(sample));

@@ -212,12 +212,13 @@ class LiveSession {
   double smallest_step_ = 0.0;                    ///< since the previous frame (0: no step)
   core::Vec3 drag_impulse_ = core::Vec3::Zero();  ///< since the previous frame
   std::vector<int> corrected_;  ///< bodies the stability checks corrected since the previous frame
-  std::string problem_;         ///< what went wrong, until play resumes or a command runs
+  std::string problem_;  ///< what went wrong, until play resumes, a command runs or a world opens
   RealTimeFactorMeter meter_;
   SolverChoice choice_;
   std::optional<core::SolverSettings> chosen_;  ///< QuickStep, chosen for real time
   core::SolverSettings world_solver_;           ///< the document's when the world was adopted
   bool user_chose_solver_ = false;              ///< the solver row was edited: no choice made
+  bool auto_solver_used_ = false;               ///< auto_solver_ as the loop last acted on it
   FixedStepClock clock_;                        ///< lockstep pacing
   std::thread thread_;
 };

@@ -364,6 +364,7 @@ void Viewer::RunFrame() {
   if (width > 0 && height > 0) HandleMouse(width, height);
   ClearRecordedItems();
   DrawPanels();
+  actions_.EndIdleWidgetGroups(ImGui::IsAnyItemActive());
   ApplyRequests();
   if (state_.playing != was_playing) session_.SetPlaying(state_.playing);
   session_.SetSpeed(state_.speed);

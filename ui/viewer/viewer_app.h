@@ -30,7 +30,7 @@ struct ViewerOptions {
   /// --set PATH=VALUE arguments applied to the first world's description (access paths)
   std::vector<std::string> sets;
   /// Multisampling of the 3D view (1, 2 or 4); 0 = automatic: none on software GL (llvmpipe,
-  /// where 4x multisampling costs 40 ms a frame at 1280x720 and FXAA 10 ms), 4x on a GPU.
+  /// where 4x multisampling costs 40 ms a frame at 1280x720 and FXAA 20 ms), 4x on a GPU.
   int samples = 0;
   bool fxaa = false;     ///< FXAA instead of multisampling (cheaper on software GL)
   int bench_frames = 0;  ///< > 0: time this many frames without vsync and print the medians
