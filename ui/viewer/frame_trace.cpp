@@ -107,6 +107,9 @@ void FrameTrace::Write(const SessionFrame& frame, const ViewerState& state) {
     line["sampled_velocity"] = {Vector(frame.sampled_velocity.angular),
                                 Vector(frame.sampled_velocity.linear)};
     line["contacts"] = ContactsJson(frame);
+    line["robots"] = nlohmann::json::array();
+    for (const core::VecX& q : frame.poses.robots)
+      line["robots"].push_back(std::vector<double>(q.data(), q.data() + q.size()));
   }
   line["items"] = ItemsJson();
   out_ << line.dump() << "\n";

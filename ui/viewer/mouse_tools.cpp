@@ -9,6 +9,8 @@
 #include <imgui.h>
 
 #include "core/render/world_poses.h"
+#include "core/robot/floating_base.h"
+#include "core/robot/kinematics.h"
 #include "ui/viewer/tool_geometry.h"
 
 namespace lamina::ui {
@@ -77,13 +79,16 @@ bool MouseTools::Press(const ToolInput& input) {
       hit.hit() ? core::DrawnBodyFrame(world, input.frame.poses, hit.world_id) : std::nullopt;
   if (!frame) return false;
   const core::WorldId body = world.Resolve(hit.world_id);
-  if (kind == Kind::kPose && body.kind != core::WorldId::Kind::kRigidObject) {
-    input.state->message = "the pose tool moves objects; a robot's joints: the Robot panel";
+  const bool robot =
+      body.kind == core::WorldId::Kind::kRobot || body.kind == core::WorldId::Kind::kRobotLink;
+  if (kind == Kind::kPose && robot && !StartRobotPose(input, body.index)) return false;
+  if (kind == Kind::kPose && !robot && body.kind != core::WorldId::Kind::kRigidObject) {
     return false;
   }
   kind_ = kind;
   body_ = hit.world_id;
-  object_ = body.index;
+  object_ = robot ? -1 : body.index;
+  robot_ = robot ? body.index : -1;
   grab_world_ = target_ = hit.point;
   grab_local_ = frame->inverse() * hit.point;
   start_pose_ = *frame;
@@ -103,7 +108,8 @@ bool MouseTools::Press(const ToolInput& input) {
         input.state->message = "reset: the pose tool edits where bodies start";
       }
       input.state->playing = false;
-      input.actions->BeginGroup("move " + world.objects[object_].name);
+      input.actions->BeginGroup("move " +
+                                (robot ? world.robots[robot_].name : world.objects[object_].name));
       break;
     default:
       break;
@@ -158,11 +164,43 @@ void MouseTools::MovePose(const ToolInput& input, const core::Vec3& point) {
     const core::Vec3 moved = axis >= 0 ? LockToAxis(grab_world_, point, axis) : point;
     pose.translation() += moved - grab_world_;
   }
+  if (robot_ >= 0) {
+    PlaceRobot(input, pose * start_pose_.inverse());
+    return;
+  }
   const core::RigidObjectDesc& object = input.frame.world->objects[object_];
   // the description pose of the object, which is what the frame drew at the start
   input.actions->SetParam(core::ElementRef::Object(object.uid),
                           *core::FindParam("transform", core::ElementKind::kObject),
                           core::PoseToValue(pose));
+}
+
+// a robot moves by its floating base; false (with a message) for a fixed base
+bool MouseTools::StartRobotPose(const ToolInput& input, int robot) {
+  const core::RobotDesc& desc = input.frame.world->robots[robot];
+  base_links_ = core::FloatingBaseLinks(desc);
+  if (base_links_.empty()) {
+    input.state->message = "the pose tool moves objects and robots with a floating base; " +
+                           desc.name + "'s base is fixed (its joints: the Robot panel)";
+    return false;
+  }
+  start_config_ = desc.InitialConfig();
+  start_base_ = core::LinkTransforms(desc, start_config_)[base_links_.back()];
+  return true;
+}
+
+// the robot's initial configuration with its base moved by `moved` (world)
+void MouseTools::PlaceRobot(const ToolInput& input, const core::Pose& moved) {
+  const core::RobotDesc& desc = input.frame.world->robots[robot_];
+  const std::optional<core::VecX> q =
+      core::PlaceFloatingBase(desc, base_links_, start_config_, moved * start_base_);
+  if (!q) {
+    input.state->message = "the pose tool cannot place " + desc.name + "'s base there";
+    return;
+  }
+  input.actions->SetParam(core::ElementRef::Robot(desc.uid),
+                          *core::FindParam("config", core::ElementKind::kRobot),
+                          core::ParamValue(q->data(), q->data() + q->size()));
 }
 
 void MouseTools::Release(const ToolInput& input) {

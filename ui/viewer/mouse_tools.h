@@ -8,12 +8,17 @@
 //    for horizontal motion, its right axis for vertical motion);
 //  * kinematic drag: the body becomes a kinematic target following the cursor (it pushes what
 //    it meets and carries what rests on it) and is released with its last velocity (a throw);
-//  * pose (paused): moves an object's initial pose (one undoable edit per drag); X, Y or Z held
-//    moves along that world axis only, Ctrl turns about it (z when no axis is held). A world
-//    that has run is reset first: poses are edited at the start.
+//  * pose (paused): moves an object's initial pose, or a robot's by its floating base (its
+//    initial configuration's six base values, floating_base.h; a robot with a fixed base is
+//    refused with a message), one undoable edit per drag; X, Y or Z held moves along that world
+//    axis only, Ctrl turns about it (z when no axis is held). A world that has run is reset
+//    first: poses are edited at the start.
 // Everything reaches the physics through EditorActions (one queue); the overlay is drawn from
 // the latest frame.
 #pragma once
+
+#include <optional>
+#include <vector>
 
 #include "core/render/camera.h"
 #include "core/render/render_scene.h"
@@ -50,10 +55,16 @@ class MouseTools {
   Kind KindFor(const ToolInput& input) const;
   std::optional<core::Vec3> CursorOnPlane(const ToolInput& input) const;
   void MovePose(const ToolInput& input, const core::Vec3& point);
+  bool StartRobotPose(const ToolInput& input, int robot);
+  void PlaceRobot(const ToolInput& input, const core::Pose& moved);
 
   Kind kind_ = Kind::kNone;
   int body_ = -1;
   int object_ = -1;                         ///< pose tool: the object's index
+  int robot_ = -1;                          ///< pose tool: the robot's index (object_ = -1)
+  std::vector<int> base_links_;             ///< pose tool: the robot's floating base
+  core::VecX start_config_;                 ///< pose tool: the robot's initial configuration
+  core::Pose start_base_;                   ///< pose tool: its base link's frame
   core::Vec3 grab_local_;                   ///< grabbed point in the body frame
   core::Vec3 grab_world_;                   ///< where it was grabbed (world)
   core::Vec3 plane_normal_;                 ///< of the drag plane through grab_world_

@@ -109,8 +109,8 @@ const MouseBinding kMouse[] = {
     {"Ctrl + left drag on a body", "torque: a spring turns the body with the mouse"},
     {"Ctrl + middle drag on a body", "kinematic drag: the body follows the cursor; release throws"},
     {"pose tool, left drag (paused)",
-     "move the body's initial pose; hold X, Y or Z to move along "
-     "that axis only, Ctrl to turn about it"},
+     "move an object's initial pose, or a robot by its floating base; hold X, Y or Z "
+     "to move along that axis only, Ctrl to turn about it"},
 };
 
 bool ModifiersMatch(const KeyBinding& binding, const ImGuiIO& io) {
