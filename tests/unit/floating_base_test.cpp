@@ -33,8 +33,7 @@ TEST(FloatingBaseTest, AthletesHexagonGoesWhereItIsPut) {
   ASSERT_TRUE(placed);
   const Pose reached = core::LinkTransforms(robot, *placed)[5];
   EXPECT_LT((reached.translation() - target.translation()).norm(), 1e-9);
-  EXPECT_LT(core::MomentFromRotation(target.linear().transpose() * reached.linear()).norm(),
-            1e-9);
+  EXPECT_LT(core::MomentFromRotation(target.linear().transpose() * reached.linear()).norm(), 1e-9);
   for (int i = 6; i < robot.dof(); ++i) EXPECT_EQ((*placed)[i], q[i]) << "link " << i;
 }
 

@@ -2,9 +2,9 @@
 // --trace FILE: one JSON object per drawn frame (JSON Lines) with what scripted UI tests check —
 // time, play state, selection and tool, the drag (body, force, target, effective mass), the
 // sampled body's velocity and contacts (the blended values its inspector shows), every object's
-// position, every robot's joint values, the undo labels, unsaved changes, the last message and the panels' named items
-// (item_registry.h: where each field is and what it shows). Written and flushed frame by frame so a
-// test can read it while the editor runs.
+// position, every robot's joint values, the undo labels, unsaved changes, the last message and the
+// panels' named items (item_registry.h: where each field is and what it shows). Written and flushed
+// frame by frame so a test can read it while the editor runs.
 #pragma once
 
 #include <fstream>
