@@ -57,7 +57,8 @@ stop_x() {
 boxes_camera="target=0.25,0,0.1;yaw=-60;pitch=25;dist=2.2"
 panels panels_inspector "$editor/two_boxes.xml" --select 1 \
   --panels simulation,world,inspector --camera "$boxes_camera"
-panels panels_robot "$editor/planar_arm.xml" --select 2 --panels robot,inspector,world,open
+panels panels_robot "$editor/planar_arm.xml" --select 2 --panels robot,inspector,world,open \
+  --camera "target=1.7,0,1.55;yaw=-90;pitch=12;dist=5"
 panels panels_settings_plots "$editor/planar_arm.xml" --select 3 \
   --panels simulation,settings,overlays,plots
 panels panels_help "$editor/two_boxes.xml" --panels help --camera "$boxes_camera"

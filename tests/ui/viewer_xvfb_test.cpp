@@ -5,6 +5,7 @@
 // missing world and bad options. Skipped with a message when xvfb-run is missing.
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -161,13 +162,35 @@ TEST(ViewerUnderXvfb, PanelsSmokeOnTheDefaultWorld) {
   ExpectNotBlank(image);
 }
 
+// The panels show the world's full path (World panel, status line, Open world), so a golden
+// screenshot taken in one checkout would not match one taken in another (CI clones elsewhere).
+// The editor worlds and the files they name are copied to a fixed folder of their own per test
+// (tests run in parallel): /tmp/lamina-panel-golden/NAME/{tests/data/editor,worlds/klampt/...},
+// keeping the worlds' relative paths. Returns the copied world's path.
+std::string StageEditorWorld(const std::string& name, const std::string& world_file) {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::path("/tmp/lamina-panel-golden") / name;
+  const fs::path source = fs::path(LAMINA_TEST_DATA_DIR).parent_path().parent_path();
+  fs::remove_all(root);
+  for (const char* folder :
+       {"tests/data/editor", "worlds/klampt/objects", "worlds/klampt/terrains"}) {
+    fs::create_directories(root / folder);
+    fs::copy(source / folder, root / folder, fs::copy_options::recursive);
+  }
+  fs::create_directories(root / "worlds/klampt/robots");
+  fs::copy(source / "worlds/klampt/robots/planar3R.rob", root / "worlds/klampt/robots");
+  return (root / "tests/data/editor" / world_file).string();
+}
+
 // Golden screenshots of the editor's panels: `lamina` in lockstep (the same simulated states on
-// every machine) with a chosen set of panels (--panels), compared with tests/ui/golden/NAME.png
-// within kMaxPanelDifference. LAMINA_UPDATE_GOLDEN=1 writes the references instead.
-void ExpectPanelsMatchGolden(const std::string& name, const std::string& world,
+// every machine) with a chosen set of panels (--panels) on a world staged by StageEditorWorld,
+// compared with tests/ui/golden/NAME.png within kMaxPanelDifference. LAMINA_UPDATE_GOLDEN=1
+// writes the references instead.
+void ExpectPanelsMatchGolden(const std::string& name, const std::string& world_file,
                              const std::string& options) {
   if (!HaveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
   if (!Have("xdotool")) GTEST_SKIP() << "xdotool is not installed (cmake/setup-deps.sh)";
+  const std::string world = StageEditorWorld(name, world_file);
   const std::string png = name + ".png";
   // the pointer in a corner: Xvfb puts it in the middle, where it would hover a panel, and
   // moves it only once a window exists; moved again for 3 s (the 120 lockstep frames take over
@@ -199,27 +222,27 @@ void ExpectPanelsMatchGolden(const std::string& name, const std::string& world,
       << "expected " << golden << "\nactual   " << png << "\ndiff     " << name << "_diff.png";
 }
 
-const std::string kEditorData = std::string(LAMINA_TEST_DATA_DIR) + "/editor";
 const std::string kBoxesCamera = " --camera 'target=0.25,0,0.1;yaw=-60;pitch=25;dist=2.2'";
+// the arm below the Open world panel, between the World panel and the Robot panel
+const std::string kArmCamera = " --camera 'target=1.7,0,1.55;yaw=-90;pitch=12;dist=5'";
 
 TEST(PanelGolden, InspectorWithTheBodysContactsNowWorldTreeAndSimulation) {
-  ExpectPanelsMatchGolden("panels_inspector", kEditorData + "/two_boxes.xml",
+  ExpectPanelsMatchGolden("panels_inspector", "two_boxes.xml",
                           "--select 1 --panels simulation,world,inspector" + kBoxesCamera);
 }
 
 TEST(PanelGolden, RobotPanelWithJointSlidersAndDriversAndOpenWorld) {
-  ExpectPanelsMatchGolden("panels_robot", kEditorData + "/planar_arm.xml",
-                          "--select 2 --panels robot,inspector,world,open");
+  ExpectPanelsMatchGolden("panels_robot", "planar_arm.xml",
+                          "--select 2 --panels robot,inspector,world,open" + kArmCamera);
 }
 
 TEST(PanelGolden, SettingsOverlaysAndPlots) {
-  ExpectPanelsMatchGolden("panels_settings_plots", kEditorData + "/planar_arm.xml",
+  ExpectPanelsMatchGolden("panels_settings_plots", "planar_arm.xml",
                           "--select 3 --panels simulation,settings,overlays,plots");
 }
 
 TEST(PanelGolden, KeysAndMouseHelp) {
-  ExpectPanelsMatchGolden("panels_help", kEditorData + "/two_boxes.xml",
-                          "--panels help" + kBoxesCamera);
+  ExpectPanelsMatchGolden("panels_help", "two_boxes.xml", "--panels help" + kBoxesCamera);
 }
 
 TEST(ViewerUnderXvfb, BenchmarkPrintsMedianFrameTimes) {
