@@ -29,8 +29,12 @@ void OnOdeMessage(int, const char*, va_list) {}
 
 }  // namespace
 
+// a world of CreateOdeWorld holds its threading implementation as its user data
 void OdeWorldDeleter::operator()(dxWorld* world) const {
+  auto threading = static_cast<dThreadingImplementationID>(dWorldGetData(world));
+  if (threading != nullptr) dWorldSetStepThreadingImplementation(world, nullptr, nullptr);
   dWorldDestroy(world);
+  if (threading != nullptr) dThreadingFreeImplementation(threading);
 }
 
 void OdeJointGroupDeleter::operator()(dxJointGroup* group) const {
@@ -46,6 +50,16 @@ void EnsureOdeInitialized() {
     dSetDebugHandler(OnOdeError);
     dSetMessageHandler(OnOdeMessage);
   });
+}
+
+OdeWorldPtr CreateOdeWorld() {
+  EnsureOdeInitialized();
+  dThreadingImplementationID threading = dThreadingAllocateSelfThreadedImplementation();
+  dxWorld* world = dWorldCreate();
+  dWorldSetStepThreadingImplementation(world, dThreadingImplementationGetFunctions(threading),
+                                       threading);
+  dWorldSetData(world, threading);
+  return OdeWorldPtr(world);
 }
 
 }  // namespace lamina::core

@@ -71,7 +71,7 @@ Simulator::~Simulator() {
 // the ODE world, bodies, robots and controllers of world_ (at the initial state)
 void Simulator::Build() {
   diagnostics_ = Diagnostics();
-  ode_world_.reset(dWorldCreate());
+  ode_world_ = CreateOdeWorld();
   contact_group_.reset(dJointGroupCreate(0));
   dWorldSetERP(ode_world_.get(), world_.settings.erp);
   dWorldSetCFM(ode_world_.get(), world_.settings.cfm);
