@@ -1,0 +1,365 @@
+// SPDX-License-Identifier: MIT
+// Batch simulation on the seed example of Klamp't's batch docs (control/world1.xml: a 1R planar
+// robot, a continuous "spin" joint, torqueMax 50, velMax 1, accMax 1), determinism over threads
+// and shards, merging, and runs that fail.
+#include "core/batch/batch_sim.h"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "core/batch/batch_output.h"
+#include "core/batch/batch_spec.h"
+#include "tests/common/test_support.h"
+
+namespace lamina {
+namespace {
+
+using core::BatchSpec;
+using core::BatchTable;
+using core::RunResult;
+using ::testing::HasSubstr;
+
+BatchSpec LoadSpec(const std::string& relative) {
+  std::string error;
+  std::optional<BatchSpec> spec = core::LoadBatchSpec(test::WorldsPath(relative), &error);
+  EXPECT_TRUE(spec.has_value()) << error;
+  return spec ? *spec : BatchSpec{};
+}
+
+// a spec in the scratch folder, its world the seed example's (absolute path)
+std::optional<BatchSpec> ScratchSpec(const std::string& name, const std::string& body,
+                                     std::string* error) {
+  const std::string text =
+      "{\"world\": \"" + test::WorldsPath("klampt/control/world1.xml") + "\", " + body + "}";
+  return core::ParseBatchSpec(text, test::ScratchDir() + "/" + name, error);
+}
+
+std::vector<int> AllRuns(const BatchSpec& spec) {
+  return core::ShardIndices(spec.runs, core::Shard{});
+}
+
+BatchTable RunBatch(const BatchSpec& spec, const std::vector<int>& indices, int threads) {
+  core::PoolOptions pool;
+  pool.threads = threads;
+  BatchTable table{spec.sampled, spec.items, {}};
+  table.runs = core::MonteCarloSim(spec.world, spec.plan, spec.samplers, spec.seed, indices, pool);
+  return table;
+}
+
+// ---- the seed example ----------------------------------------------------------------------
+
+// The link (1 kg, centre of mass 0.5 m out along x, hinge about y) hangs in gravity: the hold
+// torque at angle q is m g c cos(q) = 4.9 cos(q) N·m. The milestone is a time-optimal ramp with
+// accMax 1 rad/s² and velMax 1 rad/s: from |q0| <= pi it arrives within pi + 1 = 4.14 s < 5 s.
+// PD alone would leave the static sag m g c / kP = 4.9 / 20 = 0.245 rad (toward +q, gravity
+// pulls the link down); the integral (kI 8) removes it with a time constant of about
+// kP / kI = 2.5 s, so at 5 s a run that arrived early sags 0.245 e^-2 = 0.033 rad and the
+// latest ones (arrived at 4.14 s) about 0.15 rad. Seen: 0.034 to 0.150 rad over the 100 runs.
+constexpr double kGravityTorque = 1.0 * 9.8 * 0.5;  // m g c, N·m
+constexpr double kMaxSag = 0.16;                    // rad at 5 s, see above
+constexpr double kMinSag = 0.03;                    // rad: 0.245 e^-2, less 10 %
+
+void ExpectHeldBySag(const RunResult& run, double commanded) {
+  const double q = run.items[0][0];
+  EXPECT_EQ(run.status, "normal") << run.error;
+  EXPECT_NEAR(run.time, 5.0, 1e-9);
+  EXPECT_NEAR(run.items[2][0], commanded, 1e-6) << "run " << run.index;  // the ramp arrived
+  EXPECT_GT(q - commanded, kMinSag) << "run " << run.index;
+  EXPECT_LT(q - commanded, kMaxSag) << "run " << run.index;
+  EXPECT_LT(run.items[1][0], 0.0) << "run " << run.index;  // still closing the sag
+  // quasi-static: the motor carries the weight (the torque's sign is the joint's: -q side)
+  if (run.items.size() > 3) {
+    EXPECT_NEAR(run.items[3][0], -kGravityTorque * std::cos(q), 0.1) << "run " << run.index;
+  }
+}
+
+TEST(BatchSeedExampleTest, HundredRunsFromUniformStartsSettleAtZero) {
+  const BatchSpec spec = LoadSpec("batch/spin_to_zero.json");
+  ASSERT_EQ(spec.runs, 100);
+  const BatchTable table = RunBatch(spec, AllRuns(spec), 0);
+  ASSERT_EQ(table.runs.size(), 100u);
+  double lowest = 0, highest = 0, worst_sag = 0;
+  for (const RunResult& run : table.runs) {
+    const double start = run.sampled[0][0];
+    lowest = std::min(lowest, start);
+    highest = std::max(highest, start);
+    ExpectHeldBySag(run, 0.0);
+    worst_sag = std::max(worst_sag, run.items[0][0]);
+  }
+  // the starts cover [-pi, pi] (the joint's qMin 0 does not clamp them: a spin joint has no
+  // stops, and the description's config is only checked to be finite)
+  EXPECT_LT(lowest, -3.0);
+  EXPECT_GT(highest, 3.0);
+  EXPECT_GT(worst_sag, 0.12);  // the late arrivals sag most
+}
+
+// a start at pi: the commanded ramp is still moving at 4.0 s and has arrived at 4.5 s
+TEST(BatchSeedExampleTest, TheRampFromPiArrivesAfterPiPlusOneSeconds) {
+  std::string error;
+  const auto spec =
+      ScratchSpec("pi.json",
+                  "\"duration\": 5, \"N\": 2, \"samplers\": {\"robots[0].config[0]\": {\"list\": "
+                  "[3.141592653589793, -3.141592653589793]}}, "
+                  "\"setup\": [{\"kP\": [20], \"kI\": [8], \"kD\": [5], \"milestones\": [[0]]}], "
+                  "\"return\": [\"controllers[0].commandedConfig[0]\"], \"trace\": {\"rate\": 0.5}",
+                  &error);
+  ASSERT_TRUE(spec) << error;
+  for (const RunResult& run : RunBatch(*spec, AllRuns(*spec), 2).runs) {
+    ASSERT_EQ(run.trace_time.size(), 11u);
+    EXPECT_NEAR(run.trace_time[8], 4.0, 1e-9);  // the simulator's clock: a sum of 1 ms steps
+    // 0.14 s before arrival the ramp is 0.5 * 0.14^2 = 0.01 rad away (within a control period)
+    EXPECT_NEAR(std::abs(run.trace[8][0][0]), 0.01, 0.003);
+    EXPECT_NEAR(run.trace[9][0][0], 0.0, 1e-6);
+    // after 1 s of acceleration at 1 rad/s²: 0.5 rad travelled
+    EXPECT_NEAR(std::abs(run.trace[2][0][0]), std::numbers::pi - 0.5, 0.02);
+  }
+}
+
+// targets in [-0.5, 0.5] passed as args: the controller clamps its milestones to the joint
+// limits [qMin, qMax] = [0, 6.28319], so a negative target is commanded as 0 (up to the limits'
+// 1e-7 of margin) and those runs end where the target-0 runs do
+TEST(BatchSeedExampleTest, SampledTargetsAreReachedOrClampedAtQMin) {
+  const BatchSpec spec = LoadSpec("batch/spin_to_target.json");
+  const BatchTable table = RunBatch(spec, AllRuns(spec), 0);
+  int clamped = 0;
+  for (const RunResult& run : table.runs) {
+    const double target = run.sampled[1][0];
+    ASSERT_GE(target, -0.5);
+    ASSERT_LT(target, 0.5);
+    clamped += target < 0;
+    ExpectHeldBySag(run, std::max(target, 0.0));
+  }
+  EXPECT_GT(clamped, 30);  // about half of 100
+  EXPECT_LT(clamped, 70);
+}
+
+// ---- determinism, shards and merge ---------------------------------------------------------
+
+constexpr const char* kSmallBatch =
+    "\"duration\": 1, \"N\": 12, \"seed\": 5, "
+    "\"samplers\": {\"robots[0].config[0]\": {\"uniform\": [-3, 3]}, "
+    "               \"robots[0].drivers[0].kP\": {\"normal\": [20, 2]}}, "
+    "\"args\": {\"target\": {\"choice\": [[-0.25], [0.25]]}}, "
+    "\"setup\": [{\"kI\": [8], \"kD\": [5], \"milestones\": [\"args.target\"]}], "
+    "\"return\": [\"robots[0].actualConfig\", \"controllers[0].commandedConfig[0]\"], "
+    "\"trace\": {\"rate\": 0.25}";
+
+TEST(BatchDeterminismTest, SameCsvWithOneAndTwoThreads) {
+  std::string error;
+  std::string body = kSmallBatch;
+  const auto spec = ScratchSpec("small.json", body, &error);
+  ASSERT_TRUE(spec) << error;
+  core::OutputOptions no_wall;
+  no_wall.wall_time = false;
+  const BatchTable one = RunBatch(*spec, AllRuns(*spec), 1);
+  const BatchTable two = RunBatch(*spec, AllRuns(*spec), 2);
+  for (const RunResult& run : one.runs) EXPECT_EQ(run.status, "normal") << run.error;
+  EXPECT_EQ(core::CsvText(one, no_wall), core::CsvText(two, no_wall));
+  EXPECT_EQ(core::JsonLinesText(one, spec->Meta(), no_wall),
+            core::JsonLinesText(two, spec->Meta(), no_wall));
+  // the trace: t = 0, 0.25, 0.5, 0.75, 1
+  ASSERT_EQ(one.runs[0].trace_time.size(), 5u);
+  EXPECT_NEAR(one.runs[0].trace_time[4], 1.0, 1e-9);
+}
+
+std::vector<std::pair<std::string, std::string>> Parts(const BatchSpec& spec, int n,
+                                                       bool contiguous) {
+  std::vector<std::pair<std::string, std::string>> parts;
+  for (int k = n - 1; k >= 0; --k) {  // any order
+    const core::Shard shard{k, n, contiguous};
+    core::BatchMeta meta = spec.Meta();
+    meta.part = true;
+    meta.shard = shard;
+    parts.push_back(
+        {"part-" + std::to_string(k),
+         core::JsonLinesText(RunBatch(spec, core::ShardIndices(spec.runs, shard), 1), meta)});
+  }
+  return parts;
+}
+
+TEST(BatchShardTest, ThreeMergedShardsAreTheSingleMachineResult) {
+  std::string error;
+  std::string body = kSmallBatch;
+  const auto spec = ScratchSpec("small.json", body, &error);
+  ASSERT_TRUE(spec) << error;
+  core::OutputOptions no_wall;
+  no_wall.wall_time = false;
+  const BatchTable whole = RunBatch(*spec, AllRuns(*spec), 2);
+  for (bool contiguous : {false, true}) {
+    core::BatchMeta meta;
+    const auto merged = core::MergeParts(Parts(*spec, 3, contiguous), &meta, &error);
+    ASSERT_TRUE(merged) << error;
+    EXPECT_EQ(core::CsvText(*merged, no_wall), core::CsvText(whole, no_wall));
+    EXPECT_EQ(core::JsonLinesText(*merged, meta, no_wall),
+              core::JsonLinesText(whole, spec->Meta(), no_wall));
+  }
+  EXPECT_EQ(core::ShardIndices(10, {1, 3, false}), (std::vector<int>{1, 4, 7}));
+  EXPECT_EQ(core::ShardIndices(10, {1, 3, true}), (std::vector<int>{3, 4, 5}));
+}
+
+TEST(BatchShardTest, MergeRefusesMissingDuplicateAndForeignParts) {
+  std::string error;
+  std::string body = kSmallBatch;
+  const auto spec = ScratchSpec("small.json", body, &error);
+  ASSERT_TRUE(spec) << error;
+  auto parts = Parts(*spec, 3, false);  // parts of shards 2, 1, 0
+  core::BatchMeta meta;
+
+  auto missing = parts;
+  missing.erase(missing.begin() + 1);
+  EXPECT_FALSE(core::MergeParts(missing, &meta, &error));
+  EXPECT_EQ(error, "missing shard 1 of 3 (runs 1, 4, 7, 10)");
+
+  auto twice = parts;
+  twice.push_back(parts[0]);
+  EXPECT_FALSE(core::MergeParts(twice, &meta, &error));
+  EXPECT_EQ(error, "part-2: shard 2 of 3 given twice (also part-2)");
+
+  body.replace(body.find("\"seed\": 5"), 9, "\"seed\": 6");
+  const auto other = ScratchSpec("small.json", body, &error);
+  ASSERT_TRUE(other) << error;
+  auto foreign = parts;
+  foreign[1] = Parts(*other, 3, false)[1];
+  foreign[1].first = "other-part-1";
+  EXPECT_FALSE(core::MergeParts(foreign, &meta, &error));
+  EXPECT_THAT(error, HasSubstr("other-part-1: from another batch than part-2"));
+
+  auto truncated = parts;
+  truncated[0].second.resize(truncated[0].second.rfind('\n', truncated[0].second.size() - 2) + 1);
+  EXPECT_FALSE(core::MergeParts(truncated, &meta, &error));
+  EXPECT_EQ(error, "part-2: holds 3 runs, shard 2 of 3 has 4 (a truncated or edited part?)");
+}
+
+// ---- failures --------------------------------------------------------------------------------
+
+TEST(BatchErrorTest, AHookThatThrowsFailsItsRunOnly) {
+  std::string error;
+  const auto spec = ScratchSpec("hook.json", "\"duration\": 0.5, \"N\": 6", &error);
+  ASSERT_TRUE(spec) << error;
+  core::RunPlan plan = spec->plan;
+  plan.hooks.step = [](core::RunContext& context) {
+    if (context.index == 3 && context.simulator.time() >= 0.2) {
+      throw std::runtime_error("hook gave up at 0.2 s");
+    }
+  };
+  int terms = 0;
+  plan.hooks.term = [&terms](core::RunContext& context) {
+    if (context.index == 0) ++terms;  // only run 0 counts: no data race
+    return false;
+  };
+  const auto results =
+      core::MonteCarloSim(spec->world, plan, spec->samplers, spec->seed, AllRuns(*spec), {2, {}});
+  ASSERT_EQ(results.size(), 6u);
+  for (const RunResult& run : results) {
+    if (run.index == 3) {
+      EXPECT_EQ(run.status, "error");
+      EXPECT_EQ(run.error, "hook gave up at 0.2 s");
+      EXPECT_TRUE(run.items.empty());
+    } else {
+      EXPECT_EQ(run.status, "normal") << run.error;
+      EXPECT_DOUBLE_EQ(run.time, 0.5);
+      EXPECT_EQ(run.items.size(), spec->items.size());
+    }
+  }
+  EXPECT_EQ(terms, 50);  // checked before each of the 50 outer steps
+}
+
+TEST(BatchErrorTest, ASetUpValueTheTableRefusesIsRejectedAtSpecTime) {
+  std::string error;
+  EXPECT_FALSE(ScratchSpec("gains.json",
+                           "\"duration\": 1, \"samplers\": {\"robots[0].drivers[0].kP\": "
+                           "{\"uniform\": [-1, 5]}}",
+                           &error));
+  EXPECT_EQ(error,
+            "gains.json: samplers[\"robots[0].drivers[0].kP\"]: robots[0].drivers[0].kP must be "
+            ">= 0, got -1");
+  EXPECT_FALSE(ScratchSpec("uniform.json",
+                           "\"duration\": 1, \"samplers\": {\"robots[0].config[0]\": "
+                           "{\"uniform\": [1]}}",
+                           &error));
+  EXPECT_EQ(error, "uniform.json: samplers[\"robots[0].config[0]\"]: uniform needs [lo, hi]");
+  EXPECT_FALSE(
+      ScratchSpec("path.json", "\"duration\": 1, \"return\": [\"robots[0].actualConfg\"]", &error));
+  EXPECT_THAT(error, HasSubstr("path.json: return[0]: robots[0].actualConfg: robots have no "
+                               "'actualConfg' (did you mean 'actualConfig'?)"));
+  EXPECT_FALSE(ScratchSpec("key.json", "\"duration\": 1, \"sampler\": {}", &error));
+  EXPECT_EQ(error, "key.json: \"sampler\": unknown key (did you mean 'samplers'?)");
+  EXPECT_FALSE(
+      ScratchSpec("arg.json", "\"duration\": 1, \"setup\": [{\"pid\": \"args.goal\"}]", &error));
+  EXPECT_EQ(error, "arg.json: setup[0][\"pid\"]: args.goal: no such argument in \"args\"");
+}
+
+// a sampled value the table refuses in one run only (a normal's tail) fails that run
+TEST(BatchErrorTest, ARefusedSampledValueFailsItsRun) {
+  std::string error;
+  const auto spec =
+      ScratchSpec("normal.json",
+                  "\"duration\": 0.1, \"N\": 40, \"samplers\": {\"robots[0].drivers[0].kP\": "
+                  "{\"normal\": [1, 1]}}",
+                  &error);
+  ASSERT_TRUE(spec) << error;
+  const BatchTable table = RunBatch(*spec, AllRuns(*spec), 2);
+  int failed = 0;
+  for (const RunResult& run : table.runs) {
+    if (run.sampled[0][0] < 0) {
+      ++failed;
+      EXPECT_EQ(run.status, "error");
+      EXPECT_THAT(run.error, HasSubstr("robots[0].drivers[0].kP must be >= 0, got -"));
+    } else {
+      EXPECT_EQ(run.status, "normal") << run.error;
+    }
+  }
+  EXPECT_GT(failed, 0);  // P(kP < 0) = 16 %: several of 40 (the draws are fixed by the seed)
+}
+
+TEST(BatchTerminationTest, ABoundStopsTheRunBeforeItsDuration) {
+  std::string error;
+  const auto spec =
+      ScratchSpec("bound.json",
+                  "\"duration\": 5, \"set\": {\"robots[0].config\": \"1.5\"}, "
+                  "\"setup\": [{\"kP\": [20], \"kI\": [8], \"kD\": [5], \"milestones\": [[0]]}], "
+                  "\"terminate\": [{\"path\": \"robots[0].actualConfig[0]\", \"below\": 1}], "
+                  "\"return\": [\"robots[0].actualConfig[0]\"]",
+                  &error);
+  ASSERT_TRUE(spec) << error;
+  const RunResult run = core::DoSim(spec->world, spec->plan, {});
+  EXPECT_EQ(run.status, "normal");
+  EXPECT_EQ(run.stop, "robots[0].actualConfig[0] below 1");
+  // from rest at 1.5 with 1 rad/s² the ramp reaches 1 rad after about sqrt(2 * 0.5) = 1 s
+  EXPECT_GT(run.time, 0.9);
+  EXPECT_LT(run.time, 1.3);
+  EXPECT_LT(run.items[0][0], 1.0);
+  EXPECT_GT(run.items[0][0], 0.98);  // within one outer step of the bound
+}
+
+TEST(BatchOutputTest, CsvHeadersAreKlamptsFlattenedNames) {
+  std::string error;
+  const auto spec = ScratchSpec("csv.json",
+                                "\"duration\": 0.05, \"N\": 2, \"args\": {\"gain\": [1, 2]}, "
+                                "\"samplers\": {\"robots[0].config[0]\": [0.5]}",
+                                &error);
+  ASSERT_TRUE(spec) << error;
+  const std::string csv = core::CsvText(RunBatch(*spec, AllRuns(*spec), 1));
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "index,robots[0].config[0],args.gain[0],args.gain[1],"
+            "controllers[0].commandedConfig[0],controllers[0].commandedVelocity[0],"
+            "controllers[0].sensedConfig[0],controllers[0].sensedVelocity[0],"
+            "robots[0].actualConfig[0],robots[0].actualVelocity[0],robots[0].actualTorques[0],"
+            "status,time,wall_clock_time");
+}
+
+TEST(BatchOutputTest, SummaryQuantilesInterpolateLinearly) {
+  const std::vector<double> sorted = {1, 2, 3, 4, 5};
+  EXPECT_DOUBLE_EQ(core::Quantile(sorted, 0.5), 3);
+  EXPECT_DOUBLE_EQ(core::Quantile(sorted, 0.05), 1.2);
+  EXPECT_DOUBLE_EQ(core::Quantile(sorted, 0.95), 4.8);
+}
+
+}  // namespace
+}  // namespace lamina
