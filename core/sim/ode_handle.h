@@ -22,5 +22,8 @@ void EnsureOdeInitialized();
 /// shares ODE's global default, whose job list is not thread-safe: two simulators stepping in
 /// two threads (batch runs, core/batch) crash inside dWorldStep.
 OdeWorldPtr CreateOdeWorld();
+/// Call when an ODE error was thrown out of a step of `world` (a CreateOdeWorld world): its
+/// threading implementation is then kept rather than freed with the world (ODE cannot free it).
+void MarkOdeWorldFailed(dxWorld* world);
 
 }  // namespace lamina::core

@@ -394,6 +394,7 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
   } catch (const std::exception& error) {
     statistics_.error = error.what();
     result = IntegrateResult::kOdeError;
+    MarkOdeWorldFailed(ode_world_.get());
   }
   dJointGroupEmpty(contact_group_.get());
   statistics_.time_split.solver += watch.Lap();
