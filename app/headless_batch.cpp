@@ -37,8 +37,12 @@ void Error(const std::string& message) {
   std::cerr << "lamina-headless batch: " << message << "\n";
 }
 
-// "runs 37/100  41.2 runs/s  ETA 1.5 s" rewritten in place on a terminal
+// "runs 37/100  41.2 runs/s  ETA 1.5 s" rewritten in place on a terminal, at most every 0.1 s
+// (the pool calls it serialised) and at the end
 void PrintProgress(const core::BatchProgress& p) {
+  static double last = -1.0;
+  if (p.done != p.total && p.elapsed - last < 0.1) return;
+  last = p.elapsed;
   std::fprintf(stderr, "\rruns %d/%d  %.1f runs/s  ETA %.1f s   ", p.done, p.total,
                p.runs_per_second, p.eta);
   if (p.done == p.total) std::fprintf(stderr, "\n");
