@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "app/headless_batch.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -117,6 +118,13 @@ int RunBatch(const BatchOptions& options) {
   if (!spec) {
     std::cerr << error << "\n";
     return 2;
+  }
+  if (!options.plot.empty()) {
+    const std::vector<std::string> columns = core::FlatNames(spec->items);
+    if (std::find(columns.begin(), columns.end(), options.plot) == columns.end()) {
+      Error("--plot " + options.plot + ": not a returned number (CSV column) of " + options.spec);
+      return 2;
+    }
   }
   bool sharded = false;
   const std::optional<core::Shard> shard = ChooseShard(options, &sharded);
