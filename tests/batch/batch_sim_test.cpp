@@ -5,6 +5,7 @@
 #include "core/batch/batch_sim.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -354,6 +355,56 @@ TEST(BatchTerminationTest, ABoundStopsTheRunBeforeItsDuration) {
   EXPECT_LT(run.time, 1.3);
   EXPECT_LT(run.items[0][0], 1.0);
   EXPECT_GT(run.items[0][0], 0.98);  // within one outer step of the bound
+}
+
+// Klamp't's batchSim: a list of initial conditions, result i for condition i
+TEST(BatchSimTest, ResultIBelongsToInitialConditionI) {
+  std::string error;
+  const auto spec = ScratchSpec(
+      "list.json", "\"duration\": 0.02, \"return\": [\"robots[0].actualConfig[0]\"]", &error);
+  ASSERT_TRUE(spec) << error;
+  std::vector<core::InitialCondition> initial;
+  for (double q : {0.25, 1.0, 2.0, 3.0, 5.0}) {  // within the limits [0, 6.28319]
+    initial.push_back({{{"robots[0].config[0]", {q}}}, {}});
+  }
+  initial.push_back({{{"robots[0].drivers[0].kD", {-1}}}, {}});  // refused in its run
+  const auto results = core::BatchSim(spec->world, spec->plan, initial, {2, {}});
+  ASSERT_EQ(results.size(), 6u);
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(results[i].index, i);
+    EXPECT_EQ(results[i].status, "normal") << results[i].error;
+    // 20 ms from rest, held by the default PID at its start: gravity's torque (at most 4.9 N·m
+    // on about 1/3 kg·m²) moves the link by less than 14.7 rad/s² * (0.02 s)^2 / 2 = 3 mrad
+    EXPECT_NEAR(results[i].items[0][0], initial[i].values[0].value[0], 4e-3);
+  }
+  EXPECT_EQ(results[5].status, "error");
+  EXPECT_EQ(results[5].error, "robots[0].drivers[0].kD must be >= 0, got -1");
+}
+
+TEST(BatchShardTest, SlurmArrayVariablesGiveTheShard) {
+  std::string error;
+  unsetenv("SLURM_ARRAY_TASK_ID");
+  EXPECT_FALSE(core::ShardFromSlurm(&error));
+  EXPECT_EQ(error, "");
+  setenv("SLURM_ARRAY_TASK_ID", "7", 1);
+  setenv("SLURM_ARRAY_TASK_MIN", "5", 1);
+  setenv("SLURM_ARRAY_TASK_COUNT", "4", 1);
+  const auto shard = core::ShardFromSlurm(&error);
+  ASSERT_TRUE(shard) << error;
+  EXPECT_EQ(shard->k, 2);
+  EXPECT_EQ(shard->n, 4);
+  setenv("SLURM_ARRAY_TASK_ID", "9", 1);  // 5..8 has no task 9 (a stepped array)
+  EXPECT_FALSE(core::ShardFromSlurm(&error));
+  EXPECT_THAT(error, HasSubstr("SLURM_ARRAY_TASK_ID=9, SLURM_ARRAY_TASK_MIN=5, "
+                               "SLURM_ARRAY_TASK_COUNT=4 do not make a shard"));
+  unsetenv("SLURM_ARRAY_TASK_ID");
+  unsetenv("SLURM_ARRAY_TASK_MIN");
+  unsetenv("SLURM_ARRAY_TASK_COUNT");
+  EXPECT_FALSE(core::ParseShard("3/3", &error));
+  EXPECT_EQ(error, "shard '3/3' must be K/N with 0 <= K < N (optionally K/N:block)");
+  const auto block = core::ParseShard("1/3:block", &error);
+  ASSERT_TRUE(block);
+  EXPECT_TRUE(block->contiguous);
 }
 
 TEST(BatchOutputTest, CsvHeadersAreKlamptsFlattenedNames) {
