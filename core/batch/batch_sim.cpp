@@ -105,7 +105,8 @@ double ReadScalar(const Simulator& simulator, const AccessTarget& target) {
 std::string StopReason(const RunPlan& plan, const std::vector<AccessTarget>& bounds,
                        RunContext& context, StepStatus worst) {
   const Simulator& simulator = context.simulator;
-  if (plan.stop_time > 0 && simulator.time() >= plan.stop_time) return "time";
+  // the clock is a sum of physics steps: 0.9999999999999 is 1 s
+  if (plan.stop_time > 0 && simulator.time() >= plan.stop_time - 1e-9) return "time";
   if (plan.stop_on_unstable && worst >= StepStatus::kUnstable) return "unstable";
   for (size_t i = 0; i < bounds.size(); ++i) {
     const Termination& t = plan.terminate[i];

@@ -407,6 +407,18 @@ TEST(BatchShardTest, SlurmArrayVariablesGiveTheShard) {
   EXPECT_TRUE(block->contiguous);
 }
 
+TEST(BatchTerminationTest, ATimeLimitStopsAtThatTime) {
+  std::string error;
+  const auto spec = ScratchSpec("time.json",
+                                "\"duration\": 5, \"terminate\": [{\"time\": 1.5}], "
+                                "\"return\": [\"robots[0].actualConfig[0]\"]",
+                                &error);
+  ASSERT_TRUE(spec) << error;
+  const RunResult run = core::DoSim(spec->world, spec->plan, {});
+  EXPECT_EQ(run.stop, "time");
+  EXPECT_NEAR(run.time, 1.5, 1e-9);
+}
+
 TEST(BatchOutputTest, CsvHeadersAreKlamptsFlattenedNames) {
   std::string error;
   const auto spec = ScratchSpec("csv.json",
