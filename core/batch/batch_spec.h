@@ -8,7 +8,7 @@
 //     "samplers": {"robots[0].config[0]": {"uniform": [-3.14159, 3.14159]}},
 //     "set": {"robots[0].drivers[0].kP": 20}, fixed values on the description
 //     "args": {"target": {"uniform": [-0.5, 0.5]}},
-//     "setup": [{"robot": 0, "kP": [20], "kI": [8], "kD": [5], "pid": ["args.target"]}],
+//     "setup": [{"robot": 0, "kP": [20], "kI": [8], "kD": [5], "pid": "args.target"}],
 //     "terminate": [{"time": 4}, {"path": "robots[0].config[0]", "above": 7}, {"unstable": true}],
 //     "return": ["robots[0].actualConfig"],    default: Klamp't's doSim items
 //     "trace": {"rate": 0.1}                   items every 0.1 s (true: every simDt)
