@@ -55,7 +55,7 @@ void PrintProgress(const core::BatchProgress& p) {
 int WriteResults(const core::BatchTable& table, const core::BatchMeta& meta,
                  const BatchOptions& options, const std::string& prefix) {
   core::OutputOptions output;
-  output.wall_time = !options.no_wall_time;
+  output.wall_time = !options.no_wall_time && meta.wall_time;
   const core::BatchSummary summary = core::Summarize(table);
   std::string error;
   for (const auto& [suffix, text] :

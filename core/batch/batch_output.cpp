@@ -180,6 +180,7 @@ BatchMeta JsonMeta(const Json& json) {
   meta.spec_hash = json.at("spec_hash").get<std::string>();
   meta.runs = json.at("runs").get<int>();
   meta.seed = json.at("seed").get<std::uint64_t>();
+  meta.wall_time = json.value("wall_time", true);
   if (json.contains("shard")) {
     meta.part = true;
     meta.shard.k = json["shard"].at("k").get<int>();
@@ -245,6 +246,7 @@ std::string CsvText(const BatchTable& table, const OutputOptions& options) {
 std::string JsonLinesText(const BatchTable& table, const BatchMeta& meta,
                           const OutputOptions& options) {
   Json header = MetaJson(meta);
+  header["wall_time"] = options.wall_time;
   header["sampled"] = GroupsJson(table.sampled);
   header["items"] = GroupsJson(table.items);
   std::string text = Json{{"lamina_batch", header}}.dump() + "\n";
@@ -418,6 +420,11 @@ std::optional<BatchTable> MergeParts(const std::vector<std::pair<std::string, st
                " hash " + part_meta.spec_hash + ", " + std::to_string(part_meta.runs) +
                " runs; expected " + meta->spec + " hash " + meta->spec_hash + ", " +
                std::to_string(meta->runs) + " runs)";
+      return std::nullopt;
+    } else if (part_meta.wall_time != meta->wall_time) {
+      *error = name + (part_meta.wall_time ? ": has" : ": has no") + " wall times, " +
+               parts[0].first + (meta->wall_time ? " has" : " has none") +
+               " (write every part with or every part without --no-wall-time)";
       return std::nullopt;
     } else if (part_meta.shard.n != meta->shard.n ||
                part_meta.shard.contiguous != meta->shard.contiguous) {

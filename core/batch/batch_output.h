@@ -38,6 +38,9 @@ struct BatchMeta {
   std::uint64_t seed = 0;
   bool part = false;  ///< a shard's result
   Shard shard;        ///< part: which
+  /// The runs carry their wall times (the file was written without --no-wall-time). A merge
+  /// of parts without them writes none either, instead of zeros.
+  bool wall_time = true;
 };
 
 /// Results with the names of their columns; runs in index order.
@@ -83,7 +86,8 @@ double Quantile(const std::vector<double>& sorted, double p);
 std::optional<std::vector<double>> ColumnValues(const BatchTable& table, const std::string& name);
 
 /// Joins shard parts (JSON Lines texts with their file names) into the whole batch: every part
-/// of the same spec (hash), of the same N and shard count, each shard once, every run once.
+/// of the same spec (hash), of the same N and shard count, all with or all without wall times,
+/// each shard once, every run once.
 /// nullopt with `error` naming the part and what is wrong ("missing shard 2 of 3 (runs 2, 5,
 /// 8, ...)").
 std::optional<BatchTable> MergeParts(const std::vector<std::pair<std::string, std::string>>& parts,

@@ -77,16 +77,18 @@ TEST(BatchDeterminismTest, QuickStepWorldsToo) {
 }
 
 std::vector<std::pair<std::string, std::string>> Parts(const BatchSpec& spec, int n,
-                                                       bool contiguous) {
+                                                       bool contiguous, bool wall_time = true) {
   std::vector<std::pair<std::string, std::string>> parts;
+  core::OutputOptions output;
+  output.wall_time = wall_time;
   for (int k = n - 1; k >= 0; --k) {  // any order
     const core::Shard shard{k, n, contiguous};
     core::BatchMeta meta = spec.Meta();
     meta.part = true;
     meta.shard = shard;
-    parts.push_back(
-        {"part-" + std::to_string(k),
-         core::JsonLinesText(RunBatch(spec, core::ShardIndices(spec.runs, shard), 1), meta)});
+    parts.push_back({"part-" + std::to_string(k),
+                     core::JsonLinesText(RunBatch(spec, core::ShardIndices(spec.runs, shard), 1),
+                                         meta, output)});
   }
   return parts;
 }
@@ -109,6 +111,27 @@ TEST(BatchShardTest, ThreeMergedShardsAreTheSingleMachineResult) {
   }
   EXPECT_EQ(core::ShardIndices(10, {1, 3, false}), (std::vector<int>{1, 4, 7}));
   EXPECT_EQ(core::ShardIndices(10, {1, 3, true}), (std::vector<int>{3, 4, 5}));
+}
+
+// parts written with --no-wall-time merge into a result without wall times (not zeros), and
+// parts with and without them are not merged
+TEST(BatchShardTest, PartsWithoutWallTimesMergeWithoutThem) {
+  std::string error;
+  std::string body = kSmallBatch;
+  const auto spec = ScratchSpec("small.json", body, &error);
+  ASSERT_TRUE(spec) << error;
+  core::BatchMeta meta;
+  ASSERT_TRUE(core::MergeParts(Parts(*spec, 2, false, false), &meta, &error)) << error;
+  EXPECT_FALSE(meta.wall_time);
+  ASSERT_TRUE(core::MergeParts(Parts(*spec, 2, false, true), &meta, &error)) << error;
+  EXPECT_TRUE(meta.wall_time);
+
+  auto mixed = Parts(*spec, 2, false, false);  // parts of shards 1, 0
+  mixed[1] = Parts(*spec, 2, false, true)[1];
+  EXPECT_FALSE(core::MergeParts(mixed, &meta, &error));
+  EXPECT_EQ(error,
+            "part-0: has wall times, part-1 has none (write every part with or every part "
+            "without --no-wall-time)");
 }
 
 TEST(BatchShardTest, MergeRefusesMissingDuplicateAndForeignParts) {
