@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/headless_batch.h"
 #include "app/headless_render_commands.h"
 #include "core/control/send_motion.h"
 #include "core/io/trajectory_file.h"
@@ -334,10 +335,12 @@ int main(int argc, char** argv) {
 
   const lamina::app::Subcommand shot = lamina::app::AddShotCommand(app);
   const lamina::app::Subcommand record = lamina::app::AddRecordCommand(app);
+  const lamina::app::Subcommand batch = lamina::app::AddBatchCommand(app);
 
   CLI11_PARSE(app, argc, argv);
   if (shot.command->parsed()) return shot.run();
   if (record.command->parsed()) return record.run();
+  if (batch.command->parsed()) return batch.run();
   if (info->parsed()) return RunInfo(info_world, info_json, info_sets);
   if (run->parsed()) return RunSimulation(run_options);
   return 2;

@@ -2,16 +2,23 @@
 # SPDX-License-Identifier: MIT
 # Installs the Debian packages Lamina needs, only those that are missing.
 # Uses sudo when not root. Safe to run repeatedly: it does nothing when all are present.
+#   setup-deps.sh          what the build and `make test` need
+#   setup-deps.sh slurm    Slurm and munge for the cluster test (tests/cluster), installed by that
+#                          test when they are missing (22.05 in Debian 12; nothing starts by itself)
 set -euo pipefail
 
-packages=(
-  build-essential cmake ninja-build pkg-config
-  libode-dev libeigen3-dev libfcl-dev libccd-dev libassimp-dev zlib1g-dev
-  liburdfdom-dev liburdfdom-headers-dev libtinyxml2-dev libimgui-dev libglfw3-dev
-  libosmesa6-dev libegl-dev libstb-dev libgtest-dev libgmock-dev libbenchmark-dev
-  libcli11-dev nlohmann-json3-dev
-  xvfb xauth xdotool clang-format lld
-)
+if [[ ${1:-} == slurm ]]; then
+  packages=(slurmctld slurmd slurm-client munge)
+else
+  packages=(
+    build-essential cmake ninja-build pkg-config
+    libode-dev libeigen3-dev libfcl-dev libccd-dev libassimp-dev zlib1g-dev
+    liburdfdom-dev liburdfdom-headers-dev libtinyxml2-dev libimgui-dev libglfw3-dev
+    libosmesa6-dev libegl-dev libstb-dev libgtest-dev libgmock-dev libbenchmark-dev
+    libcli11-dev nlohmann-json3-dev
+    xvfb xauth xdotool clang-format lld
+  )
+fi
 
 missing=()
 for p in "${packages[@]}"; do

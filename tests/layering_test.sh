@@ -32,12 +32,13 @@ declare -A allowed=(
   [core/sim]="core core/geometry core/model core/contact core/control core/robot"
   [core/render]="core core/geometry core/model core/contact core/control core/robot core/sim"
   [core/edit]="core core/geometry core/model core/io core/contact core/control core/robot core/sim"
+  [core/batch]="core core/geometry core/model core/io core/contact core/control core/robot core/sim"
   [ui/platform]="core"
   [ui/render]="core core/geometry core/model core/render ui/platform"
   [ui/widgets]=""
   [ui/panels]="core core/geometry core/model core/io core/contact core/control core/robot core/sim core/render core/edit ui/viewer ui/widgets"
   [ui/viewer]="core core/geometry core/model core/io core/contact core/control core/robot core/sim core/render core/edit ui/platform ui/render ui/panels ui/widgets"
-  [app]="core core/geometry core/model core/io core/contact core/control core/robot core/sim core/render core/edit ui/platform ui/render ui/viewer"
+  [app]="core core/geometry core/model core/io core/contact core/control core/robot core/sim core/render core/edit core/batch ui/platform ui/render ui/viewer"
 )
 
 # the folder of a project path: core/x/y.h -> core/x, core/y.h -> core, app/z.cpp -> app

@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <mutex>
 #include <stdexcept>
 
 #include <ode/ode.h>
@@ -27,6 +28,12 @@ unsigned long QuickStepSeed(double time) {
   x *= 0xff51afd7ed558ccdULL;
   x ^= x >> 33;
   return static_cast<unsigned long>(x);
+}
+
+// guards ODE's process-wide random generator, which dWorldQuickStep draws from
+std::mutex& QuickStepMutex() {
+  static std::mutex mutex;
+  return mutex;
 }
 
 // a remainder within this fraction of a step counts as a whole step (Simulate)
@@ -71,7 +78,7 @@ Simulator::~Simulator() {
 // the ODE world, bodies, robots and controllers of world_ (at the initial state)
 void Simulator::Build() {
   diagnostics_ = Diagnostics();
-  ode_world_.reset(dWorldCreate());
+  ode_world_ = CreateOdeWorld();
   contact_group_.reset(dJointGroupCreate(0));
   dWorldSetERP(ode_world_.get(), world_.settings.erp);
   dWorldSetCFM(ode_world_.get(), world_.settings.cfm);
@@ -375,7 +382,10 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     if (world_.settings.solver == SolverType::kQuickStep) {
       dWorldSetQuickStepNumIterations(ode_world_.get(), world_.settings.quick_step_iterations);
       // QuickStep shuffles its rows with ODE's process-wide random generator: seeded from the
-      // state's time, the same state always takes the same step, whatever ran before
+      // state's time, the same state always takes the same step, whatever ran before. The seed
+      // and the step are one critical section: simulators stepping in other threads (batch
+      // runs) share the generator, so their quick steps take turns
+      std::lock_guard<std::mutex> lock(QuickStepMutex());
       dRandSetSeed(QuickStepSeed(time_));
       dWorldQuickStep(ode_world_.get(), step);
     } else {
@@ -384,6 +394,7 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
   } catch (const std::exception& error) {
     statistics_.error = error.what();
     result = IntegrateResult::kOdeError;
+    MarkOdeWorldFailed(ode_world_.get());
   }
   dJointGroupEmpty(contact_group_.get());
   statistics_.time_split.solver += watch.Lap();
