@@ -40,19 +40,30 @@ constexpr const char* kSmallBatch =
     "\"return\": [\"robots[0].actualConfig\", \"controllers[0].commandedConfig[0]\"], "
     "\"trace\": {\"rate\": 0.25}";
 
-TEST(BatchDeterminismTest, SameCsvWithOneAndTwoThreads) {
+// the small batch's spec (a failure fails the test)
+BatchSpec SmallSpec() {
   std::string error;
-  std::string body = kSmallBatch;
-  const auto spec = ScratchSpec("small.json", body, &error);
-  ASSERT_TRUE(spec) << error;
-  core::OutputOptions no_wall;
-  no_wall.wall_time = false;
-  const BatchTable one = RunBatch(*spec, AllRuns(*spec), 1);
-  const BatchTable two = RunBatch(*spec, AllRuns(*spec), 2);
+  const auto spec = ScratchSpec("small.json", kSmallBatch, &error);
+  EXPECT_TRUE(spec) << error;
+  return spec ? *spec : BatchSpec{};
+}
+
+// files without wall times: byte-identical for one spec
+core::OutputOptions NoWallTime() {
+  core::OutputOptions options;
+  options.wall_time = false;
+  return options;
+}
+
+TEST(BatchDeterminismTest, SameCsvWithOneAndTwoThreads) {
+  const BatchSpec spec = SmallSpec();
+  const core::OutputOptions no_wall = NoWallTime();
+  const BatchTable one = RunBatch(spec, AllRuns(spec), 1);
+  const BatchTable two = RunBatch(spec, AllRuns(spec), 2);
   for (const RunResult& run : one.runs) EXPECT_EQ(run.status, "normal") << run.error;
   EXPECT_EQ(core::CsvText(one, no_wall), core::CsvText(two, no_wall));
-  EXPECT_EQ(core::JsonLinesText(one, spec->Meta(), no_wall),
-            core::JsonLinesText(two, spec->Meta(), no_wall));
+  EXPECT_EQ(core::JsonLinesText(one, spec.Meta(), no_wall),
+            core::JsonLinesText(two, spec.Meta(), no_wall));
   // the trace: t = 0, 0.25, 0.5, 0.75, 1
   ASSERT_EQ(one.runs[0].trace_time.size(), 5u);
   EXPECT_NEAR(one.runs[0].trace_time[4], 1.0, 1e-9);
@@ -69,8 +80,7 @@ TEST(BatchDeterminismTest, QuickStepWorldsToo) {
   std::string error;
   const auto spec = core::ParseBatchSpec(text, test::ScratchDir() + "/quick.json", &error);
   ASSERT_TRUE(spec) << error;
-  core::OutputOptions no_wall;
-  no_wall.wall_time = false;
+  const core::OutputOptions no_wall = NoWallTime();
   const std::string one = core::CsvText(RunBatch(*spec, AllRuns(*spec), 1), no_wall);
   EXPECT_EQ(one, core::CsvText(RunBatch(*spec, AllRuns(*spec), 2), no_wall));
   EXPECT_EQ(one, core::CsvText(RunBatch(*spec, AllRuns(*spec), 2), no_wall));
@@ -95,19 +105,16 @@ std::vector<std::pair<std::string, std::string>> Parts(const BatchSpec& spec, in
 
 TEST(BatchShardTest, ThreeMergedShardsAreTheSingleMachineResult) {
   std::string error;
-  std::string body = kSmallBatch;
-  const auto spec = ScratchSpec("small.json", body, &error);
-  ASSERT_TRUE(spec) << error;
-  core::OutputOptions no_wall;
-  no_wall.wall_time = false;
-  const BatchTable whole = RunBatch(*spec, AllRuns(*spec), 2);
+  const BatchSpec spec = SmallSpec();
+  const core::OutputOptions no_wall = NoWallTime();
+  const BatchTable whole = RunBatch(spec, AllRuns(spec), 2);
   for (bool contiguous : {false, true}) {
     core::BatchMeta meta;
-    const auto merged = core::MergeParts(Parts(*spec, 3, contiguous), &meta, &error);
+    const auto merged = core::MergeParts(Parts(spec, 3, contiguous), &meta, &error);
     ASSERT_TRUE(merged) << error;
     EXPECT_EQ(core::CsvText(*merged, no_wall), core::CsvText(whole, no_wall));
     EXPECT_EQ(core::JsonLinesText(*merged, meta, no_wall),
-              core::JsonLinesText(whole, spec->Meta(), no_wall));
+              core::JsonLinesText(whole, spec.Meta(), no_wall));
   }
   EXPECT_EQ(core::ShardIndices(10, {1, 3, false}), (std::vector<int>{1, 4, 7}));
   EXPECT_EQ(core::ShardIndices(10, {1, 3, true}), (std::vector<int>{3, 4, 5}));
@@ -117,17 +124,15 @@ TEST(BatchShardTest, ThreeMergedShardsAreTheSingleMachineResult) {
 // parts with and without them are not merged
 TEST(BatchShardTest, PartsWithoutWallTimesMergeWithoutThem) {
   std::string error;
-  std::string body = kSmallBatch;
-  const auto spec = ScratchSpec("small.json", body, &error);
-  ASSERT_TRUE(spec) << error;
+  const BatchSpec spec = SmallSpec();
   core::BatchMeta meta;
-  ASSERT_TRUE(core::MergeParts(Parts(*spec, 2, false, false), &meta, &error)) << error;
+  ASSERT_TRUE(core::MergeParts(Parts(spec, 2, false, false), &meta, &error)) << error;
   EXPECT_FALSE(meta.wall_time);
-  ASSERT_TRUE(core::MergeParts(Parts(*spec, 2, false, true), &meta, &error)) << error;
+  ASSERT_TRUE(core::MergeParts(Parts(spec, 2, false, true), &meta, &error)) << error;
   EXPECT_TRUE(meta.wall_time);
 
-  auto mixed = Parts(*spec, 2, false, false);  // parts of shards 1, 0
-  mixed[1] = Parts(*spec, 2, false, true)[1];
+  auto mixed = Parts(spec, 2, false, false);  // parts of shards 1, 0
+  mixed[1] = Parts(spec, 2, false, true)[1];
   EXPECT_FALSE(core::MergeParts(mixed, &meta, &error));
   EXPECT_EQ(error,
             "part-0: has wall times, part-1 has none (write every part with or every part "
