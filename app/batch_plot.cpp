@@ -5,10 +5,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include <stb/stb_easy_font.h>
 
 #include "ui/platform/image_file.h"
+#include "ui/widgets/plot_data.h"
 
 namespace lamina::app {
 
@@ -16,7 +19,7 @@ namespace {
 
 constexpr int kWidth = 800;
 constexpr int kHeight = 500;
-constexpr int kLeft = 90, kRight = 30, kTop = 60, kBottom = 70;  // margins, px
+constexpr int kLeft = 90, kRight = 40, kTop = 60, kBottom = 70;  // margins, px
 constexpr int kTextScale = 2;  // stb_easy_font's glyphs are ~7 px high
 
 struct Rgb {
@@ -76,6 +79,72 @@ std::string Label(double v) {
   return buffer;
 }
 
+// a histogram's counts: `bins` equal bins over [lo, hi] (the top edge in the last bin)
+std::vector<int> Counts(const std::vector<double>& values, double lo, double hi, int bins) {
+  std::vector<int> counts(bins, 0);
+  for (double v : values) {
+    const int b = std::min(bins - 1, static_cast<int>((v - lo) / (hi - lo) * bins));
+    ++counts[std::max(0, b)];
+  }
+  return counts;
+}
+
+// ticks of whole runs from 0 to at least `most`: 1/2/5 x 10^k, never a fraction of a run
+ui::Ticks CountTicks(int most) {
+  ui::Ticks ticks = ui::NiceTicks(0.0, std::max(most, 1), 6);
+  if (ticks.step < 1.0) ticks.step = 1.0;
+  ticks.values.clear();
+  for (double v = 0.0; v < most + ticks.step; v += ticks.step) ticks.values.push_back(v);
+  ticks.decimals = 0;
+  return ticks;
+}
+
+constexpr Rgb kInk{20, 20, 20};
+constexpr int kPlotW = kWidth - kLeft - kRight, kPlotH = kHeight - kTop - kBottom;
+constexpr int kBase = kTop + kPlotH;  // the x axis, px from the top
+
+void DrawBars(Canvas& canvas, const std::vector<int>& counts, double top) {
+  const int bins = static_cast<int>(counts.size());
+  for (int b = 0; b < bins; ++b) {
+    const int x0 = kLeft + b * kPlotW / bins, x1 = kLeft + (b + 1) * kPlotW / bins;
+    const int height = static_cast<int>(std::lround(counts[b] * kPlotH / top));
+    canvas.Fill(x0 + 1, kBase - height, x1 - 1, kBase, {70, 120, 180});
+  }
+}
+
+// the value axis: ticks at 1/2/5 x 10^k within [lo, hi], where the bins put them
+void DrawXAxis(Canvas& canvas, double lo, double hi) {
+  canvas.Fill(kLeft - 2, kBase, kLeft + kPlotW, kBase + 2, kInk);
+  const ui::Ticks ticks = ui::NiceTicks(lo, hi, 7);
+  for (double v : ticks.values) {
+    const int x = kLeft + static_cast<int>(std::lround((v - lo) / (hi - lo) * kPlotW));
+    canvas.Fill(x - 1, kBase + 2, x + 1, kBase + 8, kInk);
+    canvas.Text(x, kBase + 14, ui::TickLabel(ticks, v), 1);
+  }
+}
+
+// the count axis up to `top` runs
+void DrawYAxis(Canvas& canvas, const ui::Ticks& ticks, double top) {
+  canvas.Fill(kLeft - 2, kTop, kLeft, kBase + 2, kInk);
+  for (double v : ticks.values) {
+    const int y = kBase - static_cast<int>(std::lround(v * kPlotH / top));
+    canvas.Fill(kLeft - 8, y - 1, kLeft - 2, y + 1, kInk);
+    canvas.Text(kLeft - 12, y - 6, ui::TickLabel(ticks, v), 2);
+  }
+}
+
+bool WritePng(const std::string& path, const Canvas& canvas, std::string* error) {
+  // through a temporary file and a rename: never half an image under `path`
+  const std::string temporary = path + ".tmp";
+  if (!ui::WritePngBottomUp(temporary, kWidth, kHeight, canvas.BottomUp()) ||
+      std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    *error = "cannot write " + path;
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool WriteHistogramPng(const std::string& path, const std::vector<double>& values,
@@ -88,45 +157,19 @@ bool WriteHistogramPng(const std::string& path, const std::vector<double>& value
   double lo = *lo_it, hi = *hi_it;
   if (hi - lo < 1e-12 * std::max(1.0, std::abs(lo))) lo -= 0.5, hi += 0.5;
   const int bins = std::clamp(static_cast<int>(std::ceil(std::sqrt(values.size()))), 5, 40);
-  std::vector<int> counts(bins, 0);
-  for (double v : values) {
-    const int b = std::min(bins - 1, static_cast<int>((v - lo) / (hi - lo) * bins));
-    ++counts[std::max(0, b)];
-  }
-  const int most = *std::max_element(counts.begin(), counts.end());
+  const std::vector<int> counts = Counts(values, lo, hi, bins);
+  const ui::Ticks count_ticks = CountTicks(*std::max_element(counts.begin(), counts.end()));
+  const double top = count_ticks.values.back();
   Canvas canvas;
-  const int plot_w = kWidth - kLeft - kRight, plot_h = kHeight - kTop - kBottom;
-  const int base = kTop + plot_h;
-  for (int b = 0; b < bins; ++b) {
-    const int x0 = kLeft + b * plot_w / bins, x1 = kLeft + (b + 1) * plot_w / bins;
-    const int height = counts[b] * plot_h / most;
-    canvas.Fill(x0 + 1, base - height, x1 - 1, base, {70, 120, 180});
-  }
-  canvas.Fill(kLeft - 2, kTop, kLeft, base + 2, {20, 20, 20});           // y axis
-  canvas.Fill(kLeft - 2, base, kLeft + plot_w, base + 2, {20, 20, 20});  // x axis
-  for (int t = 0; t <= 4; ++t) {
-    const int x = kLeft + t * plot_w / 4;
-    canvas.Fill(x - 1, base + 2, x + 1, base + 8, {20, 20, 20});
-    canvas.Text(x, base + 14, Label(lo + (hi - lo) * t / 4), 1);
-    const long count = std::lround(most * t / 4.0);  // whole runs
-    const int y = base - static_cast<int>(count * plot_h / most);
-    canvas.Fill(kLeft - 8, y - 1, kLeft - 2, y + 1, {20, 20, 20});
-    canvas.Text(kLeft - 12, y - 6, std::to_string(count), 2);
-  }
+  DrawBars(canvas, counts, top);
+  DrawXAxis(canvas, lo, hi);
+  DrawYAxis(canvas, count_ticks, top);
   canvas.Text(kWidth / 2, 16, title, 1);
-  canvas.Text(
-      kLeft + plot_w / 2, kHeight - 30,
-      "runs per bin; n = " + std::to_string(values.size()) + ", " + std::to_string(bins) + " bins",
-      1);
-  // through a temporary file and a rename: never half an image under `path`
-  const std::string temporary = path + ".tmp";
-  if (!ui::WritePngBottomUp(temporary, kWidth, kHeight, canvas.BottomUp()) ||
-      std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    *error = "cannot write " + path;
-    return false;
-  }
-  return true;
+  canvas.Text(kLeft + kPlotW / 2, kHeight - 30,
+              "runs per bin; n = " + std::to_string(values.size()) + ", " + std::to_string(bins) +
+                  " bins of " + Label((hi - lo) / bins),
+              1);
+  return WritePng(path, canvas, error);
 }
 
 }  // namespace lamina::app
