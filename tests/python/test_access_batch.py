@@ -75,3 +75,18 @@ def test_python_callbacks_run_serially_with_the_same_physics():
     assert [c["robots[0].config[0]"] for c, _ in runs] == [0.25] * 3
     failed = batch.doSim(world, 0.1, {}, items, simInit=lambda sim: 1 / 0)
     assert failed["status"] == "error" and "division" in failed["error"]
+    kept = []
+    batch.doSim(world, 0.1, {}, items, simInit=kept.append)
+    with pytest.raises(RuntimeError, match="has ended"):
+        kept[0].getTime()  # a run's simulator does not outlive its run
+
+
+def test_batch_sim_keeps_the_order_of_its_initial_conditions():
+    world = spin_world()
+    starts = [0.5, -0.5, 1.0]
+    results = batch.batchSim(world, 0.2, [{"robots[0].config[0]": q} for q in starts],
+                             ["robots[0].actualConfig[0]"], threads=2)
+    for q, result in zip(starts, results):
+        single = batch.doSim(world, 0.2, {"robots[0].config[0]": q}, ["robots[0].actualConfig[0]"])
+        assert result["robots[0].actualConfig[0]"] == single["robots[0].actualConfig[0]"]
+    assert results[0]["robots[0].actualConfig[0]"] != results[1]["robots[0].actualConfig[0]"]
