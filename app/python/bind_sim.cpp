@@ -3,6 +3,7 @@
 // Bodies are named by world id or by a model (anything with getID()); vectors are lists, and
 // numpy arrays are accepted wherever lists are.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include <pybind11/stl.h>
 
 #include "app/python/bindings.h"
+#include "core/sim/sim_access.h"
 #include "core/sim/sim_state.h"
 #include "core/sim/step_observer.h"
 
@@ -95,6 +97,26 @@ void BindSim(py::module_& m) {
       .def("getGravity", [](const PySim& s) { return ToList(s.get().world().settings.gravity); })
       .def("setSimStep", [](PySim& s, double dt) { s.get().SetSimStep(dt); })
       .def("getSimStep", [](const PySim& s) { return s.get().sim_step(); })
+      .def("setSetting",
+           [](PySim& s, const std::string& name, const std::string& value) {
+             // Klamp't's text separates numbers by blanks, access paths' by commas
+             std::string text;
+             for (py::handle word : py::str(value).attr("split")()) {
+               text += (text.empty() ? "" : ",") + word.cast<std::string>();
+             }
+             std::string error;
+             if (!core::SetPathText(&s.get(), "settings." + name, text, &error)) {
+               throw py::value_error(error);
+             }
+           })
+      .def("getSetting",
+           [](const PySim& s, const std::string& name) {
+             std::string error;
+             const auto target = core::ResolveSimulationPath(s.get(), "settings." + name, &error);
+             const auto value = target ? core::GetPath(s.get(), *target, &error) : std::nullopt;
+             if (!value) throw py::value_error(error);
+             return core::FormatAccessValue(*target, *value);
+           })
       .def("updateWorld", [](const PySim& s) { s.get().UpdateWorld(s.desc.get()); })
       .def("getWorld", [](const PySim& s) { return PyWorld{s.desc}; })
       .def("getStatus", [](const PySim& s) { return static_cast<int>(s.status); })

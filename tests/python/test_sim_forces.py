@@ -121,3 +121,15 @@ def test_get_state_set_state_replays_exactly():
     sim.reset()
     assert sim.getTime() == 0.0
     assert sim.body(world.rigidObject(0)).getTransform() == world.rigidObject(0).getTransform()
+
+
+def test_settings_by_name_as_klampt_text(resting_block):
+    sim = lamina.Simulator(resting_block)
+    sim.setSetting("gravity", "0 0 -1.62")
+    assert sim.getGravity() == [0, 0, -1.62]
+    sim.setSetting("timestep", "0.002")
+    assert sim.getSimStep() == 0.002 and float(sim.getSetting("timestep")) == 0.002
+    sim.setSetting("gravity", "0,0,-9.8")  # the access paths' text works too
+    assert sim.getSetting("gravity").replace(" ", "") == "0,0,-9.8"
+    with pytest.raises(ValueError, match="timestep"):
+        sim.setSetting("timestep", "-1")
