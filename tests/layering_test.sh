@@ -38,10 +38,11 @@ declare -A allowed=(
   [ui/widgets]=""
   [ui/panels]="core core/geometry core/model core/io core/contact core/control core/robot core/sim core/render core/edit ui/viewer ui/widgets"
   [ui/viewer]="core core/geometry core/model core/io core/contact core/control core/robot core/sim core/render core/edit ui/platform ui/render ui/panels ui/widgets"
-  [app]="core core/geometry core/model core/io core/contact core/control core/robot core/sim core/render core/edit core/batch ui/platform ui/render ui/viewer"
+  [app]="core core/geometry core/model core/io core/contact core/control core/robot core/sim core/render core/edit core/batch ui/platform ui/render ui/viewer ui/widgets"
 )
 
-# the folder of a project path: core/x/y.h -> core/x, core/y.h -> core, app/z.cpp -> app
+# the folder of a project path: core/x/y.h -> core/x, core/y.h -> core, app/z.cpp -> app (and
+# app/python/z.cpp -> app: the Python bindings are thin mains too)
 folder_of() {
   local path=$1 first rest second
   first=${path%%/*}
