@@ -11,6 +11,7 @@
 #include <pybind11/stl.h>
 
 #include "app/python/bindings.h"
+#include "core/model/surface_rows.h"
 #include "core/sim/sim_access.h"
 #include "core/sim/sim_state.h"
 #include "core/sim/step_observer.h"
@@ -53,15 +54,30 @@ core::SimBody Body(const PyBody& b) {
   return S(b).body(b.id);
 }
 
+// SurfaceParameters: one property per surface row of the parameter table (its key, its help),
+// and a value the table refuses raises ValueError with the table's message
+void BindSurfaceParameters(py::module_& m) {
+  py::class_<core::SurfaceDesc> surface(m, "SurfaceParameters");
+  surface.def(py::init<>());
+  for (const core::SurfaceRow& row : core::SurfaceMembers()) {
+    const core::ParamSpec* spec = row.spec;
+    double core::SurfaceDesc::*member = row.member;
+    surface.def_property(
+        std::string(spec->key).c_str(), [member](const core::SurfaceDesc& s) { return s.*member; },
+        [spec, member](core::SurfaceDesc& s, double value) {
+          if (auto why = core::CheckParam(*spec, core::ParamValue{value}, 1)) {
+            throw py::value_error(std::string(spec->key) + ": " + *why);
+          }
+          s.*member = value;
+        },
+        std::string(spec->help).c_str());
+  }
+}
+
 }  // namespace
 
 void BindSim(py::module_& m) {
-  py::class_<core::SurfaceDesc>(m, "SurfaceParameters")
-      .def(py::init<>())
-      .def_readwrite("kFriction", &core::SurfaceDesc::friction)
-      .def_readwrite("kRestitution", &core::SurfaceDesc::restitution)
-      .def_readwrite("kStiffness", &core::SurfaceDesc::stiffness)
-      .def_readwrite("kDamping", &core::SurfaceDesc::damping);
+  BindSurfaceParameters(m);
 
   py::class_<core::SimState>(m, "SimState", "An exact snapshot of a simulation (getState)");
 

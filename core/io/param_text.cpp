@@ -3,6 +3,7 @@
 
 #include <sstream>
 
+#include "core/model/surface_rows.h"
 #include "core/number_text.h"
 
 namespace lamina::core {
@@ -26,9 +27,7 @@ std::optional<double> NamedValue(const ParamSpec& spec, const std::string& word)
 
 std::vector<const ParamSpec*> SurfaceRows() {
   std::vector<const ParamSpec*> rows;
-  for (const char* key : {"kRestitution", "kFriction", "kStiffness", "kDamping"}) {
-    rows.push_back(FindParam(key, ElementKind::kObject));
-  }
+  for (const SurfaceRow& row : SurfaceMembers()) rows.push_back(row.spec);
   return rows;
 }
 

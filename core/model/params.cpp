@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <Eigen/Eigenvalues>
 
+#include "core/model/surface_rows.h"
 #include "core/number_text.h"
 
 namespace lamina::core {
@@ -706,6 +708,26 @@ ParamValue TwistToValue(const Twist& twist) {
 
 Twist ValueToTwist(const ParamValue& value) {
   return {Vec3(value[3], value[4], value[5]), Vec3(value[0], value[1], value[2])};
+}
+
+namespace {
+
+// the row whose getter is GetSurface<Member>
+template <double SurfaceDesc::*Member>
+SurfaceRow SurfaceRowOf() {
+  for (const ParamSpec& spec : Params()) {
+    if (spec.get == &GetSurface<Member>) return {&spec, Member};
+  }
+  throw std::logic_error("params.cpp: no row reads this SurfaceDesc member");
+}
+
+}  // namespace
+
+std::span<const SurfaceRow> SurfaceMembers() {
+  static const SurfaceRow kRows[] = {
+      SurfaceRowOf<&SurfaceDesc::restitution>(), SurfaceRowOf<&SurfaceDesc::friction>(),
+      SurfaceRowOf<&SurfaceDesc::stiffness>(), SurfaceRowOf<&SurfaceDesc::damping>()};
+  return kRows;
 }
 
 }  // namespace lamina::core

@@ -87,6 +87,21 @@ def test_get_contacts_rows_carry_the_blended_friction(resting_block):
     assert all(r[5] == pytest.approx(-1.0, abs=1e-9) for r in sim.getContacts(floor, block))
 
 
+def test_surface_parameters_are_the_tables_rows():
+    surface = lamina.SurfaceParameters()
+    for name in ("kRestitution", "kFriction", "kStiffness", "kDamping"):
+        assert getattr(lamina.SurfaceParameters, name).__doc__  # the table's help
+    surface.kRestitution = 0.5
+    assert surface.kRestitution == 0.5
+    with pytest.raises(ValueError, match="kRestitution: "):
+        surface.kRestitution = 1.5  # the table's range is [0, 1]
+    with pytest.raises(ValueError, match="kStiffness: "):
+        surface.kStiffness = 0.0  # stiffness must be > 0
+    assert surface.kRestitution == 0.5  # a refused value changes nothing
+    surface.kStiffness = float("inf")
+    assert surface.kStiffness == float("inf")
+
+
 def test_kinematic_body_moves_at_its_velocity_and_pushes(tmp_path):
     world = lamina.WorldModel(
         blocks_world(tmp_path / "two.xml", [(0, 0, 0.0525), (0.3, 0, 0.0525)]))
