@@ -13,6 +13,7 @@
 #include "core/diagnostics.h"
 #include "core/io/load_context.h"
 #include "core/io/world_file.h"
+#include "core/robot/config_space.h"
 #include "core/robot/kinematics.h"
 
 namespace lamina::python {
@@ -178,10 +179,28 @@ void BindWorld(py::module_& m) {
              robot.config = RobotVector(robot, q, "setConfig");
            })
       .def("getVelocity", [](const PyRobot& r) { return ToList(Robot(r).InitialVelocity()); })
-      .def("setVelocity", [](const PyRobot& r, py::handle dq) {
-        core::RobotDesc& robot = Robot(r);
-        robot.velocity = RobotVector(robot, dq, "setVelocity");
-      });
+      .def("setVelocity",
+           [](const PyRobot& r, py::handle dq) {
+             core::RobotDesc& robot = Robot(r);
+             robot.velocity = RobotVector(robot, dq, "setVelocity");
+           })
+      .def(
+          "interpolate",
+          [](const PyRobot& r, py::handle a, py::handle b, double u) {
+            const core::RobotDesc& robot = Robot(r);
+            return ToList(core::InterpolateConfig(robot, RobotVector(robot, a, "interpolate a"),
+                                                  RobotVector(robot, b, "interpolate b"), u));
+          },
+          py::arg("a"), py::arg("b"), py::arg("u"),
+          "The configuration a fraction u of the way from a to b (spin joints the short way).")
+      .def(
+          "interpolateDeriv",
+          [](const PyRobot& r, py::handle a, py::handle b) {
+            const core::RobotDesc& robot = Robot(r);
+            return ToList(core::ConfigDifference(robot, RobotVector(robot, a, "interpolateDeriv a"),
+                                                 RobotVector(robot, b, "interpolateDeriv b")));
+          },
+          py::arg("a"), py::arg("b"), "d/du of interpolate(a, b, u): b - a (spin joints wrapped).");
 
   py::class_<PyLink>(m, "RobotModelLink")
       .def("getID", [](const PyLink& l) { return l.desc->RobotLinkId(l.robot, l.link); })

@@ -82,5 +82,6 @@ void BindWorld(py::module_& m);
 void BindSim(py::module_& m);
 void BindController(py::module_& m);
 void BindBatch(py::module_& m);
+void BindTrajectory(py::module_& m);
 
 }  // namespace lamina::python

@@ -11,4 +11,5 @@ PYBIND11_MODULE(_lamina, m) {
   lamina::python::BindSim(m);
   lamina::python::BindController(m);
   lamina::python::BindBatch(m);
+  lamina::python::BindTrajectory(m);
 }

@@ -1,3 +1,3 @@
 # SPDX-License-Identifier: MIT
-"""lamina.model: access paths (lamina.model.access)."""
-from . import access  # noqa: F401
+"""lamina.model: access paths (lamina.model.access) and trajectories (lamina.model.trajectory)."""
+from . import access, trajectory  # noqa: F401
