@@ -76,6 +76,7 @@ std::vector<std::uint8_t> OffscreenView::Render(const core::WorldDesc& world,
                                                 const core::WorldPoses& poses,
                                                 const core::Simulator* simulator) {
   State& s = *state_;
+  s.context.MakeCurrent();  // another view may have been drawn since
   const std::vector<core::ContactMarker> contacts =
       simulator ? core::ContactMarkersFromSimulator(*simulator)
                 : std::vector<core::ContactMarker>();

@@ -1,11 +1,13 @@
 # SPDX-License-Identifier: MIT
 # Shared paths and worlds of the Python tests (run with /usr/bin/python3 -m pytest tests/python and
 # PYTHONPATH=build/python; CTest sets both).
+import os
 import pathlib
 
 import pytest
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
+BIN = pathlib.Path(os.environ.get("LAMINA_BIN_DIR", ROOT / "build" / "bin"))
 DATA = ROOT / "tests" / "data" / "worlds"
 WORLDS = ROOT / "worlds"
 

@@ -14,4 +14,5 @@ from ._lamina import (  # noqa: F401
     TerrainModel,
     WorldModel,
 )
-from . import model, sim  # noqa: F401,E402
+from . import model, sim, vis  # noqa: F401,E402
+from .vis import render  # noqa: F401,E402
