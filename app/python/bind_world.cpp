@@ -10,10 +10,10 @@
 #include <pybind11/stl.h>
 
 #include "app/python/bindings.h"
+#include "core/control/config_space.h"
 #include "core/diagnostics.h"
 #include "core/io/load_context.h"
 #include "core/io/world_file.h"
-#include "core/robot/config_space.h"
 #include "core/robot/kinematics.h"
 
 namespace lamina::python {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Interpolating between configurations: linear per link, spin joints the short way round.
-#include "core/robot/config_space.h"
+#include "core/control/config_space.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "core/robot/config_space.h"
+#include "core/control/config_space.h"
 
 #include "core/control/angles.h"
 
