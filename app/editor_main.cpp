@@ -6,9 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "core/render/image_size.h"
-#include "core/render/overlay_options.h"
-#include "core/render/scene_camera.h"
+#include "core/render/view_options.h"
 #include "ui/viewer/viewer_app.h"
 
 namespace {
@@ -16,20 +14,11 @@ namespace {
 // checks --size, --camera and --overlay into `options`; false with a message naming the option
 bool CheckViewOptions(const std::string& size, const std::string& overlay,
                       lamina::ui::ViewerOptions* options, std::string* error) {
-  if (!lamina::core::ParseImageSize(size, &options->width, &options->height)) {
-    *error = "--size expects WIDTHxHEIGHT with 1..16384 pixels per side (e.g. 1280x720), got '" +
-             size + "'";
-    return false;
-  }
-  std::string detail;
-  if (!lamina::core::ValidCameraSpec(options->camera, &detail)) {
-    *error = "--" + detail;  // "camera: ..."
-    return false;
-  }
-  if (!lamina::core::ParseOverlayList(overlay, &options->overlays, &detail)) {
-    *error = "--overlay: " + detail;
-    return false;
-  }
+  lamina::core::ViewOptions view;
+  if (!lamina::core::ParseViewOptions(size, options->camera, overlay, &view, error)) return false;
+  options->width = view.width;
+  options->height = view.height;
+  options->overlays = view.overlays;
   return true;
 }
 

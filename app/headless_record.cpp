@@ -125,7 +125,7 @@ class FrameSink {
 int RunRecord(const RecordOptions& options) {
   ViewOptions view;
   std::string error;
-  if (!ParseViewOptions(options.size, options.camera, options.overlay, &view, &error)) {
+  if (!core::ParseViewOptions(options.size, options.camera, options.overlay, &view, &error)) {
     std::cerr << "lamina-headless record: " << error << "\n";
     return 2;
   }

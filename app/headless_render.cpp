@@ -6,7 +6,6 @@
 
 #include "core/io/world_file.h"
 #include "core/render/contact_markers.h"
-#include "core/render/image_size.h"
 #include "core/render/scene_camera.h"
 #include "core/render/scene_extract.h"
 #include "core/sim/simulator.h"
@@ -14,28 +13,6 @@
 #include "ui/render/renderer.h"
 
 namespace lamina::app {
-
-namespace {}  // namespace
-
-bool ParseViewOptions(const std::string& size, const std::string& camera,
-                      const std::string& overlay, ViewOptions* options, std::string* error) {
-  if (!lamina::core::ParseImageSize(size, &options->width, &options->height)) {
-    *error = "--size expects WIDTHxHEIGHT with 1..16384 pixels per side (e.g. 1280x720), got '" +
-             size + "'";
-    return false;
-  }
-  std::string detail;
-  if (!core::ValidCameraSpec(camera, &detail)) {
-    *error = "--" + detail;  // "camera: ..."
-    return false;
-  }
-  options->camera = camera;
-  if (!core::ParseOverlayList(overlay, &options->overlays, &detail)) {
-    *error = "--overlay: " + detail;
-    return false;
-  }
-  return true;
-}
 
 bool LoadWorldForRendering(const std::string& path, core::WorldDesc* world) {
   core::Diagnostics diagnostics;
@@ -82,7 +59,7 @@ std::vector<std::uint8_t> OffscreenView::Render(const core::WorldDesc& world,
                 : std::vector<core::ContactMarker>();
   core::ExtractScene(world, poses, s.options.overlays, contacts, &s.meshes, &s.scene);
   if (!s.camera_chosen) {
-    std::string ignored;  // the spec was validated by ParseViewOptions
+    std::string ignored;  // the spec was validated by core::ParseViewOptions
     core::CameraForScene(s.options.camera, s.scene,
                          static_cast<double>(s.options.width) / s.options.height, &s.camera,
                          &ignored);

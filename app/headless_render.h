@@ -12,7 +12,7 @@
 
 #include "core/model/world_desc.h"
 #include "core/render/camera.h"
-#include "core/render/overlay_options.h"
+#include "core/render/view_options.h"
 #include "core/render/world_poses.h"
 
 namespace lamina::core {
@@ -21,18 +21,10 @@ class Simulator;
 
 namespace lamina::app {
 
-struct ViewOptions {
-  int width = 1280;
-  int height = 720;
-  std::string camera;  ///< "world", "bodies" or a camera description
-  core::OverlayOptions overlays;
+/// The picture options with the multisampling of the off-screen context.
+struct ViewOptions : core::ViewOptions {
   int samples = 4;  ///< multisampling (1 = off; llvmpipe offers 4)
 };
-
-/// Parses --size (WxH), --camera and --overlay into `options`; false with a message that names
-/// the offending option.
-bool ParseViewOptions(const std::string& size, const std::string& camera,
-                      const std::string& overlay, ViewOptions* options, std::string* error);
 
 /// Loads `path`, printing every diagnostic to stderr; false on any error.
 bool LoadWorldForRendering(const std::string& path, core::WorldDesc* world);

@@ -33,7 +33,7 @@ int RunShot(const ShotOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   ViewOptions view;
   std::string error;
-  if (!ParseViewOptions(options.size, options.camera, options.overlay, &view, &error)) {
+  if (!core::ParseViewOptions(options.size, options.camera, options.overlay, &view, &error)) {
     std::cerr << "lamina-headless shot: " << error << "\n";
     return 2;
   }

@@ -22,13 +22,13 @@ namespace lamina::python {
 
 namespace {
 
-// the options as ParseViewOptions checks them, its messages without the command line's "--"
+// the options as core::ParseViewOptions checks them, named as keyword arguments
 app::ViewOptions Options(const std::string& size, const std::string& camera,
                          const std::string& overlay, int samples) {
   app::ViewOptions options;
   std::string error;
-  if (!app::ParseViewOptions(size, camera, overlay, &options, &error)) {
-    throw py::value_error(error.rfind("--", 0) == 0 ? error.substr(2) : error);
+  if (!core::ParseViewOptions(size, camera, overlay, &options, &error, "")) {
+    throw py::value_error(error);
   }
   if (samples != 1 && samples != 2 && samples != 4) {
     throw py::value_error("samples must be 1, 2 or 4, got " + std::to_string(samples));
