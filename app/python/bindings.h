@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -45,8 +46,12 @@ struct PySim {
   std::unique_ptr<core::Simulator> owned;
   core::Simulator* sim = nullptr;
   core::StepStatus status = core::StepStatus::kNormal;  ///< of the last simulate call
-  /// The simulator; RuntimeError for a batch run's simulator after its run ended.
-  core::Simulator& get() const;
+  /// The simulator; RuntimeError for a batch run's simulator after its run ended. Inline: the
+  /// other extension modules (_render, _window) take Simulators too.
+  core::Simulator& get() const {
+    if (sim == nullptr) throw std::runtime_error("the simulator of a batch run that has ended");
+    return *sim;
+  }
 };
 struct PyBody {
   std::shared_ptr<PySim> sim;

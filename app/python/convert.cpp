@@ -26,11 +26,6 @@ void FlattenInto(py::handle value, std::vector<double>* out) {
 
 }  // namespace
 
-core::Simulator& PySim::get() const {
-  if (sim == nullptr) throw std::runtime_error("the simulator of a batch run that has ended");
-  return *sim;
-}
-
 std::vector<double> Flatten(py::handle value) {
   std::vector<double> out;
   FlattenInto(value, &out);

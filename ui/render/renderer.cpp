@@ -18,6 +18,13 @@
 
 namespace lamina::ui {
 
+bool IsSoftwareRenderer(const std::string& gl_renderer) {
+  for (const char* name : {"llvmpipe", "softpipe", "swrast"}) {
+    if (gl_renderer.find(name) != std::string::npos) return true;
+  }
+  return false;
+}
+
 namespace {
 
 // towards the sun (world, unit): about 42 degrees high, from the default camera's left

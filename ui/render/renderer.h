@@ -25,6 +25,13 @@ struct RenderSettings {
   double checker_size = 0.0;  ///< terrain checker square (m); 0 = chosen from the scene size
 };
 
+/// Mesa's software rasterizers (llvmpipe, softpipe, swrast), where multisampling costs more than
+/// the rest of a frame.
+bool IsSoftwareRenderer(const std::string& gl_renderer);
+/// The shadow map on a software rasterizer: a quarter of the 2048² texels (2–3 ms a frame less
+/// for the ATHLETE world at 1280x720 on llvmpipe; docs/rendering.md).
+inline constexpr int kSoftwareShadowMapSize = 1024;
+
 class Renderer {
  public:
   Renderer();

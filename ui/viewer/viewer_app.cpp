@@ -39,21 +39,10 @@ namespace lamina::ui {
 
 namespace {
 
-// Mesa's software rasterizers, where multisampling costs more than the rest of a frame
-bool IsSoftwareRenderer(const std::string& gl_renderer) {
-  for (const char* name : {"llvmpipe", "softpipe", "swrast"}) {
-    if (gl_renderer.find(name) != std::string::npos) return true;
-  }
-  return false;
-}
-
 using Clock = std::chrono::steady_clock;
 
 constexpr int kBenchWarmupFrames = 5;
 constexpr double kFrameStepSeconds = 1.0 / 60.0;
-// the shadow map on a software rasterizer: a quarter of the 2048² texels (2–3 ms a frame less
-// for the ATHLETE world at 1280x720 on llvmpipe; docs/rendering.md)
-constexpr int kSoftwareShadowMapSize = 1024;
 
 double MillisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
