@@ -75,8 +75,19 @@ struct Batch {
   int threads = 0;
 };
 
+// a configuration of `setup`: numbers, or "args.NAME" for a named argument's value
+core::ValueSource SetupValue(py::handle q) {
+  if (!py::isinstance<py::str>(q)) return {Flatten(q), ""};
+  const std::string text = q.cast<std::string>();
+  if (text.rfind("args.", 0) != 0 || text.size() == 5) {
+    throw py::value_error("setup: '" + text + "' is neither numbers nor \"args.NAME\"");
+  }
+  return {{}, text.substr(5)};
+}
+
 // `setup`: Lamina's robot commands sent before simInit (docs/python.md): dicts with "robot" and
-// "milestones" (a list of configurations) or "pid" (a configuration).
+// "milestones" (a list of configurations) or "pid" (a configuration); a configuration may be
+// "args.NAME", a named argument of the run.
 std::vector<core::RobotCommand> SetupCommands(py::handle setup) {
   std::vector<core::RobotCommand> commands;
   if (setup.is_none()) return commands;
@@ -86,10 +97,10 @@ std::vector<core::RobotCommand> SetupCommands(py::handle setup) {
     command.robot = d.contains("robot") ? d["robot"].cast<int>() : 0;
     if (d.contains("milestones")) {
       command.kind = core::RobotCommand::Kind::kMilestones;
-      for (py::handle q : d["milestones"]) command.values.push_back({Flatten(q), ""});
+      for (py::handle q : d["milestones"]) command.values.push_back(SetupValue(q));
     } else if (d.contains("pid")) {
       command.kind = core::RobotCommand::Kind::kPid;
-      command.values.push_back({Flatten(d["pid"]), ""});
+      command.values.push_back(SetupValue(d["pid"]));
     } else {
       throw py::value_error("setup: each entry needs 'milestones' or 'pid'");
     }
@@ -131,24 +142,58 @@ Batch MakeBatch(const PyWorld& world, double duration, py::handle return_items, 
   return batch;
 }
 
+// a value as Klamp't hands it to Python: a number, or a list
+py::object ValueToPy(const std::vector<double>& value) {
+  return value.size() == 1 ? py::object(py::float_(value[0])) : py::object(ToList(value));
+}
+
+// every "args.NAME" of the set-up names one of the arguments `names`
+void CheckSetupArgs(const Batch& batch, const std::vector<std::string>& names) {
+  for (const core::RobotCommand& command : batch.plan.commands) {
+    for (const core::ValueSource& source : command.values) {
+      bool found = source.arg.empty();
+      for (const std::string& name : names) found |= name == source.arg;
+      if (!found) throw py::value_error("setup: args." + source.arg + ": no such argument");
+    }
+  }
+}
+
+// initialCondition['args']: Klamp't's tuple for the callbacks, or Lamina's dict {name: value}
+// (named arguments, usable in `setup` as "args.NAME" and given to the callbacks in order)
+void ToArgs(py::handle value, core::InitialCondition* initial, py::tuple* args) {
+  if (!py::isinstance<py::dict>(value)) {
+    *args = py::tuple(py::reinterpret_borrow<py::object>(value));
+    return;
+  }
+  py::list positional;
+  for (auto item : py::reinterpret_borrow<py::dict>(value)) {
+    initial->args.push_back({item.first.cast<std::string>(), Flatten(item.second)});
+    positional.append(ValueToPy(initial->args.back().value));
+  }
+  *args = py::tuple(positional);
+}
+
 // a dict {path: value} (Klamp't's initialCondition; 'args' apart) as core initial conditions,
 // every path checked on the description first
-core::InitialCondition ToInitial(const core::WorldDesc& world, py::handle condition,
-                                 py::tuple* args) {
+core::InitialCondition ToInitial(const Batch& batch, py::handle condition, py::tuple* args) {
   core::InitialCondition initial;
-  if (condition.is_none()) return initial;
-  for (auto item : py::reinterpret_borrow<py::dict>(condition)) {
-    const std::string path = item.first.cast<std::string>();
-    if (path == "args") {
-      if (args != nullptr) *args = py::tuple(py::reinterpret_borrow<py::object>(item.second));
-      continue;
+  if (!condition.is_none()) {
+    for (auto item : py::reinterpret_borrow<py::dict>(condition)) {
+      const std::string path = item.first.cast<std::string>();
+      if (path == "args") {
+        ToArgs(item.second, &initial, args);
+        continue;
+      }
+      std::string error;
+      if (!core::ResolveAccessPath(*batch.world, path, AccessContext::kDescription, &error)) {
+        throw py::value_error("initialCondition: " + error);
+      }
+      initial.values.push_back({path, Flatten(item.second)});
     }
-    std::string error;
-    if (!core::ResolveAccessPath(world, path, AccessContext::kDescription, &error)) {
-      throw py::value_error("initialCondition: " + error);
-    }
-    initial.values.push_back({path, Flatten(item.second)});
   }
+  std::vector<std::string> names;
+  for (const core::NamedValue& a : initial.args) names.push_back(a.name);
+  CheckSetupArgs(batch, names);
   return initial;
 }
 
@@ -213,7 +258,7 @@ py::dict DoSim(const PyWorld& world, double duration, py::handle initial_conditi
   const Batch batch =
       MakeBatch(world, duration, return_items, trace, sim_dt, init, step, term, setup, 1);
   py::tuple args;
-  const core::InitialCondition initial = ToInitial(*world.desc, initial_condition, &args);
+  const core::InitialCondition initial = ToInitial(batch, initial_condition, &args);
   if (batch.callbacks) return ResultToPy(batch, RunSerial(batch, initial, args, 0));
   core::RunResult result;
   {
@@ -232,7 +277,7 @@ py::list BatchSim(const PyWorld& world, double duration, py::handle initial_cond
   std::vector<py::tuple> args;
   for (py::handle condition : initial_conditions) {
     args.emplace_back();
-    initial.push_back(ToInitial(*world.desc, condition, &args.back()));
+    initial.push_back(ToInitial(batch, condition, &args.back()));
   }
   std::vector<core::RunResult> results;
   if (batch.callbacks) {
@@ -248,72 +293,136 @@ py::list BatchSim(const PyWorld& world, double duration, py::handle initial_cond
   return out;
 }
 
+// monteCarloSim's samplers by kind: data samplers (lamina.sim.batch) for the C++ batch, Python
+// callables, and the arguments — Klamp't's 'args' callable giving a tuple, or Lamina's dict
+// {name: sampler} of named arguments (drawn after the initial conditions, as in a JSON spec)
+struct PySamplers {
+  std::vector<std::pair<std::string, py::object>> initial, named_args;
+  py::object klampt_args = py::none();
+  core::MonteCarloSamplers data;  ///< every data sampler, in drawing order
+  bool python = false;            ///< some sampler is a Python callable
+};
+
+// `sampler` checked: a data sampler (added to `data` as `name`) or a callable (sets `python`);
+// messages name it `label`
+void Classify(const std::string& label, const std::string& name, const py::object& sampler,
+              int runs, std::vector<core::NamedSampler>* data, bool* python) {
+  if (py::isinstance<core::Sampler>(sampler)) {
+    const core::Sampler& s = sampler.cast<const core::Sampler&>();
+    if (auto problem = s.Check(runs)) throw py::value_error(label + ": " + *problem);
+    data->push_back({name, s});
+  } else if (PyCallable_Check(sampler.ptr())) {
+    *python = true;
+  } else {
+    throw py::type_error(label + ": a sampler is a lamina.sim.batch sampler or a callable");
+  }
+}
+
+PySamplers ReadSamplers(const core::WorldDesc& world, py::handle samplers, int runs) {
+  PySamplers out;
+  for (auto item : py::reinterpret_borrow<py::dict>(samplers)) {
+    const std::string path = item.first.cast<std::string>();
+    py::object sampler = py::reinterpret_borrow<py::object>(item.second);
+    if (path == "args" && py::isinstance<py::dict>(sampler)) {
+      for (auto arg : py::reinterpret_borrow<py::dict>(sampler)) {
+        const std::string name = arg.first.cast<std::string>();
+        py::object s = py::reinterpret_borrow<py::object>(arg.second);
+        Classify("args." + name, name, s, runs, &out.data.args, &out.python);
+        out.named_args.emplace_back(name, s);
+      }
+      continue;
+    }
+    if (path == "args") {
+      if (!PyCallable_Check(sampler.ptr())) {
+        throw py::type_error("args: a callable giving a tuple, or a dict {name: sampler}");
+      }
+      out.klampt_args = sampler;
+      out.python = true;
+      continue;
+    }
+    std::string error;
+    if (!core::ResolveAccessPath(world, path, AccessContext::kDescription, &error)) {
+      throw py::value_error("initialConditionSamplers: " + error);
+    }
+    Classify(path, path, sampler, runs, &out.data.initial, &out.python);
+    out.initial.emplace_back(path, sampler);
+  }
+  return out;
+}
+
+std::vector<double> Draw(const py::object& sampler, core::RunRandom* random, int index) {
+  if (py::isinstance<core::Sampler>(sampler)) {
+    return sampler.cast<const core::Sampler&>().Draw(random, index);
+  }
+  return Flatten(sampler());
+}
+
+// run i of a serial batch: drawn as the C++ batch draws (initial conditions, then named args,
+// from RunRandom(seed, i)), Python samplers called in their place
+core::RunResult RunSampled(const Batch& batch, const PySamplers& samplers, std::uint64_t seed,
+                           int i, py::dict* condition) {
+  core::RunRandom random(seed, static_cast<std::uint64_t>(i));
+  core::InitialCondition initial;
+  for (const auto& [path, sampler] : samplers.initial) {
+    initial.values.push_back({path, Draw(sampler, &random, i)});
+    (*condition)[py::str(path)] = ValueToPy(initial.values.back().value);
+  }
+  py::list positional;
+  py::dict named;
+  for (const auto& [name, sampler] : samplers.named_args) {
+    initial.args.push_back({name, Draw(sampler, &random, i)});
+    named[py::str(name)] = ValueToPy(initial.args.back().value);
+    positional.append(named[py::str(name)]);
+  }
+  py::tuple args(positional);
+  if (!samplers.klampt_args.is_none()) args = py::tuple(samplers.klampt_args());
+  if (!samplers.named_args.empty()) (*condition)["args"] = named;
+  if (!samplers.klampt_args.is_none()) (*condition)["args"] = args;
+  return RunSerial(batch, initial, args, i);
+}
+
+// a C++ run's sampled values as Klamp't's initial condition (named args under 'args')
+py::dict SampledToPy(const core::MonteCarloSamplers& data, const core::RunResult& result) {
+  py::dict condition, named;
+  for (size_t k = 0; k < result.sampled.size(); ++k) {
+    const bool is_arg = k >= data.initial.size();
+    const std::string& name =
+        is_arg ? data.args[k - data.initial.size()].name : data.initial[k].name;
+    (is_arg ? named : condition)[py::str(name)] = ValueToPy(result.sampled[k]);
+  }
+  if (!data.args.empty()) condition["args"] = named;
+  return condition;
+}
+
 py::list MonteCarloSim(const PyWorld& world, double duration, py::handle samplers, int runs,
                        py::handle return_items, py::handle trace, double sim_dt, py::object init,
                        py::object step, py::object term, py::handle setup, std::uint64_t seed,
                        int threads) {
   const Batch batch =
       MakeBatch(world, duration, return_items, trace, sim_dt, init, step, term, setup, threads);
-  core::MonteCarloSamplers data;
-  std::vector<std::pair<std::string, py::object>> callables;  // in order, with data's
-  bool python_samplers = false;
-  for (auto item : py::reinterpret_borrow<py::dict>(samplers)) {
-    const std::string path = item.first.cast<std::string>();
-    std::string error;
-    if (!core::ResolveAccessPath(*world.desc, path, AccessContext::kDescription, &error)) {
-      throw py::value_error("initialConditionSamplers: " + error);
-    }
-    py::object sampler = py::reinterpret_borrow<py::object>(item.second);
-    if (py::isinstance<core::Sampler>(sampler)) {
-      const core::Sampler& s = sampler.cast<const core::Sampler&>();
-      if (auto problem = s.Check(runs)) throw py::value_error(path + ": " + *problem);
-      data.initial.push_back({path, s});
-    } else if (PyCallable_Check(sampler.ptr())) {
-      python_samplers = true;
-    } else {
-      throw py::type_error(path + ": a sampler is a lamina.sim.batch sampler or a callable");
-    }
-    callables.emplace_back(path, sampler);
-  }
-  std::vector<core::RunResult> results;
-  std::vector<py::dict> conditions;
-  if (batch.callbacks || python_samplers) {
-    for (int i = 0; i < runs; ++i) {
-      core::RunRandom random(seed, static_cast<std::uint64_t>(i));
-      core::InitialCondition initial;
-      py::dict condition;
-      for (const auto& [path, sampler] : callables) {
-        std::vector<double> value = py::isinstance<core::Sampler>(sampler)
-                                        ? sampler.cast<const core::Sampler&>().Draw(&random, i)
-                                        : Flatten(sampler());
-        condition[py::str(path)] =
-            value.size() == 1 ? py::object(py::float_(value[0])) : py::object(ToList(value));
-        initial.values.push_back({path, std::move(value)});
-      }
-      core::RunResult result = RunSerial(batch, initial, py::tuple(), i);
-      results.push_back(std::move(result));
-      conditions.push_back(condition);
-    }
-  } else {
-    std::vector<int> indices(static_cast<size_t>(runs));
-    for (int i = 0; i < runs; ++i) indices[static_cast<size_t>(i)] = i;
-    {
-      py::gil_scoped_release release;
-      results = core::MonteCarloSim(*batch.world, batch.plan, data, seed, indices, {threads, {}});
-    }
-    for (const core::RunResult& result : results) {
-      py::dict condition;
-      for (size_t k = 0; k < data.initial.size() && k < result.sampled.size(); ++k) {
-        const std::vector<double>& value = result.sampled[k];
-        condition[py::str(data.initial[k].name)] =
-            value.size() == 1 ? py::object(py::float_(value[0])) : py::object(ToList(value));
-      }
-      conditions.push_back(condition);
-    }
-  }
+  const PySamplers sampled = ReadSamplers(*world.desc, samplers, runs);
+  std::vector<std::string> names;
+  for (const auto& arg : sampled.named_args) names.push_back(arg.first);
+  CheckSetupArgs(batch, names);
   py::list out;
-  for (size_t i = 0; i < results.size(); ++i) {
-    out.append(py::make_tuple(conditions[i], ResultToPy(batch, results[i])));
+  if (batch.callbacks || sampled.python) {
+    for (int i = 0; i < runs; ++i) {
+      py::dict condition;
+      const core::RunResult result = RunSampled(batch, sampled, seed, i, &condition);
+      out.append(py::make_tuple(condition, ResultToPy(batch, result)));
+    }
+    return out;
+  }
+  std::vector<int> indices(static_cast<size_t>(runs));
+  for (int i = 0; i < runs; ++i) indices[static_cast<size_t>(i)] = i;
+  std::vector<core::RunResult> results;
+  {
+    py::gil_scoped_release release;
+    results =
+        core::MonteCarloSim(*batch.world, batch.plan, sampled.data, seed, indices, {threads, {}});
+  }
+  for (const core::RunResult& result : results) {
+    out.append(py::make_tuple(SampledToPy(sampled.data, result), ResultToPy(batch, result)));
   }
   return out;
 }

@@ -57,6 +57,57 @@ def test_seed_batch_matches_the_cpp_batch():
         assert 0.03 < r["robots[0].actualConfig[0]"] < 0.16
 
 
+def test_batch_with_sampled_args_matches_the_cpp_batch_threaded_and_serial():
+    # worlds/batch/spin_to_target.json: the start and the target both sampled (seed 2), the
+    # target a named argument used by the set-up's milestone
+    world = spin_world()
+    items = ITEMS[:3]
+    samplers = {"robots[0].config[0]": batch.uniform(-math.pi, math.pi),
+                "args": {"target": batch.uniform(-0.5, 0.5)}}
+    setup = [{"robot": 0, "milestones": ["args.target"]}]
+    threaded = batch.monteCarloSim(world, 5.0, samplers, 100, items, setup=setup, seed=2)
+    targets = []
+    serial = batch.monteCarloSim(world, 5.0, samplers, 100, items, setup=setup, seed=2,
+                                 simInit=lambda sim, target: targets.append(target))
+    spec = batch.runSpec(str(WORLDS / "batch" / "spin_to_target.json"))
+    assert len(threaded) == len(serial) == len(spec) == 100
+    for (condition, result), (condition2, result2), expected in zip(threaded, serial, spec):
+        start, target = expected["sampled"][0][0], expected["sampled"][1][0]
+        assert condition == condition2 == {"robots[0].config[0]": start, "args": {"target": target}}
+        assert [result[i] for i in items] == [v[0] for v in expected["items"]]  # exactly
+        assert [result2[i] for i in items] == [result[i] for i in items]
+        # docs/batch.md: a negative target is clamped to qMin = 0 plus the ramp planner's margin of
+        # 1e-7 of the joint range (2 pi): 6.3e-7 rad
+        assert result["controllers[0].commandedConfig[0]"] == pytest.approx(max(target, 6.28319e-7),
+                                                                           abs=1e-12)
+    assert targets == [c["args"]["target"] for c, _ in threaded]  # callbacks get the args
+
+
+def test_klampt_args_reach_the_callbacks_and_unknown_args_are_refused():
+    world = spin_world()
+    seen = []
+
+    def init(sim, target, label):
+        seen.append(label)
+        sim.controller(0).setMilestone([target])
+
+    runs = batch.monteCarloSim(world, 5.0, {"args": lambda: (0.3, "klampt")}, 2,
+                               ["controllers[0].commandedConfig[0]"], simInit=init)
+    assert seen == ["klampt", "klampt"]
+    assert [c["args"] for c, _ in runs] == [(0.3, "klampt")] * 2
+    assert runs[0][1]["controllers[0].commandedConfig[0]"] == pytest.approx(0.3, abs=1e-12)
+    named = batch.doSim(world, 5.0, {"args": {"target": 0.2}},
+                        ["controllers[0].commandedConfig[0]"],
+                        setup=[{"robot": 0, "milestones": ["args.target"]}])
+    assert named["controllers[0].commandedConfig[0]"] == pytest.approx(0.2, abs=1e-12)
+    with pytest.raises(ValueError, match="args.goal: no such argument"):
+        batch.doSim(world, 1.0, {"args": {"target": 0.2}}, None,
+                    setup=[{"robot": 0, "pid": "args.goal"}])
+    with pytest.raises(ValueError, match="args.goal: no such argument"):
+        batch.monteCarloSim(world, 1.0, {"args": {"target": batch.uniform(0, 1)}}, 2,
+                            setup=[{"robot": 0, "milestones": ["args.goal"]}])
+
+
 def test_python_callbacks_run_serially_with_the_same_physics():
     world = spin_world()
     seen = []
