@@ -2,6 +2,7 @@
 # The two commands of the README:
 #   make run   installs missing Debian packages, builds, and opens the editor (WORLD=... optional)
 #   make test  installs missing Debian packages, builds, and runs the whole CTest suite
+#   make install PREFIX=/usr/local installs the programs, the worlds and the Python package
 #   make bench builds the benchmarks in BENCH_BUILD (optimized, no editor) and prints medians
 BUILD ?= build
 JOBS ?= $(shell nproc)
@@ -11,7 +12,9 @@ WORLD ?=
 BENCH_BUILD ?= build-bench
 BENCH_FLAGS ?= --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
-.PHONY: all deps configure build run test test-asan bench format format-check clean
+PREFIX ?= /usr/local
+
+.PHONY: all deps configure build run test test-asan install bench format format-check clean
 
 all: build
 
@@ -29,6 +32,13 @@ run: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) $(CTEST_FLAGS)
+
+# bin/lamina, bin/lamina-headless, share/lamina/worlds and the Python package lamina in
+# lib/pythonX.Y/dist-packages under PREFIX (through sudo when PREFIX is not writable)
+install: build
+	@if mkdir -p $(PREFIX) 2>/dev/null && [ -w $(PREFIX) ]; then \
+	  cmake --install $(BUILD) --prefix $(PREFIX); \
+	else sudo cmake --install $(BUILD) --prefix $(PREFIX); fi
 
 # the core and its tests under AddressSanitizer + UndefinedBehaviorSanitizer; the long physics
 # runs (label "physics") and the benchmark smoke run (label "bench") stay in the optimized

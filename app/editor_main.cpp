@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // lamina: the desktop viewer/editor. Argument parsing and wiring only; the window, the loop and
 // the panels live in ui/viewer and ui/panels.
+#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -22,13 +23,26 @@ bool CheckViewOptions(const std::string& size, const std::string& overlay,
   return true;
 }
 
+// the worlds folder: <prefix>/share/lamina/worlds beside an installed `lamina` (make install),
+// else the source tree's
+std::string WorldsDir() {
+  std::error_code error;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    const std::filesystem::path installed =
+        exe.parent_path().parent_path() / "share" / "lamina" / "worlds";
+    if (std::filesystem::is_directory(installed, error)) return installed.string();
+  }
+  return LAMINA_WORLDS_DIR;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"lamina: the Lamina world viewer and editor"};
   lamina::ui::ViewerOptions options;
-  options.world_path = LAMINA_DEFAULT_WORLD;
-  options.worlds_dir = LAMINA_WORLDS_DIR;
+  options.worlds_dir = WorldsDir();
+  options.world_path = options.worlds_dir + "/" + LAMINA_DEFAULT_WORLD;
   std::string size = "1280x720", overlay;
   bool no_ui = false;
   app.add_option("world", options.world_path, "world file to open")->capture_default_str();
