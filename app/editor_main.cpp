@@ -46,6 +46,9 @@ int main(int argc, char** argv) {
   std::string size = "1280x720", overlay;
   bool no_ui = false;
   app.add_option("world", options.world_path, "world file to open")->capture_default_str();
+  app.add_option("--worlds", options.worlds_dir, "folder the Open world panel lists")
+      ->check(CLI::ExistingDirectory)
+      ->capture_default_str();
   app.add_option("--frames", options.frames, "quit after this many frames (0 = run until closed)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--screenshot", options.screenshot,

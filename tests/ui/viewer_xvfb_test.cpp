@@ -197,7 +197,9 @@ void ExpectPanelsMatchGolden(const std::string& name, const std::string& world_f
   // a second), so that a slow start still ends with it in the corner
   const std::string pointer =
       "(i=0; while [ $i -lt 30 ]; do sleep 0.1; xdotool mousemove 1279 0; i=$((i+1)); done) & ";
-  const std::string command = pointer + kBin + "/lamina " + world +
+  // the Open world panel lists the staged editor worlds (not worlds/, which grows)
+  const std::string worlds = std::filesystem::path(world).parent_path().string();
+  const std::string command = pointer + kBin + "/lamina " + world + " --worlds " + worlds +
                               " --lockstep --size 1280x720 --frames 120 " + options +
                               " --screenshot " + png;
   ASSERT_EQ(RunUnderXvfb(command, name + ".log"), 0) << command << "\n" << ReadText(name + ".log");
