@@ -3,6 +3,9 @@
 # PYTHONPATH=build/python; CTest sets both).
 import os
 import pathlib
+import shutil
+import subprocess
+import time
 
 import pytest
 
@@ -34,3 +37,33 @@ def resting_block(tmp_path):
     """The floor and one block resting on it (on the top of its padding)."""
     import lamina
     return lamina.WorldModel(blocks_world(tmp_path / "block.xml", [(0, 0, 0.0525)]))
+
+
+needs_x = pytest.mark.skipif(not (shutil.which("Xvfb") and shutil.which("xdotool")),
+                             reason="needs Xvfb and xdotool")
+
+
+@pytest.fixture
+def display(monkeypatch):
+    """An Xvfb server of this test's own; DISPLAY points at it."""
+    read, write = os.pipe()
+    server = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", "1024x768x24"],
+                              pass_fds=(write,), stderr=subprocess.DEVNULL)
+    os.close(write)
+    with os.fdopen(read) as numbers:
+        number = numbers.readline().strip()
+    assert number, "Xvfb did not start"
+    monkeypatch.setenv("DISPLAY", ":" + number)
+    yield ":" + number
+    server.terminate()
+    server.wait()
+
+
+def press_key(window_name, key):
+    """Presses `key` in the window named `window_name` through xdotool (real X input), held
+    across frames as a hand would (ImGui samples keys once per frame)."""
+    window = subprocess.run(["xdotool", "search", "--sync", "--name", window_name],
+                            capture_output=True, text=True, timeout=10).stdout.split()[0]
+    subprocess.run(["xdotool", "windowfocus", "--sync", window, "keydown", key], timeout=10)
+    time.sleep(0.2)
+    subprocess.run(["xdotool", "keyup", key], timeout=10)

@@ -38,6 +38,11 @@ def test_the_installed_package_imports_and_simulates_an_installed_world(prefix):
     assert float(out[2]) == pytest.approx(0.05)
     for module in ("_lamina", "_render", "_window"):
         assert list((site_packages(prefix) / "lamina").glob(module + ".*.so")), module
+    # an installed example runs against the installed worlds
+    example = prefix / "share" / "lamina" / "examples" / "python" / "kinematic_push.py"
+    out = subprocess.run([sys.executable, str(example)], env=env, check=True,
+                         capture_output=True, text=True).stdout
+    assert "pusher x: 0.6000 m" in out
 
 
 def test_the_installed_programs_run_on_the_installed_worlds(prefix):

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: MIT
 # lamina.model.trajectory: Klamp't's Trajectory and RobotTrajectory (linear milestones, .path
-# files through the core), and the seed's streaming example: ATHLETE following athlete_flex.path
-# through setPIDCommand from t = 2 s.
+# files through the core). The seed's streaming example (ATHLETE following athlete_flex.path
+# through setPIDCommand from t = 2 s) is docs/examples/python/stream_path.py, run by
+# test_examples.py.
 import pytest
 
 import lamina
@@ -65,33 +66,3 @@ def test_robot_trajectory_interpolates_by_the_robots_joints():
     assert robot.interpolateDeriv(a, b)[7] == pytest.approx(0.4, abs=1e-12)
     with pytest.raises(ValueError, match="42 numbers"):
         robot.interpolate(a, [0.0], 0.5)
-
-
-def test_athlete_tracks_the_flex_path_streamed_from_two_seconds():
-    world = lamina.WorldModel(str(WORLDS / "klampt" / "athlete_fractal_1.xml"))
-    sim = lamina.Simulator(world)  # the exact solver (QuickStep leaves 0.27 rad on a loaded knee)
-    traj = RobotTrajectory(world.robot(0))
-    traj.load(FLEX)
-    c = sim.controller(0)
-    sim.simulate(2.0)  # standing on the terrain
-    dt, start, hold = 0.01, sim.getTime(), 1.5
-    moving, held = [], []
-    while sim.getTime() < start + traj.endTime() + hold:
-        t = sim.getTime() - start
-        c.setPIDCommand(traj.eval(t), traj.deriv(t))
-        sim.simulate(dt)
-        assert sim.getStatus() < 3, sim.getStatusString()
-        # the driven joints (links 6..41); the floating base follows the terrain
-        want = traj.eval(t + dt)
-        error = [abs(x - y) for x, y in zip(sim.getActualConfig(0)[6:], want[6:])]
-        (moving if t + dt <= traj.endTime() else held).append(error)
-    mean_moving = sum(sum(e) / len(e) for e in moving) / len(moving)
-    worst_moving = max(max(e) for e in moving)
-    settled = held[-50:]  # the last 0.5 s
-    print(f"flex path from t=2 s: moving mean {mean_moving:.4f} rad, worst {worst_moving:.4f} "
-          f"rad; held worst {max(max(e) for e in settled):.4f} rad")
-    # the same bars as tests/physics/robot_worlds_test.cpp (exact solver, streamed from t = 0)
-    assert mean_moving < 0.15
-    assert worst_moving < 0.75
-    assert max(sum(e) / len(e) for e in settled) < 0.05
-    assert max(max(e) for e in settled) < 0.25

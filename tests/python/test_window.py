@@ -2,9 +2,6 @@
 # lamina.vis.run: Lamina's window on a simulation Python drives, in an Xvfb server of the test's
 # own, with the real `s` key pressed through xdotool. Skipped when Xvfb or xdotool is missing
 # (cmake/setup-deps.sh installs both).
-import os
-import shutil
-import subprocess
 import threading
 import time
 
@@ -14,27 +11,9 @@ from PIL import Image
 
 import lamina
 from lamina import vis
-from conftest import blocks_world
+from conftest import blocks_world, needs_x, press_key
 
 CAMERA = "target=0,0,0.3;yaw=-90;pitch=10;dist=1.5"
-needs_x = pytest.mark.skipif(not (shutil.which("Xvfb") and shutil.which("xdotool")),
-                             reason="needs Xvfb and xdotool")
-
-
-@pytest.fixture
-def display(monkeypatch):
-    """An Xvfb server of this test's own; DISPLAY points at it."""
-    read, write = os.pipe()
-    server = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", "1024x768x24"],
-                              pass_fds=(write,), stderr=subprocess.DEVNULL)
-    os.close(write)
-    with os.fdopen(read) as numbers:
-        number = numbers.readline().strip()
-    assert number, "Xvfb did not start"
-    monkeypatch.setenv("DISPLAY", ":" + number)
-    yield ":" + number
-    server.terminate()
-    server.wait()
 
 
 def two_blocks(tmp_path):
@@ -77,11 +56,7 @@ def test_the_s_key_starts_it_and_idle_returning_false_closes_it(tmp_path, displa
     def press_s():
         time.sleep(1.0)  # the window is up and paused: no idle calls yet
         paused_calls.append(len(calls))
-        window = subprocess.run(["xdotool", "search", "--sync", "--name", "Lamina"],
-                                capture_output=True, text=True, timeout=10).stdout.split()[0]
-        subprocess.run(["xdotool", "windowfocus", "--sync", window, "keydown", "s"], timeout=10)
-        time.sleep(0.2)  # held across frames, as a hand would (ImGui samples keys per frame)
-        subprocess.run(["xdotool", "keyup", "s"], timeout=10)
+        press_key("Lamina", "s")
 
     presser = threading.Thread(target=press_s)
     presser.start()
