@@ -14,7 +14,8 @@ BENCH_FLAGS ?= --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
 PREFIX ?= /usr/local
 
-.PHONY: all deps configure build run test test-asan install bench format format-check clean
+.PHONY: all deps configure build run test test-asan install bench bench-python format format-check \
+        clean
 
 all: build
 
@@ -56,6 +57,11 @@ bench: deps
 	  -DLAMINA_BUILD_HEADLESS=OFF -DLAMINA_BUILD_TESTS=OFF -DLAMINA_BUILD_BENCHMARKS=ON $(CMAKE_FLAGS)
 	cmake --build $(BENCH_BUILD) -j$(JOBS) --target lamina_bench
 	$(BENCH_BUILD)/bin/lamina_bench $(BENCH_FLAGS)
+
+# what calling simulate from Python costs against C++ on ATHLETE (tests/bench/python_overhead.py)
+bench-python: build
+	PYTHONPATH=$(BUILD)/python /usr/bin/python3 tests/bench/python_overhead.py
+	PYTHONPATH=$(BUILD)/python /usr/bin/python3 tests/bench/python_overhead.py --quickstep
 
 SOURCES = $(shell git ls-files '*.cpp' '*.h')
 

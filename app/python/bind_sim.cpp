@@ -99,6 +99,16 @@ void BindSim(py::module_& m) {
           },
           py::arg("t"), "Advances by t seconds (the GIL is released meanwhile).")
       .def(
+          "_simulateLoop",
+          [](PySim& s, double dt, int calls) {
+            Simulator& sim = s.get();
+            py::gil_scoped_release release;
+            for (int i = 0; i < calls; ++i) s.status = sim.Simulate(dt);
+          },
+          py::arg("t"), py::arg("calls"),
+          "simulate(t) `calls` times in a C++ loop: the baseline of the Python-overhead "
+          "benchmark (tests/bench/python_overhead.py).")
+      .def(
           "fakeSimulate", [](PySim& s, double dt) { s.get().FakeSimulate(dt); }, py::arg("t"))
       .def("getTime", [](const PySim& s) { return s.get().time(); })
       .def("reset",
