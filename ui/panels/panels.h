@@ -51,6 +51,9 @@ void DrawHelpWindow(ViewerState* state);
 void DrawDialogs(const PanelContext& context);
 /// One line at the bottom of the window: time, speed, status, frame time, last message.
 void DrawStatusLine(const PanelContext& context);
+/// Begins the borderless, translucent strip along the bottom of the window that the status line
+/// draws in (ImGui::Begin with `id`); call ImGui::End afterwards whatever it returns.
+bool BeginStatusStrip(const char* id);
 
 /// "link 'l1' of robot 'athlete' (id 5)", "object 'box' (id 1)", or "nothing".
 std::string BodyDescription(const core::WorldDesc& world, int id);

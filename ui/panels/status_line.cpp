@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: MIT
-// The status line: a borderless strip along the bottom of the window.
+// The status line: a borderless strip along the bottom of the window (also the script
+// window's, ui/viewer/script_window.cpp).
 #include <imgui.h>
 
 #include "ui/panels/panels.h"
 
 namespace lamina::ui {
 
-void DrawStatusLine(const PanelContext& context) {
-  const SessionFrame& frame = context.frame;
-  const ViewerState& state = *context.state;
+bool BeginStatusStrip(const char* id) {
   const ImGuiIO& io = ImGui::GetIO();
   const float height = ImGui::GetFrameHeight() + 4.0f;
   ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - height));
@@ -17,7 +16,13 @@ void DrawStatusLine(const PanelContext& context) {
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                                  ImGuiWindowFlags_NoSavedSettings |
                                  ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
-  if (ImGui::Begin("##status", nullptr, flags)) {
+  return ImGui::Begin(id, nullptr, flags);
+}
+
+void DrawStatusLine(const PanelContext& context) {
+  const SessionFrame& frame = context.frame;
+  const ViewerState& state = *context.state;
+  if (BeginStatusStrip("##status")) {
     ImGui::Text("%s  t = %.3f s  %.2fx real time (speed %.2fx)  %s  %.1f ms/frame%s",
                 frame.playing ? "playing" : "paused ", frame.time, frame.real_time_factor,
                 frame.speed, core::StepStatusName(frame.status), state.frame_milliseconds,

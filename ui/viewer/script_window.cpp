@@ -15,6 +15,7 @@
 #include "core/render/world_poses.h"
 #include "core/sim/simulator.h"
 #include "core/sim/step_observer.h"
+#include "ui/panels/panels.h"
 #include "ui/platform/glfw_window.h"
 #include "ui/platform/image_file.h"
 #include "ui/render/renderer.h"
@@ -79,14 +80,7 @@ void ScriptWindow::DrawView(const core::Simulator& simulator, int width, int hei
 }
 
 void ScriptWindow::DrawStatus(const core::Simulator& simulator) {
-  const ImGuiIO& io = ImGui::GetIO();
-  const float height = ImGui::GetFrameHeight() + 4.0f;
-  ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - height));
-  ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, height));
-  ImGui::SetNextWindowBgAlpha(0.6f);
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoInputs;
-  if (ImGui::Begin("##script-status", nullptr, flags)) {
+  if (BeginStatusStrip("##script-status")) {
     ImGui::Text("%s  t = %.3f s  %s   s: %s   Esc: close%s%s", running_ ? "running" : "paused",
                 simulator.time(), core::StepStatusName(simulator.statistics().worst_status),
                 running_ ? "stop" : "run", camera_error_.empty() ? "" : "   ",
