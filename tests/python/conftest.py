@@ -47,7 +47,10 @@ needs_x = pytest.mark.skipif(not (shutil.which("Xvfb") and shutil.which("xdotool
 def display(monkeypatch):
     """An Xvfb server of this test's own; DISPLAY points at it."""
     read, write = os.pipe()
-    server = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", "1024x768x24"],
+    # -noreset: the server would otherwise reset when its last client leaves, refusing the
+    # next window that opens meanwhile (a test opening two windows in a row)
+    server = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-noreset", "-screen", "0",
+                               "1024x768x24"],
                               pass_fds=(write,), stderr=subprocess.DEVNULL)
     os.close(write)
     with os.fdopen(read) as numbers:
@@ -59,11 +62,16 @@ def display(monkeypatch):
     server.wait()
 
 
-def press_key(window_name, key):
+def press_key(window_name, key, until=None, timeout=10.0):
     """Presses `key` in the window named `window_name` through xdotool (real X input), held
-    across frames as a hand would (ImGui samples keys once per frame)."""
+    across frames as a hand would (ImGui 1.86 samples keys once per frame, so a press shorter
+    than a frame is lost): 0.5 s, or until `until()` is true (at most `timeout` s)."""
     window = subprocess.run(["xdotool", "search", "--sync", "--name", window_name],
                             capture_output=True, text=True, timeout=10).stdout.split()[0]
     subprocess.run(["xdotool", "windowfocus", "--sync", window, "keydown", key], timeout=10)
-    time.sleep(0.2)
+    held = time.monotonic()
+    while time.monotonic() - held < (timeout if until else 0.5):
+        if until is not None and until():
+            break
+        time.sleep(0.02)
     subprocess.run(["xdotool", "keyup", key], timeout=10)

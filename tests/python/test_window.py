@@ -56,7 +56,7 @@ def test_the_s_key_starts_it_and_idle_returning_false_closes_it(tmp_path, displa
     def press_s():
         time.sleep(1.0)  # the window is up and paused: no idle calls yet
         paused_calls.append(len(calls))
-        press_key("Lamina", "s")
+        press_key("Lamina", "s", until=lambda: calls)
 
     presser = threading.Thread(target=press_s)
     presser.start()
