@@ -21,7 +21,7 @@ class GeomParser {
  public:
   GeomParser(const std::string& text, const std::string& file, Diagnostics& diagnostics)
       : file_(file), diagnostics_(diagnostics) {
-    for (Statement& statement : SplitStatements(text)) {
+    for (Statement& statement : SplitStatements(text, file, &diagnostics)) {
       for (Token& token : statement.tokens) tokens_.push_back(std::move(token));
     }
   }

@@ -24,7 +24,9 @@ namespace {
 class OffReader {
  public:
   OffReader(const std::string& text, const std::string& file, Diagnostics& diagnostics)
-      : statements_(SplitStatements(text)), file_(file), diagnostics_(diagnostics) {
+      : statements_(SplitStatements(text, file, &diagnostics)),
+        file_(file),
+        diagnostics_(diagnostics) {
     last_line_ = static_cast<int>(std::count(text.begin(), text.end(), '\n'));
     if (!text.empty() && text.back() != '\n') ++last_line_;
     last_line_ = std::max(last_line_, 1);

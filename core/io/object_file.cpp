@@ -67,7 +67,9 @@ class KeyValueFile {
   KeyValueFile(const std::string& text, const std::string& file,
                const std::vector<std::string>& keys, Diagnostics& diagnostics)
       : file_(file), diagnostics_(diagnostics) {
-    for (Statement& statement : SplitStatements(text)) Add(std::move(statement), keys);
+    for (Statement& statement : SplitStatements(text, file, &diagnostics)) {
+      Add(std::move(statement), keys);
+    }
   }
 
   const Statement* Find(const std::string& key) const {
@@ -176,6 +178,10 @@ std::optional<ParamValue> KeyValueFile::Param(const std::string& key, const Para
   const ParamValue value = expand ? expand(*numbers) : *numbers;
   if (ParamAccepts(spec, value, size)) return value;
   const Statement& statement = *Find(key);
+  if (const auto lenient = LenientInertia(spec, value)) {
+    diagnostics_.Warning(At(statement), "'" + key + "' " + lenient->warning);
+    return lenient->value;
+  }
   std::string text;
   for (size_t i = 1; i < statement.tokens.size(); ++i) {
     text += (i > 1 ? " " : "") + statement.tokens[i].text;

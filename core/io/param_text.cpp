@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "core/io/param_text.h"
 
+#include <cstdio>
 #include <sstream>
+
+#include <Eigen/Core>
 
 #include "core/model/surface_rows.h"
 #include "core/number_text.h"
@@ -70,6 +73,28 @@ std::string ParamWords(const ParamSpec& spec, const ParamValue& value) {
                             value[0] == static_cast<double>(static_cast<size_t>(value[0]));
   if (named_choice) return std::string(spec.choices[static_cast<size_t>(value[0])]);
   return FormatDoubles(value.data(), static_cast<int>(value.size()));
+}
+
+std::optional<LenientValue> LenientInertia(const ParamSpec& spec, const ParamValue& value) {
+  if (spec.type != ParamType::kInertia || value.size() != 9 || ParamAccepts(spec, value, 9)) {
+    return std::nullopt;
+  }
+  const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> inertia(value.data());
+  const double largest = inertia.cwiseAbs().maxCoeff();
+  const double asymmetry = (inertia - inertia.transpose()).cwiseAbs().maxCoeff();
+  if (!inertia.allFinite() || !(asymmetry <= kInertiaRoundingTolerance * largest)) {
+    return std::nullopt;
+  }
+  const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> symmetric =
+      0.5 * (inertia + inertia.transpose());
+  LenientValue lenient{ParamValue(symmetric.data(), symmetric.data() + 9), ""};
+  if (!ParamAccepts(spec, lenient.value, 9)) return std::nullopt;
+  char numbers[64];
+  std::snprintf(numbers, sizeof numbers, "%.2g (%.2g", asymmetry, asymmetry / largest);
+  lenient.warning = "is not symmetric: its off-diagonal pairs differ by up to " +
+                    std::string(numbers) +
+                    " of its largest entry, rounding in the file); (I + I^T)/2 is used";
+  return lenient;
 }
 
 std::string ParamRefusal(const ParamSpec& spec, const std::string& text) {

@@ -37,6 +37,24 @@ std::optional<ParamValue> ParamFromWords(const ParamSpec& spec,
 /// separated by single spaces; a Lamina choice with a valid index as its name.
 std::string ParamWords(const ParamSpec& spec, const ParamValue& value);
 
+/// How much a file's inertia may differ from its transpose and still be read: off-diagonal pairs
+/// within this fraction of the matrix's largest |entry| differ by the rounding of the printed
+/// digits (HRP-2's .rob: 1e-8 on entries of 1e-2, 3e-6 of the largest). The table itself allows
+/// only 1e-9 (params.cpp); more than this is a real asymmetry and stays an error.
+inline constexpr double kInertiaRoundingTolerance = 1e-4;
+
+/// A value a file spells slightly outside the table's rule that the reader takes anyway, with the
+/// warning it gives ("is not symmetric ...").
+struct LenientValue {
+  ParamValue value;
+  std::string warning;
+};
+/// For an inertia (9 numbers, row-major) that the table refuses only because it is asymmetric by
+/// rounding (kInertiaRoundingTolerance): (I + I^T) / 2, which Klamp't would use as given, and
+/// the warning. nullopt for anything else: another row, an accepted value, a real asymmetry, a
+/// matrix that is not positive semi-definite once symmetrised.
+std::optional<LenientValue> LenientInertia(const ParamSpec& spec, const ParamValue& value);
+
 /// What a reader says when the table refuses a value: "<ParamRule>, got '<text>'".
 std::string ParamRefusal(const ParamSpec& spec, const std::string& text);
 /// None when the row `key` of elements of `kind` accepts `value` (with as many components as it

@@ -224,6 +224,10 @@ void BuildMass(RobBuild& b) {
       inertia = {diagonal.x(), 0, 0, 0, diagonal.y(), 0, 0, 0, diagonal.z()};
       line = s.inertia_diag.lines[3 * i];
     }
+    if (const auto lenient = LenientInertia(*FindParam("inertia", ElementKind::kLink), inertia)) {
+      b.Warning(line, "inertia" + of_link + " " + lenient->warning);
+      inertia = lenient->value;
+    }
     if (!inertia.empty() &&
         b.CheckRow(line, "inertia" + of_link, "inertia", ElementKind::kLink, inertia)) {
       for (int k = 0; k < 9; ++k) link.inertia(k / 3, k % 3) = inertia[k];

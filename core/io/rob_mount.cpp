@@ -120,9 +120,10 @@ std::vector<PairStatement> ResolvePairs(const RobotDesc& robot,
         diagnostics.Error(where,
                           OutOfRangeMessage(keyword, first_bad ? first : second, robot.dof()));
       }
-    } else if (first == second) {
-      diagnostics.Error(where, "'" + keyword + "' pair must name two different links, got '" +
-                                   pair.first + "' and '" + pair.second + "'");
+    } else if (first == second) {  // Klamp't accepts it; a link never collides with itself
+      diagnostics.Warning(where, "'" + keyword + "' pair names link " + std::to_string(first) +
+                                     " twice ('" + pair.first + "' and '" + pair.second +
+                                     "'); ignored");
     } else {
       out->emplace_back(first, second);
     }

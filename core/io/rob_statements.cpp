@@ -439,7 +439,8 @@ void StatementReader::ReadPairs(const Statement& statement, std::vector<PairStat
 void ReadRobStatements(const std::string& text, const std::string& path, Diagnostics& diagnostics,
                        RobStatements* out) {
   StatementReader reader(text, path, diagnostics, *out);
-  for (const Statement& statement : SplitAtKeywords(SplitStatements(text), path, diagnostics)) {
+  for (const Statement& statement :
+       SplitAtKeywords(SplitStatements(text, path, &diagnostics), path, diagnostics)) {
     reader.Read(statement);
   }
 }

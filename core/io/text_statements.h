@@ -11,6 +11,8 @@
 
 namespace lamina::core {
 
+class Diagnostics;
+
 struct Token {
   std::string text;  ///< without quotes for quoted tokens
   int line = 0;      ///< 1-based
@@ -24,7 +26,10 @@ struct Statement {
   int line = 0;  ///< line of the first token
 };
 
-/// Splits `text` into non-empty statements.
-std::vector<Statement> SplitStatements(const std::string& text);
+/// Splits `text` into non-empty statements. A continuation backslash glued to the last value of
+/// a line (`39\`, which Klamp't reads as 39 and continues) is accepted with a warning at `file`
+/// and the token's line and column when `diagnostics` is given.
+std::vector<Statement> SplitStatements(const std::string& text, const std::string& file = "",
+                                       Diagnostics* diagnostics = nullptr);
 
 }  // namespace lamina::core

@@ -26,9 +26,10 @@ struct TokenCursor {
   size_t remaining() const { return tokens.size() - next; }
 };
 
-std::vector<Token> AllTokens(const std::string& text) {
+std::vector<Token> AllTokens(const std::string& text, const std::string& file,
+                             Diagnostics& diagnostics) {
   std::vector<Token> tokens;
-  for (Statement& statement : SplitStatements(text)) {
+  for (Statement& statement : SplitStatements(text, file, &diagnostics)) {
     for (Token& token : statement.tokens) tokens.push_back(std::move(token));
   }
   return tokens;
@@ -249,7 +250,7 @@ void NoteIgnored(const MultiPathReader& state) {
 
 std::optional<VecX> ParseConfig(const std::string& text, const std::string& file,
                                 Diagnostics& diagnostics) {
-  const std::vector<Token> tokens = AllTokens(text);
+  const std::vector<Token> tokens = AllTokens(text, file, diagnostics);
   if (tokens.empty()) {
     diagnostics.Error({file, 0, 0}, "expected a configuration 'N q1 ... qN', got an empty file");
     return std::nullopt;
@@ -274,7 +275,7 @@ std::optional<MilestoneSequence> ParseLinearPath(const std::string& text, const 
   const int errors_before = diagnostics.error_count();
   MilestoneSequence path;
   const Token* previous_time = nullptr;
-  const std::vector<Statement> statements = SplitStatements(text);
+  const std::vector<Statement> statements = SplitStatements(text, file, &diagnostics);
   for (const Statement& statement : statements) {
     const std::vector<Token>& tokens = statement.tokens;
     if (tokens.size() < 2) {
@@ -299,7 +300,7 @@ std::optional<MilestoneSequence> ParseLinearPath(const std::string& text, const 
 std::optional<MilestoneSequence> ParseMilestones(const std::string& text, const std::string& file,
                                                  Diagnostics& diagnostics) {
   const int errors_before = diagnostics.error_count();
-  const std::vector<Token> tokens = AllTokens(text);
+  const std::vector<Token> tokens = AllTokens(text, file, diagnostics);
   MilestoneSequence milestones;
   TokenCursor cursor{tokens};
   while (!cursor.done() && ReadMilestoneRecord(cursor, file, diagnostics, &milestones)) {

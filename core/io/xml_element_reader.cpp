@@ -147,6 +147,12 @@ std::optional<ParamValue> XmlElementReader::Param(const ParamSpec& spec, int siz
     Error(attribute.c_str(), "expects " + count + ", got '" + text + "'");
     return std::nullopt;
   }
+  if (value && !ParamAccepts(spec, *value, size)) {
+    if (const auto lenient = LenientInertia(spec, *value)) {
+      Warning("attribute '" + attribute + "' " + lenient->warning);
+      return lenient->value;
+    }
+  }
   if (!value || !ParamAccepts(spec, *value, size)) {
     Error(attribute.c_str(), ParamRefusal(spec, text));
     return std::nullopt;
