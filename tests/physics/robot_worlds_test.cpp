@@ -238,6 +238,29 @@ TEST(RobotWorldsTest, AthleteTracksTheFlexPathStreamedAsPidCommands) {
   EXPECT_LT(held_worst, kFlexHeldWorstError);
 }
 
+// Klamp't's HRP-2 (worlds/klampt/hrp2_plane.xml, copied from Klamp't's example data): its .rob
+// has ten link inertias asymmetric by the rounding of their 8 printed decimals, which Lamina now
+// symmetrises with a warning instead of refusing the robot; it stands on its padded feet
+TEST(RobotWorldsTest, Hrp2LoadsWithItsRoundedInertiasAndStands) {
+  test::LoadedWorld loaded;
+  test::LoadWorld(test::WorldsPath("klampt/hrp2_plane.xml"), &loaded);
+  ASSERT_TRUE(loaded.ok) << loaded.diagnostics.FormatAll();
+  int symmetrised = 0;
+  for (const std::string& warning : loaded.diagnostics.Messages(core::Severity::kWarning)) {
+    if (warning.find("is not symmetric") != std::string::npos) ++symmetrised;
+  }
+  EXPECT_EQ(symmetrised, 10);
+  core::Simulator simulator(loaded.world);
+  ASSERT_EQ(simulator.GetRobotConfig(0).size(), 36);
+  simulator.Simulate(1.0);
+  ASSERT_NE(simulator.statistics().worst_status, core::StepStatus::kError);
+  const VecX q = simulator.GetRobotConfig(0);
+  // the base settles by the feet's 5 mm padding at most and does not tip
+  EXPECT_NEAR(q[2], 0.0, 0.006);
+  EXPECT_LT(q.segment(3, 3).cwiseAbs().maxCoeff(), 0.01);
+  EXPECT_EQ(simulator.statistics().instability_corrections, 0);
+}
+
 // sphere.rob: a sphere on a translating floating base (3 virtual links) held by translation
 // drivers (force along x, y, z on the base body) against gravity
 TEST(RobotWorldsTest, TranslationDriversHoldAFloatingSphere) {
