@@ -151,8 +151,11 @@ bool AddObjectEdit::Apply(WorldDocument* document, std::string* error) const {
     return Refuse(error, "add object " + Quoted(object.name) + ": " +
                              problem->substr(problem->find('.') + 1));
   }
-  std::vector<RigidObjectDesc>& objects = DocumentAccess::desc(document).objects;
-  objects.insert(objects.begin() + index, object);
+  WorldDesc& desc = DocumentAccess::desc(document);
+  std::vector<int> renumbered(desc.objects.size());
+  for (int i = 0; i < count; ++i) renumbered[i] = i < index ? i : i + 1;
+  RenumberJointObjects(&desc, renumbered);
+  desc.objects.insert(desc.objects.begin() + index, object);
   DocumentAccess::Touch(document);
   return true;
 }
@@ -192,6 +195,16 @@ bool RemoveObjectEdit::Apply(WorldDocument* document, std::string* error) const 
                              ": the edit's copy of the object differs from the document's (" +
                              differences.front() + ")");
   }
+  WorldDesc& desc = DocumentAccess::desc(document);
+  if (const int joint = JointHoldingObject(desc, index); joint >= 0) {
+    return Refuse(error, ElementPath(ElementIndex::Object(index)) + ": world joint " +
+                             std::to_string(joint) + " holds it; remove the joint first");
+  }
+  std::vector<int> renumbered(objects.size());
+  for (int i = 0; i < static_cast<int>(objects.size()); ++i) {
+    renumbered[i] = i < index ? i : (i == index ? -1 : i - 1);
+  }
+  RenumberJointObjects(&desc, renumbered);
   objects.erase(objects.begin() + index);
   DocumentAccess::Touch(document);
   return true;
@@ -204,9 +217,21 @@ bool MoveObjectEdit::Apply(WorldDocument* document, std::string* error) const {
     return Refuse(error, "move object #" + std::to_string(uid) + ": index " + std::to_string(to) +
                              " is not in [0, " + std::to_string(objects.size() - 1) + "]");
   }
+  std::vector<int> order(objects.size());  // order[k]: the object that ends at index k
+  for (int i = 0; i < static_cast<int>(order.size()); ++i) order[i] = i;
   const auto at = [&](int i) { return objects.begin() + i; };
-  if (from < to) std::rotate(at(from), at(from + 1), at(to + 1));
-  if (to < from) std::rotate(at(to), at(from), at(from + 1));
+  const auto at_order = [&](int i) { return order.begin() + i; };
+  if (from < to) {
+    std::rotate(at(from), at(from + 1), at(to + 1));
+    std::rotate(at_order(from), at_order(from + 1), at_order(to + 1));
+  }
+  if (to < from) {
+    std::rotate(at(to), at(from), at(from + 1));
+    std::rotate(at_order(to), at_order(from), at_order(from + 1));
+  }
+  std::vector<int> renumbered(order.size());
+  for (int k = 0; k < static_cast<int>(order.size()); ++k) renumbered[order[k]] = k;
+  RenumberJointObjects(&DocumentAccess::desc(document), renumbered);
   DocumentAccess::Touch(document);
   return true;
 }

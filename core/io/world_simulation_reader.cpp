@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "core/io/world_simulation_reader.h"
 
+#include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "core/io/param_text.h"
+#include "core/number_text.h"
 
 namespace lamina::core {
 
@@ -70,6 +73,14 @@ class SimulationReader {
   void ReadTerrainRef(const XMLElement& element);
   void ReadObjectRef(const XMLElement& element);
   void ReadRobotRef(const XMLElement& element);
+  // `body` of a robot reference: a link name or number, -1 (all links) when `all` allows it;
+  // nullopt (reported) when it names no link
+  std::optional<int> RobotBody(const XmlElementReader& reader, const RobotDesc& robot,
+                               bool all) const;
+  void ReadJoint(const XMLElement& element);
+  std::optional<WorldJointBody> ReadJointBody(const XMLElement& element) const;
+  // the joint's type, axis, point, limits and friction; false (reported) when one is wrong
+  bool ReadJointShape(const XmlElementReader& reader, WorldJointDesc* joint) const;
   void WarnUnknownChildren(const XMLElement& element, std::initializer_list<const char*> known);
 
   std::string path_;
@@ -89,11 +100,15 @@ void SimulationReader::Read(const XMLElement& block) {
       ReadObjectRef(*e);
     } else if (name == "robot") {
       ReadRobotRef(*e);
-    } else if (name == "joint" || name == "state") {
+    } else if (name == "joint") {
+      ReadJoint(*e);
+    } else if (name == "state") {
       tinyxml2::XMLPrinter printer(nullptr, true);
       e->Accept(&printer);
       world_->preserved_simulation_xml.push_back(printer.CStr());
-      Reader(*e).Warning("not simulated yet; kept as is and written back on save");
+      Reader(*e).Warning(
+          "Klamp't's saved simulator state is not read; kept as is and written "
+          "back on save");
     } else {
       Reader(*e).Warning("unknown element ignored");
     }
@@ -173,23 +188,9 @@ void SimulationReader::ReadRobotRef(const XMLElement& element) {
   const int index = FindBody(reader, world_->robots, "robot");
   if (index < 0) return;
   RobotDesc& robot = world_->robots[index];
-  int body = -1;  // Klamp't requires `body`; a missing one means every link
-  if (const auto text = reader.String("body")) {
-    body = robot.dof();
-    for (int i = 0; i < robot.dof(); ++i) {
-      if (robot.links[i].name == *text) body = i;
-    }
-    if (body == robot.dof()) {
-      const auto number = reader.Integer("body");
-      if (!number) return;
-      body = *number;
-    }
-    if (body < -1 || body >= robot.dof()) {
-      reader.Error("body", "is " + std::to_string(body) + " but robot '" + robot.name + "' has " +
-                               std::to_string(robot.dof()) + " links (-1 means all)");
-      return;
-    }
-  }
+  const std::optional<int> found = RobotBody(reader, robot, true);
+  if (!found) return;
+  const int body = *found;
   std::vector<ElementIndex> links;
   for (int link = 0; link < robot.dof(); ++link) {
     if (body < 0 || link == body) links.push_back(ElementIndex::Link(index, link));
@@ -202,6 +203,123 @@ void SimulationReader::ReadRobotRef(const XMLElement& element) {
       robot.properties[property] = printer.CStr();
     }
   }
+}
+
+std::optional<int> SimulationReader::RobotBody(const XmlElementReader& reader,
+                                               const RobotDesc& robot, bool all) const {
+  const auto text = reader.String("body");
+  if (!text && all) return -1;  // Klamp't requires `body`; a missing one means every link
+  if (!text) {
+    reader.Error("needs a 'body' attribute: the link's name or number");
+    return std::nullopt;
+  }
+  for (int i = 0; i < robot.dof(); ++i) {
+    if (robot.links[i].name == *text) return i;
+  }
+  const auto number = reader.Integer("body");
+  if (!number) return std::nullopt;
+  if (*number < (all ? -1 : 0) || *number >= robot.dof()) {
+    reader.Error("body", "is " + std::to_string(*number) + " but robot '" + robot.name + "' has " +
+                             std::to_string(robot.dof()) + " links" +
+                             (all ? " (-1 means all)" : ""));
+    return std::nullopt;
+  }
+  return *number;
+}
+
+std::optional<WorldJointBody> SimulationReader::ReadJointBody(const XMLElement& element) const {
+  const XmlElementReader reader = Reader(element);
+  const std::string name = element.Name();
+  if (name == "terrain" || name == "object" || name == "rigidObject") {
+    reader.WarnUnknownAttributes({"index", "name"});
+    const bool terrain = name == "terrain";
+    const int index = terrain ? FindBody(reader, world_->terrains, "terrain")
+                              : FindBody(reader, world_->objects, "object");
+    if (index < 0) return std::nullopt;
+    return WorldJointBody{terrain ? WorldId::Kind::kTerrain : WorldId::Kind::kRigidObject, index,
+                          -1};
+  }
+  if (name == "robot") {
+    reader.WarnUnknownAttributes({"index", "name", "body"});
+    const int index = FindBody(reader, world_->robots, "robot");
+    if (index < 0) return std::nullopt;
+    const std::optional<int> link = RobotBody(reader, world_->robots[index], false);
+    if (!link) return std::nullopt;
+    return WorldJointBody{WorldId::Kind::kRobotLink, index, *link};
+  }
+  reader.Error("is not a body a joint can hold: <rigidObject>, <robot body=...> or <terrain>");
+  return std::nullopt;
+}
+
+bool SimulationReader::ReadJointShape(const XmlElementReader& reader, WorldJointDesc* joint) const {
+  const std::optional<std::string> type = reader.String("type");
+  if (!type) {
+    reader.Error("needs a 'type' attribute: fixed, hinge or slider");
+    return false;
+  }
+  bool ok = true;
+  if (*type == "hinge" || *type == "slider") {
+    joint->type = *type == "hinge" ? WorldJointType::kHinge : WorldJointType::kSlider;
+    const std::optional<Vec3> axis = reader.Vector3("axis");
+    if (!reader.Has("axis")) reader.Error("(" + *type + ") needs an 'axis' attribute");
+    if (axis && !(axis->norm() > 0.0)) reader.Error("axis", "must not be zero");
+    ok = axis && axis->norm() > 0.0;
+    if (ok) joint->axis = axis->normalized();
+  } else if (*type != "fixed") {
+    reader.Error("type", "is '" + *type + "'; expected fixed, hinge or slider");
+    return false;
+  }
+  if (joint->type == WorldJointType::kHinge) {
+    const std::optional<Vec3> point = reader.Vector3("point");
+    if (!reader.Has("point")) reader.Error("(hinge) needs a 'point' attribute on its axis");
+    ok = ok && point.has_value();
+    if (point) joint->point = *point;
+  }
+  return ok;
+}
+
+void SimulationReader::ReadJoint(const XMLElement& element) {
+  const XmlElementReader reader = Reader(element);
+  reader.WarnUnknownAttributes(
+      {"type", "point", "axis", "min", "minimum", "max", "maximum", "friction"});
+  WorldJointDesc joint;
+  bool ok = ReadJointShape(reader, &joint);
+  for (const XMLElement* e = element.FirstChildElement(); e; e = e->NextSiblingElement()) {
+    const std::optional<WorldJointBody> body = ReadJointBody(*e);
+    ok = ok && body.has_value();
+    if (body) joint.bodies.push_back(*body);
+  }
+  if (joint.bodies.empty() || joint.bodies.size() > 2) {
+    reader.Error("holds " + std::to_string(joint.bodies.size()) +
+                 " bodies; it needs one or two (<rigidObject>, <robot body=...>, <terrain>)");
+    return;
+  }
+  if (joint.bodies.size() == 2 && joint.bodies[0] == joint.bodies[1]) {
+    reader.Error("holds the same body twice");
+    return;
+  }
+  const char* min_name = reader.Has("minimum") ? "minimum" : "min";
+  const char* max_name = reader.Has("maximum") ? "maximum" : "max";
+  if (const auto min = reader.Number(min_name)) joint.min = *min;
+  if (const auto max = reader.Number(max_name)) joint.max = *max;
+  if (const auto friction = reader.Number("friction", false)) joint.friction = *friction;
+  if (!(joint.min <= joint.max)) {
+    reader.Error("limits " + FormatDouble(joint.min) + " .. " + FormatDouble(joint.max) +
+                 " must be ordered (min <= max)");
+    return;
+  }
+  const bool hinge = joint.type == WorldJointType::kHinge;
+  if (hinge && ((std::isfinite(joint.min) && joint.min < -kPi) ||
+                (std::isfinite(joint.max) && joint.max > kPi))) {
+    reader.Error("a hinge's limits must lie in [-pi, pi] rad (ODE's hinge angle), got " +
+                 FormatDouble(joint.min) + " .. " + FormatDouble(joint.max));
+    return;
+  }
+  if (!(joint.friction >= 0.0)) {
+    reader.Error("friction", "must be >= 0, got " + FormatDouble(joint.friction));
+    return;
+  }
+  if (ok) world_->joints.push_back(std::move(joint));
 }
 
 }  // namespace

@@ -58,6 +58,7 @@ class WorldWriter {
   void WriteRobot(const RobotDesc& robot, std::set<std::string>* used_names);
   RobotDesc WithPrimitiveFiles(const RobotDesc& robot, const std::string& rob_path);
   void WriteSimulation();
+  void WriteJoint(const WorldJointDesc& joint);
   void WriteBodyParams(const char* kind, const ElementIndex& element, const std::string& body = "");
   Attributes GeometryAttributes(const char* file_key, const GeometryDesc& geometry);
   // each row's key and value on `element`, in ParamWords
@@ -212,6 +213,31 @@ void WorldWriter::WriteBodyParams(const char* kind, const ElementIndex& element,
   Element("geometry", RowAttributes(BodyGeometryRows(), element));
 }
 
+// `<joint>` with the bodies it holds as references by index, as the reader reads them back
+void WorldWriter::WriteJoint(const WorldJointDesc& joint) {
+  Attributes attributes{{"type", WorldJointTypeName(joint.type)}};
+  if (joint.type == WorldJointType::kHinge) {
+    attributes.emplace_back("point", FormatDoubles(joint.point.data(), 3));
+  }
+  if (joint.type != WorldJointType::kFixed) {
+    attributes.emplace_back("axis", FormatDoubles(joint.axis.data(), 3));
+  }
+  if (joint.min != -kInf) attributes.emplace_back("min", FormatDouble(joint.min));
+  if (joint.max != kInf) attributes.emplace_back("max", FormatDouble(joint.max));
+  if (joint.friction != 0.0) attributes.emplace_back("friction", FormatDouble(joint.friction));
+  Element("joint", attributes, false);
+  for (const WorldJointBody& body : joint.bodies) {
+    Attributes reference{{"index", std::to_string(body.index)}};
+    if (body.kind == WorldId::Kind::kRobotLink) {
+      reference.emplace_back("body", std::to_string(body.link));
+    }
+    const bool terrain = body.kind == WorldId::Kind::kTerrain;
+    const bool object = body.kind == WorldId::Kind::kRigidObject;
+    Element(terrain ? "terrain" : object ? "rigidObject" : "robot", reference);
+  }
+  printer_.CloseElement();
+}
+
 void WorldWriter::WriteSimulation() {
   Element("simulation", {}, false);
   Element("globals", GlobalsAttributes());
@@ -240,6 +266,7 @@ void WorldWriter::WriteSimulation() {
       printer_.CloseElement();
     }
   }
+  for (const WorldJointDesc& joint : world_.joints) WriteJoint(joint);
   for (const std::string& xml : world_.preserved_simulation_xml) {
     tinyxml2::XMLDocument fragment;
     if (fragment.Parse(xml.c_str()) == tinyxml2::XML_SUCCESS && fragment.RootElement()) {

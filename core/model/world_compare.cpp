@@ -257,6 +257,8 @@ std::vector<std::string> CompareWorlds(const WorldDesc& a, const WorldDesc& b, d
     }
   }
   c.Rows("settings", a, b, ElementIndex::Settings());
+  c.Exact("joints", a.joints, b.joints, std::to_string(a.joints.size()) + " joints",
+          std::to_string(b.joints.size()) + " joints");
   c.Exact("preserved_simulation_xml", a.preserved_simulation_xml, b.preserved_simulation_xml,
           std::to_string(a.preserved_simulation_xml.size()),
           std::to_string(b.preserved_simulation_xml.size()));

@@ -141,4 +141,35 @@ BodySimParams DefaultLinkSimParams() {
   return params;
 }
 
+const char* WorldJointTypeName(WorldJointType type) {
+  switch (type) {
+    case WorldJointType::kFixed:
+      return "fixed";
+    case WorldJointType::kHinge:
+      return "hinge";
+    case WorldJointType::kSlider:
+      return "slider";
+  }
+  return "?";
+}
+
+int JointHoldingObject(const WorldDesc& world, int object) {
+  for (size_t j = 0; j < world.joints.size(); ++j) {
+    for (const WorldJointBody& body : world.joints[j].bodies) {
+      if (body.kind == WorldId::Kind::kRigidObject && body.index == object) {
+        return static_cast<int>(j);
+      }
+    }
+  }
+  return -1;
+}
+
+void RenumberJointObjects(WorldDesc* world, const std::vector<int>& new_index) {
+  for (WorldJointDesc& joint : world->joints) {
+    for (WorldJointBody& body : joint.bodies) {
+      if (body.kind == WorldId::Kind::kRigidObject) body.index = new_index.at(body.index);
+    }
+  }
+}
+
 }  // namespace lamina::core

@@ -224,15 +224,58 @@ struct WorldId {
   int link = -1;   ///< link index for kRobotLink
 };
 
+/// The kind of a world-level joint (`<simulation><joint type="...">`).
+enum class WorldJointType { kFixed, kHinge, kSlider };
+
+/// A body a world-level joint holds: a rigid object, a robot link, or a terrain (which stands for
+/// the world: terrains do not move).
+struct WorldJointBody {
+  WorldId::Kind kind = WorldId::Kind::kInvalid;  ///< kTerrain, kRigidObject or kRobotLink
+  int index = -1;                                ///< terrain, object or robot index
+  int link = -1;                                 ///< kRobotLink only
+
+  bool operator==(const WorldJointBody&) const = default;
+};
+
+/// A joint between two bodies, or between a body and the world (Klamp't's `<simulation><joint>`,
+/// its ODESimulator ODEJoint): fixed, hinge (about `axis` through `point`) or slider (along
+/// `axis`). The hinge angle (rad) and the slider travel (m) are those of the first body relative
+/// to the second (or to the world), right-handed about / along `axis` (ODE's convention, hence
+/// Klamp't's), and 0 at the bodies' initial poses; the limits count from there. Differences from
+/// Klamp't: `max` is read as Klamp't documents it (its reader looks for "minimax"), and a hinge
+/// limit beyond ±pi is refused rather than silently ignored by ODE.
+struct WorldJointDesc {
+  WorldJointType type = WorldJointType::kFixed;
+  std::vector<WorldJointBody> bodies;  ///< 1 or 2; one, or a terrain: held to the world
+  Vec3 point = Vec3::Zero();           ///< hinge: a point of the axis, world frame (m)
+  Vec3 axis = Vec3::UnitZ();           ///< hinge, slider: world frame, unit
+  double min = -kInf;                  ///< lower limit (rad or m); -inf: none
+  double max = kInf;                   ///< upper limit (rad or m); inf: none
+  double friction = 0.0;  ///< N·m or N: the most a zero-velocity motor resists with (0: free)
+
+  bool operator==(const WorldJointDesc&) const = default;
+};
+
+/// "fixed", "hinge" or "slider".
+const char* WorldJointTypeName(WorldJointType type);
+
+struct WorldDesc;
+/// Index of the first world joint that holds object `object`; -1 when none does.
+int JointHoldingObject(const WorldDesc& world, int object);
+/// After the objects were added, removed or reordered: object i of before is now object
+/// `new_index[i]`; the world joints' references follow (none may hold a removed object).
+void RenumberJointObjects(WorldDesc* world, const std::vector<int>& new_index);
+
 struct WorldDesc {
   std::string name;         ///< from the file name when loaded
   std::string source_path;  ///< absolute path of the world file; "" if built in code
   std::vector<TerrainDesc> terrains;
   std::vector<RigidObjectDesc> objects;
   std::vector<RobotDesc> robots;
+  std::vector<WorldJointDesc> joints;  ///< world-level joints, in file order
   SimSettings settings;
-  /// `<simulation>` children Lamina does not model yet (`<joint>`, `<state>`), kept verbatim as
-  /// XML so that saving writes them back.
+  /// `<simulation>` children Lamina does not model (`<state>`: Klamp't's base64 simulator
+  /// state), kept verbatim as XML so that saving writes them back.
   std::vector<std::string> preserved_simulation_xml;
 
   /// Klamp't world id of a terrain, object, robot or robot link.

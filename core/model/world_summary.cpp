@@ -192,6 +192,56 @@ int RobotTriangleCount(const RobotDesc& robot) {
   return triangles;
 }
 
+// "object 2 'drawer'", "link 3 of robot 'cabinet'", "terrain 0 'floor'"
+std::string JointBodyText(const WorldDesc& world, const WorldJointBody& body) {
+  switch (body.kind) {
+    case WorldId::Kind::kTerrain:
+      return "terrain " + std::to_string(world.TerrainId(body.index)) + " '" +
+             world.terrains[body.index].name + "'";
+    case WorldId::Kind::kRigidObject:
+      return "object " + std::to_string(world.ObjectId(body.index)) + " '" +
+             world.objects[body.index].name + "'";
+    case WorldId::Kind::kRobotLink:
+      return "link " + std::to_string(body.link) + " '" +
+             world.robots[body.index].links[body.link].name + "' of robot '" +
+             world.robots[body.index].name + "'";
+    default:
+      return "?";
+  }
+}
+
+ordered_json JointJson(const WorldDesc& world, const WorldJointDesc& joint) {
+  ordered_json out = {{"type", WorldJointTypeName(joint.type)}};
+  out["bodies"] = ordered_json::array();
+  for (const WorldJointBody& body : joint.bodies)
+    out["bodies"].push_back(JointBodyText(world, body));
+  if (joint.type == WorldJointType::kHinge) out["point"] = Vector(joint.point);
+  if (joint.type != WorldJointType::kFixed) out["axis"] = Vector(joint.axis);
+  out["min"] = Number(joint.min);
+  out["max"] = Number(joint.max);
+  out["friction"] = Number(joint.friction);
+  return out;
+}
+
+std::string JointText(const WorldDesc& world, int index) {
+  const WorldJointDesc& joint = world.joints[index];
+  std::string text =
+      "joint " + std::to_string(index) + " (" + WorldJointTypeName(joint.type) +
+      "): " + JointBodyText(world, joint.bodies[0]) + " to " +
+      (joint.bodies.size() > 1 ? JointBodyText(world, joint.bodies[1]) : "the world");
+  const auto vec = [](const Vec3& v) {
+    return "(" + Text(v.x()) + ", " + Text(v.y()) + ", " + Text(v.z()) + ")";
+  };
+  if (joint.type == WorldJointType::kHinge) text += ", through " + vec(joint.point);
+  if (joint.type != WorldJointType::kFixed) {
+    const char* unit = joint.type == WorldJointType::kHinge ? " rad" : " m";
+    text += ", axis " + vec(joint.axis) + ", limits " + Text(joint.min) + " .. " + Text(joint.max) +
+            unit + ", friction " + Text(joint.friction) +
+            (joint.type == WorldJointType::kHinge ? " N·m" : " N");
+  }
+  return text + "\n";
+}
+
 std::string ParamsJson(const WorldDesc& world, const ElementIndex& element) {
   return RowsJson(world, element, ParamsOf(element.kind)).dump();
 }
@@ -210,6 +260,8 @@ std::string WorldSummaryJson(const WorldDesc& world) {
   for (int i = 0; i < static_cast<int>(world.robots.size()); ++i) {
     out["robots"].push_back(RobotJson(world, i));
   }
+  out["joints"] = ordered_json::array();
+  for (const WorldJointDesc& joint : world.joints) out["joints"].push_back(JointJson(world, joint));
   out["simulation"] = RowsJson(world, ElementIndex::Settings(), ParamsOf(ElementKind::kSettings));
   return out.dump(2) + "\n";
 }
@@ -232,6 +284,7 @@ std::string WorldSummaryText(const WorldDesc& world) {
         << RowsText(world, ElementIndex::Object(i), Rows(ElementKind::kObject, true)) << "\n";
   }
   for (int i = 0; i < static_cast<int>(world.robots.size()); ++i) out << RobotText(world, i);
+  for (int i = 0; i < static_cast<int>(world.joints.size()); ++i) out << JointText(world, i);
   out << "simulation: "
       << RowsText(world, ElementIndex::Settings(), ParamsOf(ElementKind::kSettings)) << "\n";
   return out.str();

@@ -15,6 +15,7 @@ struct OverlayOptions {
   bool com = false;       ///< centres of mass of objects and links
   bool frames = false;    ///< object and link frames (x red, y green, z blue)
   bool bbox = false;      ///< oriented bounding boxes of every body
+  bool joints = false;    ///< world-level joints: hinge axes, slider directions, fixed links
 
   double normal_length = 0.05;  ///< m (Klamp't SimTest: 0.05)
   double force_scale = 0.01;    ///< m per N (Klamp't SimTest: 0.01)
@@ -42,6 +43,8 @@ inline constexpr OverlayToggle kOverlayToggles[] = {
     {"com", &OverlayOptions::com, "centres of mass of objects and links"},
     {"frames", &OverlayOptions::frames, "object and link frames (x red, y green, z blue)"},
     {"bbox", &OverlayOptions::bbox, "oriented bounding boxes of every body"},
+    {"joints", &OverlayOptions::joints,
+     "world-level joints (orange): hinge axes through their points, slider directions"},
 };
 
 /// The toggles' names as a comma list ("contacts,normals,...").

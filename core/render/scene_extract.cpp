@@ -16,6 +16,7 @@ const Rgba kContactColor(1.0f, 0.9f, 0.1f, 1.0f);
 const Rgba kPenetratingColor(1.0f, 0.15f, 0.1f, 1.0f);
 const Rgba kForceColor(1.0f, 0.5f, 0.05f, 1.0f);
 const Rgba kComColor(0.9f, 0.1f, 0.9f, 1.0f);
+const Rgba kJointColor(1.0f, 0.6f, 0.1f, 1.0f);
 const Rgba kBodyBoxColor(0.9f, 0.15f, 0.15f, 1.0f);
 const Rgba kTerrainBoxColor(1.0f, 0.6f, 0.1f, 1.0f);
 const Rgba kSelectedBoxColor(1.0f, 0.85f, 0.2f, 1.0f);
@@ -224,6 +225,59 @@ void AddContacts(const OverlayOptions& options, const std::vector<ContactMarker>
   }
 }
 
+// world id of a joint's body (-1: a terrain, which does not move)
+int JointBodyId(const WorldDesc& world, const WorldJointBody& body) {
+  if (body.kind == WorldId::Kind::kRigidObject) return world.ObjectId(body.index);
+  if (body.kind == WorldId::Kind::kRobotLink) return world.RobotLinkId(body.index, body.link);
+  return -1;
+}
+
+// how the joint's first moving body moved from its initial pose (identity for the world)
+Pose JointMotion(const WorldDesc& world, const WorldPoses& poses, const WorldJointDesc& joint) {
+  for (const WorldJointBody& body : joint.bodies) {
+    const int id = JointBodyId(world, body);
+    if (id < 0) continue;
+    const std::optional<Pose> now = DrawnBodyFrame(world, poses, id);
+    const std::optional<Pose> start = DrawnBodyFrame(world, InitialPoses(world), id);
+    if (now && start) return *now * start->inverse();
+  }
+  return Pose::Identity();
+}
+
+// the drawn centre of mass of a joint's first body that moves (nullopt: it holds only terrains)
+std::optional<Vec3> JointBodyCentre(const WorldDesc& world, const WorldPoses& poses,
+                                    const WorldJointDesc& joint) {
+  for (const WorldJointBody& body : joint.bodies) {
+    const int id = JointBodyId(world, body);
+    const std::optional<Pose> frame = id >= 0 ? DrawnBodyFrame(world, poses, id) : std::nullopt;
+    if (!frame) continue;
+    const bool object = body.kind == WorldId::Kind::kRigidObject;
+    return *frame *
+           (object ? world.objects[body.index].com : world.robots[body.index].links[body.link].com);
+  }
+  return std::nullopt;
+}
+
+// each world joint where it is now, at its first moving body: a hinge as its axis level with the
+// body's centre of mass, a slider as its direction through it, a fixed joint as a point there
+void AddJoints(const WorldDesc& world, const WorldPoses& poses, float marker, RenderScene* scene) {
+  const double length = std::max(40.0 * marker, 0.1);
+  for (const WorldJointDesc& joint : world.joints) {
+    const Pose motion = JointMotion(world, poses, joint);
+    const std::optional<Vec3> centre = JointBodyCentre(world, poses, joint);
+    const Vec3 axis = motion.linear() * joint.axis;
+    Vec3 at = centre ? *centre : motion * joint.point;
+    if (joint.type == WorldJointType::kHinge) {
+      const Vec3 point = motion * joint.point;
+      at = point + axis * axis.dot(at - point);
+    }
+    scene->points.push_back({at.cast<float>(), 2.0f * marker, kJointColor});
+    if (joint.type == WorldJointType::kFixed) continue;
+    AddArrow(at - 0.5 * length * axis, at + 0.5 * length * axis, 0.35f * marker, kJointColor,
+             scene);
+  }
+}
+
 }  // namespace
 
 void ExtractScene(const WorldDesc& world, const WorldPoses& poses, const OverlayOptions& options,
@@ -238,6 +292,7 @@ void ExtractScene(const WorldDesc& world, const WorldPoses& poses, const Overlay
   if (options.padding) AddPaddingLayer(parts, cache, scene);
   AddFrames(options, frames, marker, scene);
   AddContacts(options, contacts, marker, scene);
+  if (options.joints) AddJoints(world, poses, marker, scene);
 }
 
 }  // namespace lamina::core

@@ -87,11 +87,13 @@ void Simulator::Build() {
   dWorldSetGravity(ode_world_.get(), g.x(), g.y(), g.z());
   BuildBodies();
   sleep_.Reset(object_count());
+  BuildWorldJoints();
   halted_ = false;
 }
 
 // everything Build made; the robots first (they destroy their own joints and bodies)
 void Simulator::TearDown() {
+  world_joints_.Clear();
   targets_.clear();
   drag_ = DragState{};
   robots_.clear();

@@ -35,6 +35,7 @@
 #include "core/sim/sleep.h"
 #include "core/sim/step_guard.h"
 #include "core/sim/step_observer.h"
+#include "core/sim/world_joints.h"
 
 namespace lamina::core {
 
@@ -307,6 +308,13 @@ class Simulator {
   Vec3 MeanContactForce(int a, int b = -1) const;
   Vec3 MeanContactTorque(int a, int b = -1) const;
 
+  // ---- world-level joints (world().joints; world_joints.h) -------------------------------
+  int world_joint_count() const { return world_joints_.size(); }
+  /// Joint `joint`'s hinge angle (rad) or slider travel (m) from the initial pose, and its rate
+  /// (rad/s, m/s); 0 for a fixed joint. std::out_of_range for a joint that does not exist.
+  double WorldJointPosition(int joint) const { return world_joints_.Position(joint); }
+  double WorldJointRate(int joint) const { return world_joints_.Rate(joint); }
+
  private:
   friend class SimBody;
   struct RobotScratch {
@@ -339,6 +347,7 @@ class Simulator {
   void RebuildCollisionGeometry(int id);
   std::shared_ptr<const CollisionGeometry> LinkCollisionGeometry(int robot, int link);
   void ApplyInitialState();
+  void BuildWorldJoints();
 
   // the step (simulator.cpp)
   StepStatus Step(double step);
@@ -415,6 +424,7 @@ class Simulator {
   std::unique_ptr<OdeDragJoint, void (*)(OdeDragJoint*)> drag_joint_;  ///< the spring's readout
   BodyTable bodies_;
   std::vector<std::unique_ptr<OdeRobot>> robots_;
+  OdeWorldJoints world_joints_;
   std::vector<RobotController> controllers_;
   std::vector<std::vector<std::pair<int, int>>> self_collision_pairs_;  ///< per robot, sorted
   std::vector<RobotScratch> robot_scratch_;  ///< per robot, reused every sub-step

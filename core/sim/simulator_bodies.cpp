@@ -99,6 +99,26 @@ void Simulator::RebuildCollisionGeometry(int id) {
   }
 }
 
+// the world-level joints, built with every body at its initial pose (where they read 0)
+void Simulator::BuildWorldJoints() {
+  if (world_.joints.empty()) return;
+  for (int i = 0; i < object_count(); ++i) {
+    SetBodyPose(bodies_.object_ids()[i], world_.objects[i].pose);
+  }
+  for (int r = 0; r < robot_count(); ++r) robots_[r]->SetConfig(world_.robots[r].InitialConfig());
+  const auto body_of = [this](const WorldJointBody& body) -> dxBody* {
+    switch (body.kind) {
+      case WorldId::Kind::kRigidObject:
+        return bodies_[world_.ObjectId(body.index)].body;
+      case WorldId::Kind::kRobotLink:
+        return bodies_[world_.RobotLinkId(body.index, body.link)].body;
+      default:
+        return nullptr;  // a terrain: the world
+    }
+  };
+  world_joints_.Build(ode_world_.get(), world_, body_of, diagnostics_);
+}
+
 void Simulator::ApplyInitialState() {
   for (int i = 0; i < object_count(); ++i) {
     SetObjectPose(i, world_.objects[i].pose);

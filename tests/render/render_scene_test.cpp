@@ -148,6 +148,40 @@ WorldPoses MovedBoxAndBall(const WorldDesc& world) {
   return poses;
 }
 
+// a hinge through (1.5, 2, 0) about z on the box (object 0, at (1, 2, 1)), drawn level with the
+// box: at (1.5, 2, 1); the box turned 90 degrees about its own vertical axis carries it to
+// (1, 2.5, 1)
+TEST(WorldPosesTest, WorldJointsAreDrawnWhereTheirBodiesTakeThem) {
+  const test::LoadedWorld loaded = Load(PaddedContactsPath());
+  WorldDesc world = loaded.world;
+  world.objects[0].pose = Pose(Eigen::Translation3d(1, 2, 1));
+  core::WorldJointDesc hinge;
+  hinge.type = core::WorldJointType::kHinge;
+  hinge.bodies = {{core::WorldId::Kind::kRigidObject, 0, -1}};
+  hinge.point = Vec3(1.5, 2, 0);
+  hinge.axis = Vec3::UnitZ();
+  world.joints = {hinge};
+  OverlayOptions options;
+  options.joints = true;
+  RenderScene scene;
+  RenderMeshCache cache;
+  ExtractScene(world, InitialPoses(world), options, {}, &cache, &scene);
+  ASSERT_EQ(scene.arrows.size(), 1u);
+  const auto middle = [](const core::DebugArrow& a) { return 0.5 * (a.from + a.to); };
+  EXPECT_TRUE(middle(scene.arrows[0]).isApprox(Eigen::Vector3f(1.5f, 2, 1), 1e-5f));
+  EXPECT_TRUE((scene.arrows[0].to - scene.arrows[0].from)
+                  .normalized()
+                  .isApprox(Eigen::Vector3f::UnitZ(), 1e-5f));
+  WorldPoses turned = InitialPoses(world);
+  turned.objects[0] = Eigen::Translation3d(1, 2, 1) * Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ());
+  ExtractScene(world, turned, options, {}, &cache, &scene);
+  ASSERT_EQ(scene.arrows.size(), 1u);
+  EXPECT_TRUE(middle(scene.arrows[0]).isApprox(Eigen::Vector3f(1, 2.5f, 1), 1e-5f));
+  options.joints = false;  // off: nothing drawn
+  ExtractScene(world, turned, options, {}, &cache, &scene);
+  EXPECT_TRUE(scene.arrows.empty());
+}
+
 TEST(WorldPosesTest, ObjectsAndTheirOverlaysAreDrawnAtTheGivenPoses) {
   const test::LoadedWorld loaded = Load(PaddedContactsPath());
   const WorldDesc& world = loaded.world;
@@ -301,7 +335,7 @@ TEST(OverlayOptionsTest, ParsesListsAndNamesUnknownEntries) {
 
 // each toggle's name turns on its own flag and no other; "all" is every toggle and every flag
 TEST(OverlayOptionsTest, EveryToggleNamesItsOwnFlag) {
-  constexpr int kFlags = 7;  // the bool members of OverlayOptions
+  constexpr int kFlags = 8;  // the bool members of OverlayOptions
   ASSERT_EQ(std::size(core::kOverlayToggles), static_cast<size_t>(kFlags));
   std::string error;
   OverlayOptions all;
@@ -318,7 +352,7 @@ TEST(OverlayOptionsTest, EveryToggleNamesItsOwnFlag) {
   }
   EXPECT_EQ(each, all);
   EXPECT_TRUE(all.contacts && all.normals && all.forces && all.padding && all.com && all.frames &&
-              all.bbox);
+              all.bbox && all.joints);
 }
 
 TEST(RenderMeshTest, CreasesStaySharpAndOffsetsGrow) {

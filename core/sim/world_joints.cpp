@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: MIT
+#include "core/sim/world_joints.h"
+
+#include <cmath>
+#include <string>
+
+#include <ode/ode.h>
+
+namespace lamina::core {
+
+namespace {
+
+// ODE's parameters of a hinge or slider: its limits and its friction motor
+void SetLimitsAndFriction(dJointID joint, const WorldJointDesc& desc) {
+  const auto set = desc.type == WorldJointType::kHinge ? dJointSetHingeParam : dJointSetSliderParam;
+  if (std::isfinite(desc.min)) set(joint, dParamLoStop, desc.min);
+  if (std::isfinite(desc.max)) set(joint, dParamHiStop, desc.max);
+  set(joint, dParamBounce, 0.0);
+  set(joint, dParamVel, 0.0);
+  set(joint, dParamFMax, desc.friction);
+}
+
+dJointID MakeJoint(dWorldID world, const WorldJointDesc& desc, dBodyID a, dBodyID b) {
+  switch (desc.type) {
+    case WorldJointType::kFixed: {
+      dJointID joint = dJointCreateFixed(world, nullptr);
+      dJointAttach(joint, a, b);
+      dJointSetFixed(joint);
+      return joint;
+    }
+    case WorldJointType::kHinge: {
+      dJointID joint = dJointCreateHinge(world, nullptr);
+      dJointAttach(joint, a, b);
+      dJointSetHingeAnchor(joint, desc.point.x(), desc.point.y(), desc.point.z());
+      dJointSetHingeAxis(joint, desc.axis.x(), desc.axis.y(), desc.axis.z());
+      SetLimitsAndFriction(joint, desc);
+      return joint;
+    }
+    case WorldJointType::kSlider: {
+      dJointID joint = dJointCreateSlider(world, nullptr);
+      dJointAttach(joint, a, b);
+      dJointSetSliderAxis(joint, desc.axis.x(), desc.axis.y(), desc.axis.z());
+      SetLimitsAndFriction(joint, desc);
+      return joint;
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+void OdeWorldJoints::Build(dxWorld* ode_world, const WorldDesc& world, const BodyOf& body_of,
+                           Diagnostics& diagnostics) {
+  Clear();
+  for (size_t j = 0; j < world.joints.size(); ++j) {
+    const WorldJointDesc& desc = world.joints[j];
+    // as given: ODE measures the first body relative to the second (a null first body is the
+    // world, and ODE flips its readings to keep that meaning)
+    dBodyID a = body_of(desc.bodies[0]);
+    dBodyID b = desc.bodies.size() > 1 ? body_of(desc.bodies[1]) : nullptr;
+    types_.push_back(desc.type);
+    if (a == nullptr && b == nullptr) {
+      diagnostics.Warning({world.source_path, 0, 0},
+                          "joint " + std::to_string(j) + " (" + WorldJointTypeName(desc.type) +
+                              ") holds nothing that moves; it is left out");
+      joints_.push_back(nullptr);
+      continue;
+    }
+    joints_.push_back(MakeJoint(ode_world, desc, a, b));
+  }
+}
+
+void OdeWorldJoints::Clear() {
+  for (dJointID joint : joints_) {
+    if (joint != nullptr) dJointDestroy(joint);
+  }
+  joints_.clear();
+  types_.clear();
+}
+
+double OdeWorldJoints::Position(int joint) const {
+  dJointID j = joints_.at(static_cast<size_t>(joint));
+  if (j == nullptr) return 0.0;
+  if (types_[joint] == WorldJointType::kHinge) return dJointGetHingeAngle(j);
+  if (types_[joint] == WorldJointType::kSlider) return dJointGetSliderPosition(j);
+  return 0.0;
+}
+
+double OdeWorldJoints::Rate(int joint) const {
+  dJointID j = joints_.at(static_cast<size_t>(joint));
+  if (j == nullptr) return 0.0;
+  if (types_[joint] == WorldJointType::kHinge) return dJointGetHingeAngleRate(j);
+  if (types_[joint] == WorldJointType::kSlider) return dJointGetSliderPositionRate(j);
+  return 0.0;
+}
+
+}  // namespace lamina::core

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+// The world-level joints of a world (WorldJointDesc: `<simulation><joint>`) as ODE joints
+// between the bodies the simulator built: fixed, hinge and slider, with their limits as ODE
+// stops and their friction as a zero-velocity motor whose force limit is the friction (as
+// Klamp't's ODEJoint). A terrain, or a link welded to the world, stands for the world.
+// Positions count from the pose the bodies had when the joints were built: the world's initial
+// poses (the simulator builds them there), so a hinge reads 0 rad and a slider 0 m at the start.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "core/diagnostics.h"
+#include "core/model/world_desc.h"
+#include "core/sim/ode_fwd.h"
+
+namespace lamina::core {
+
+class OdeWorldJoints {
+ public:
+  OdeWorldJoints() = default;
+  OdeWorldJoints(const OdeWorldJoints&) = delete;
+  OdeWorldJoints& operator=(const OdeWorldJoints&) = delete;
+  ~OdeWorldJoints() { Clear(); }
+
+  /// The ODE body of a joint's body (null: the world).
+  using BodyOf = std::function<dxBody*(const WorldJointBody&)>;
+  /// Builds world.joints in `ode_world` with the bodies where they are now. A joint whose
+  /// bodies are all static is skipped with a warning (it holds nothing that moves).
+  void Build(dxWorld* ode_world, const WorldDesc& world, const BodyOf& body_of,
+             Diagnostics& diagnostics);
+  /// Destroys the joints (before the ODE world or the bodies go).
+  void Clear();
+
+  int size() const { return static_cast<int>(joints_.size()); }
+  /// Joint `joint` of world.joints: the hinge angle (rad) or slider travel (m) from the initial
+  /// pose, and its rate (rad/s or m/s); 0 for a fixed or skipped joint.
+  double Position(int joint) const;
+  double Rate(int joint) const;
+
+ private:
+  std::vector<dxJoint*> joints_;  ///< one per WorldJointDesc; null when skipped
+  std::vector<WorldJointType> types_;
+};
+
+}  // namespace lamina::core
