@@ -28,7 +28,7 @@ bool IsFloatingJoint(JointType type) {
          type == JointType::kBallAndSocket;
 }
 
-// The link whose value an affine driver is read from: the first with a nonzero scale, or -1.
+// The first of an affine driver's links with a nonzero scale, or -1 (none: the driver is unusable).
 int AffineReadIndex(const DriverDesc& driver) {
   for (size_t j = 0; j < driver.links.size() && j < driver.affine_scale.size(); ++j) {
     if (driver.affine_scale[j] != 0) return static_cast<int>(j);
@@ -167,20 +167,38 @@ bool RobotController::UsableDriver(int d) const {
 
 // ---- mapping -----------------------------------------------------------------------------
 
+namespace {
+
+// An affine driver's value from its links: the v whose line q_j = o_j + s_j v is nearest to them
+// (least squares), Σ s_j (q_j − o_j) / Σ s_j²; with `velocity` the same for dq (no offsets).
+// The PID then acts along the scale vector s and the transmission correction, orthogonal to s,
+// on the rest: a load on any of the links is shared as the model says, whatever the links'
+// order. Klamp't averages (q_j − o_j)/s_j (the same for scales of equal size); reading the first
+// link alone, as Lamina did, left a loaded second link 4.5·τ/kP off (docs/motion.md).
+double AffineProjection(const DriverDesc& driver, const VecX& values, bool velocity) {
+  double along = 0.0, norm = 0.0;
+  for (size_t j = 0; j < driver.links.size() && j < driver.affine_scale.size(); ++j) {
+    const double s = driver.affine_scale[j];
+    along += s * (values[driver.links[j]] - (velocity ? 0.0 : AffineOffset(driver, j)));
+    norm += s * s;
+  }
+  return along / norm;  // norm > 0: UsableDriver requires a nonzero scale
+}
+
+}  // namespace
+
 double RobotController::DriverValue(int d, const VecX& q) const {
   if (!UsableDriver(d)) return 0;
   const DriverDesc& driver = robot_->drivers[d];
   if (driver.type != DriverType::kAffine) return q[driver.links[0]];
-  const size_t j = static_cast<size_t>(AffineReadIndex(driver));
-  return (q[driver.links[j]] - AffineOffset(driver, j)) / driver.affine_scale[j];
+  return AffineProjection(driver, q, false);
 }
 
 double RobotController::DriverVelocity(int d, const VecX& dq) const {
   if (!UsableDriver(d)) return 0;
   const DriverDesc& driver = robot_->drivers[d];
   if (driver.type != DriverType::kAffine) return dq[driver.links[0]];
-  const size_t j = static_cast<size_t>(AffineReadIndex(driver));
-  return dq[driver.links[j]] / driver.affine_scale[j];
+  return AffineProjection(driver, dq, true);
 }
 
 VecX RobotController::DriverValues(const VecX& q) const {

@@ -53,8 +53,8 @@ inline constexpr double kDefaultAccelerationMax = 10.0;
 ///
 /// Driver ↔ link mapping (driver value v):
 /// - normal: v = q[link];
-/// - affine: q[links[j]] = offset_j + scale_j·v, read back from the first link with a nonzero
-///   scale;
+/// - affine: q[links[j]] = offset_j + scale_j·v, read back as the least-squares v of all its
+///   links, Σ scale_j (q_j − offset_j) / Σ scale_j² (Klamp't averages (q_j − offset_j)/scale_j);
 /// - translation / rotation ({axis link, body link}): v = q[axis link], the virtual floating-base
 ///   DOF whose axis the force/torque acts along; its effort goes on that link index (the
 ///   simulator turns a virtual link's generalized force into a body force/torque along the

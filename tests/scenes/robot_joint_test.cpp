@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // One-link robots on ODE against analytic answers: a pendulum's period, PID control from any
-// angle, torque limits, joint stops, dry and viscous joint friction.
+// angle, torque limits, joint stops, dry and viscous joint friction; and a pair of links coupled
+// by one affine driver holding a load.
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -68,6 +69,49 @@ TEST(RobotJointTest, PidPendulumReachesItsTargetFromAnyAngle) {
     const double q = simulator.GetRobotConfig(0)[0];
     EXPECT_NEAR(std::remainder(q - target, 2 * core::kPi), 0.0, 5e-3);
     EXPECT_NEAR(simulator.GetRobotVelocity(0)[0], 0.0, 5e-3);
+  }
+}
+
+// Two links hinged to the world about y, coupled by one affine driver (scales 1, 1): a "catch"
+// with its centre of mass on its axis and a 1 kg "handle" with its centre of mass 0.2 m out,
+// which gravity turns by tau = m g L cos q. `order` lists the driver's links.
+core::WorldDesc CoupledPair(const std::string& order, double servo_i) {
+  return test::WorldWithRobot(
+      "links \"catch\" \"handle\"\nparents -1 -1\n"
+      "TParent 1 0 0  0 1 0  0 0 1  0 0 1   1 0 0  0 1 0  0 0 1  0 0.5 1\n"
+      "axis 0 1 0  0 1 0\njointtype r r\nqmin -3 -3\nqmax 3 3\nmass 1 1\n"
+      "com 0 0 0  0.2 0 0\n"
+      "inertia 0.01 0 0 0 0.01 0 0 0 0.01  0.001 0 0 0 0.001 0 0 0 0.001\n"
+      "joint normal 0\njoint normal 1\n"
+      "driver affine 2 " +
+      order +
+      "  1 1  0 0  -3 3  -10 10  -100 100\n"
+      "servoP 100\nservoI " +
+      std::to_string(servo_i) + "\nservoD 5\n");
+}
+
+// The statics of the pair (docs/motion.md): the driver's PD acts along the scale vector on the
+// least-squares driver value, the transmission correction (stiffness 0.25 kP) across it. With a
+// load tau on the handle: handle 2.5 tau/kP and catch -1.5 tau/kP off their commands without
+// integral action, +-2 tau/kP with it; whatever the order of the links in the driver.
+TEST(RobotJointTest, AnAffinePairHoldsALoadAsItsTransmissionLawSays) {
+  constexpr double kP = 100.0, kHandleMass = 1.0, kArm = 0.2;
+  const auto load = [&](double q) { return kHandleMass * kGravity * kArm * std::cos(q); };
+  struct Case {
+    const char* order;
+    double servo_i, loaded, other;  // offsets from the command, in units of tau / kP
+  } cases[] = {{"0 1", 0.0, 2.5, -1.5}, {"1 0", 0.0, 2.5, -1.5}, {"0 1", 100.0, 2.0, -2.0}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(std::string("links ") + c.order + ", kI " + std::to_string(c.servo_i));
+    core::Simulator simulator(CoupledPair(c.order, c.servo_i));
+    simulator.Simulate(10.0);
+    ASSERT_NE(simulator.statistics().worst_status, core::StepStatus::kError);
+    double handle = 0.0;  // the equilibrium: handle = loaded tau(handle) / kP
+    for (int k = 0; k < 50; ++k) handle = c.loaded * load(handle) / kP;
+    const VecX q = simulator.GetRobotConfig(0);
+    EXPECT_NEAR(q[1], handle, 0.01 * handle);
+    EXPECT_NEAR(q[0], c.other * load(handle) / kP, 0.01 * std::abs(handle));
+    EXPECT_NEAR(simulator.GetRobotVelocity(0).norm(), 0.0, 1e-3);
   }
 }
 

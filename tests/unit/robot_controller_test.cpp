@@ -150,7 +150,9 @@ TEST(RobotControllerTest, AffineForcesAreScaledWithAnOrthogonalCorrection) {
   // PID holding driver value 0 while the links are off the affine line: the correction does no
   // work along the scale vector (s·f = |s|²·τ) and pulls the links back onto the line.
   ASSERT_TRUE(controller.SetPIDCommand(Eigen::Vector2d(0, 0), Eigen::Vector2d(0, 0)));
-  const VecX q(Eigen::Vector3d(0, 0.1, 0.4));  // driver value 0 read from link 1
+  // off the line: link 1 alone says 0, link 2 alone 0.2·(−1)⁻¹ = −0.2; least squares −0.04
+  const VecX q(Eigen::Vector3d(0, 0.1, 0.4));
+  EXPECT_NEAR(controller.DriverValue(1, q), (2 * 0.0 - 1 * 0.2) / 5, 1e-15);
   controller.ComputeLinkForces(q, VecX::Zero(3), &forces);
   const Eigen::Vector2d scale(2, -1);
   const double effort = controller.DriverEfforts(q, VecX::Zero(3))[1];
@@ -189,7 +191,8 @@ TEST(RobotControllerTest, FirstUpdateHoldsTheSensedConfigClampedIntoLimits) {
   RobotController controller(AffineRobot());
   ASSERT_TRUE(controller.Update(0, Eigen::Vector3d(3, 0.5, 0.2), VecX::Zero(3)));
   EXPECT_EQ(controller.actuators()[0].q_des, 2);  // clamped to q_max
-  EXPECT_NEAR(controller.actuators()[1].q_des, 0.2, 1e-15);
+  // links 1 and 2 say (0.5 - 0.1) / 2 = 0.2 and (0.2 - 0.2) / -1 = 0: least squares 0.16
+  EXPECT_NEAR(controller.actuators()[1].q_des, (2 * 0.4 - 1 * 0.0) / 5, 1e-15);
 }
 
 TEST(RobotControllerTest, MilestoneIsReachedAtTheRampMinimumTime) {
