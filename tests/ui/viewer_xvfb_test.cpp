@@ -3,6 +3,7 @@
 // screenshot, and the picture must be non-blank and match `lamina-headless shot` of the same
 // scene (OSMesa) within tolerance; plus smoke tests of the panels, FXAA, --bench-frames, a
 // missing world and bad options. Skipped with a message when xvfb-run is missing.
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -52,7 +54,10 @@ int RunCommand(const std::string& command, const std::string& log) {
 int RunUnderXvfb(const std::string& command, const std::string& log) {
   const std::string script = log + ".sh", exit_file = log + ".exit";
   std::ofstream(script) << command << " > " << log << " 2>&1\necho $? > " << exit_file << "\n";
-  for (int attempt = 0; attempt < 2; ++attempt) {
+  // xvfb-run -a can lose the race for a display number to a server another test starts (the
+  // script then never runs): try again after a pause
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    if (attempt > 0) std::this_thread::sleep_for(std::chrono::milliseconds(500 * attempt));
     std::remove(exit_file.c_str());
     RunCommand("xvfb-run -a -s \"-screen 0 1280x720x24\" sh " + script, log + ".xvfb");
     std::ifstream exit_code(exit_file);
