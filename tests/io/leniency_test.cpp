@@ -4,6 +4,7 @@
 // to the last value, an inertia asymmetric by rounding, a collision pair naming one link twice.
 // Each is read as Klamp't reads it, with a warning whose exact file:line text is checked; what
 // is really wrong stays an error.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,21 @@ std::unique_ptr<test::LoadedRobot> RobotText(const std::string& name, const std:
                                              std::string* path) {
   *path = test::WriteScratchFile(name, text);
   return test::LoadRobot(*path);
+}
+
+struct LoadedObject {
+  core::Diagnostics diagnostics;
+  core::MeshCache meshes;
+  core::RigidObjectDesc object;
+  bool ok = false;
+};
+
+// an `.obj` object file as a world file would load it
+std::unique_ptr<LoadedObject> LoadObject(const std::string& path) {
+  auto loaded = std::make_unique<LoadedObject>();
+  core::LoadContext context{loaded->diagnostics, loaded->meshes};
+  loaded->ok = core::LoadRigidObjectFile(path, {"w.xml", 1, 0}, context, &loaded->object);
+  return loaded;
 }
 
 std::vector<std::string> Warnings(const core::Diagnostics& diagnostics) {
@@ -69,14 +85,10 @@ TEST(Leniency, GluedContinuationInPathAndObjectFiles) {
   const std::string mesh = test::WorldsPath("klampt/objects/cube.off");
   const std::string object =
       test::WriteScratchFile("glued.obj", "mesh \"" + mesh + "\"\nmass 2\\\n\nkFriction 0.3\n");
-  core::Diagnostics object_diagnostics;
-  core::MeshCache meshes;
-  core::LoadContext context{object_diagnostics, meshes};
-  core::RigidObjectDesc desc;
-  ASSERT_TRUE(core::LoadRigidObjectFile(object, {"w.xml", 1, 0}, context, &desc))
-      << object_diagnostics.FormatAll();
-  EXPECT_EQ(desc.mass, 2.0);
-  EXPECT_THAT(Warnings(object_diagnostics),
+  const auto loaded = LoadObject(object);
+  ASSERT_TRUE(loaded->ok) << loaded->diagnostics.FormatAll();
+  EXPECT_EQ(loaded->object.mass, 2.0);
+  EXPECT_THAT(Warnings(loaded->diagnostics),
               ElementsAre(object + ":2:6: warning: '2\\': the line continuation is glued to the "
                                    "value; read as '2', continued on the next line (as Klamp't)"));
 }
@@ -105,14 +117,10 @@ TEST(Leniency, InertiaAsymmetricByRoundingIsSymmetrisedInRobObjAndWorldFiles) {
   const std::string mesh = test::WorldsPath("klampt/objects/cube.off");
   const std::string object = test::WriteScratchFile(
       "rounded.obj", "mesh \"" + mesh + "\"\nmass 1\ninertia " + kRoundedInertia + "\n");
-  core::Diagnostics diagnostics;
-  core::MeshCache meshes;
-  core::LoadContext context{diagnostics, meshes};
-  core::RigidObjectDesc desc;
-  ASSERT_TRUE(core::LoadRigidObjectFile(object, {"w.xml", 1, 0}, context, &desc))
-      << diagnostics.FormatAll();
-  EXPECT_DOUBLE_EQ(desc.inertia(2, 1), 8.845e-06);
-  EXPECT_THAT(Warnings(diagnostics),
+  const auto loaded_object = LoadObject(object);
+  ASSERT_TRUE(loaded_object->ok) << loaded_object->diagnostics.FormatAll();
+  EXPECT_DOUBLE_EQ(loaded_object->object.inertia(2, 1), 8.845e-06);
+  EXPECT_THAT(Warnings(loaded_object->diagnostics),
               ElementsAre(object + ":3: warning: 'inertia' " + kRoundedWarning));
 
   const std::string world = test::WriteScratchFile(
