@@ -21,7 +21,7 @@ def render(sim, fn, size="1280x720", camera="", overlay="", samples=4):
     OffscreenRenderer(size, camera, overlay, samples).save(sim, str(fn))
 
 
-def run(sim, idle=None, size="1280x720", camera="", overlay="", running=False, frames=0,
+def run(sim, idle=None, size="1280x720", camera="bodies", overlay="", running=False, frames=0,
         screenshot=""):
     """Opens Lamina's window on `sim` (a Simulator this script drives) and returns when it is
     closed. Press s to run and stop the simulation (as in Klamp't's simulation template), Escape
@@ -29,6 +29,8 @@ def run(sim, idle=None, size="1280x720", camera="", overlay="", running=False, f
     to move the simulation on (e.g. set controller commands, then sim.simulate(dt)); returning
     False from it closes the window. Without `idle` the window simulates in real time.
 
+    The camera starts framing the bodies that move (camera='bodies'; 'world' frames everything,
+    terrains included; or a camera description as lamina-headless --camera takes).
     running=True starts it running; frames=N closes after N frames and screenshot='f.png'
     writes the last one (for scripts and tests). The window needs a display (X11 or Xvfb); an
     exception raised in `idle` closes the window and propagates."""
