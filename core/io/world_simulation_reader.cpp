@@ -281,7 +281,7 @@ bool SimulationReader::ReadJointShape(const XmlElementReader& reader, WorldJoint
 void SimulationReader::ReadJoint(const XMLElement& element) {
   const XmlElementReader reader = Reader(element);
   reader.WarnUnknownAttributes(
-      {"type", "point", "axis", "min", "minimum", "max", "maximum", "friction"});
+      {"type", "point", "axis", "min", "minimum", "max", "maximum", "minimax", "friction"});
   WorldJointDesc joint;
   bool ok = ReadJointShape(reader, &joint);
   for (const XMLElement* e = element.FirstChildElement(); e; e = e->NextSiblingElement()) {
@@ -299,7 +299,14 @@ void SimulationReader::ReadJoint(const XMLElement& element) {
     return;
   }
   const char* min_name = reader.Has("minimum") ? "minimum" : "min";
-  const char* max_name = reader.Has("maximum") ? "maximum" : "max";
+  // Klamp't's reader takes the upper limit from "minimax" (a typo): its files may use it
+  const char* max_name = reader.Has("maximum") ? "maximum" : reader.Has("max") ? "max" : "minimax";
+  if (reader.Has("minimax")) {
+    reader.Warning(std::string("'minimax' is read as the upper limit, as Klamp't reads it") +
+                   (std::string(max_name) == "minimax"
+                        ? ""
+                        : "; '" + std::string(max_name) + "' is given too and wins"));
+  }
   if (const auto min = reader.Number(min_name)) joint.min = *min;
   if (const auto max = reader.Number(max_name)) joint.max = *max;
   if (const auto friction = reader.Number("friction", false)) joint.friction = *friction;

@@ -109,6 +109,19 @@ std::string DrawerWorld(const std::string& extra) {
          ">\n      <rigidObject index=\"0\"/>\n    </joint>\n  </simulation>\n</world>\n";
 }
 
+// Klamp't reads a joint's upper limit from "minimax" (its reader's typo), so its files may say so
+TEST(WorldJointTest, KlamptsMinimaxIsReadAsTheUpperLimitWithAWarning) {
+  const std::string xml = DoorWorld(" minimax=\"0.7\"");
+  const std::string file = test::WriteScratchFile("door_minimax.xml", xml);
+  test::LoadedWorld loaded;
+  test::LoadWorld(file, &loaded);
+  ASSERT_TRUE(loaded.ok) << loaded.diagnostics.FormatAll();
+  EXPECT_EQ(loaded.world.joints[0].max, 0.7);
+  EXPECT_THAT(loaded.diagnostics.Messages(core::Severity::kWarning),
+              ElementsAre(file + ":7: warning: <joint>: 'minimax' is read as the upper limit, as "
+                                 "Klamp't reads it"));
+}
+
 TEST(WorldJointTest, ADrawerSlidesToItsStop) {
   core::Simulator simulator(Load("drawer.xml", DrawerWorld("")));
   simulator.Simulate(1.0);
