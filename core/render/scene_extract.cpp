@@ -232,39 +232,26 @@ int JointBodyId(const WorldDesc& world, const WorldJointBody& body) {
   return -1;
 }
 
-// how the joint's first moving body moved from its initial pose (identity for the world)
-Pose JointMotion(const WorldDesc& world, const WorldPoses& poses, const WorldJointDesc& joint) {
-  for (const WorldJointBody& body : joint.bodies) {
-    const int id = JointBodyId(world, body);
-    if (id < 0) continue;
-    const std::optional<Pose> now = DrawnBodyFrame(world, poses, id);
-    const std::optional<Pose> start = DrawnBodyFrame(world, InitialPoses(world), id);
-    if (now && start) return *now * start->inverse();
-  }
-  return Pose::Identity();
-}
-
-// the drawn centre of mass of a joint's first body that moves (nullopt: it holds only terrains)
-std::optional<Vec3> JointBodyCentre(const WorldDesc& world, const WorldPoses& poses,
-                                    const WorldJointDesc& joint) {
-  for (const WorldJointBody& body : joint.bodies) {
-    const int id = JointBodyId(world, body);
-    const std::optional<Pose> frame = id >= 0 ? DrawnBodyFrame(world, poses, id) : std::nullopt;
-    if (!frame) continue;
-    const bool object = body.kind == WorldId::Kind::kRigidObject;
-    return *frame *
-           (object ? world.objects[body.index].com : world.robots[body.index].links[body.link].com);
-  }
-  return std::nullopt;
-}
-
-// each world joint where it is now, at its first moving body: a hinge as its axis level with the
-// body's centre of mass, a slider as its direction through it, a fixed joint as a point there
+// each world joint where it is now, at its first moving body (the world when it holds only
+// terrains): a hinge as its axis level with the body's centre of mass, a slider as its direction
+// through it, a fixed joint as a point there. `initial` gives the frame the joint was made at.
 void AddJoints(const WorldDesc& world, const WorldPoses& poses, float marker, RenderScene* scene) {
+  const WorldPoses initial = InitialPoses(world);
   const double length = std::max(40.0 * marker, 0.1);
   for (const WorldJointDesc& joint : world.joints) {
-    const Pose motion = JointMotion(world, poses, joint);
-    const std::optional<Vec3> centre = JointBodyCentre(world, poses, joint);
+    Pose motion = Pose::Identity();  // how the first moving body moved from its initial pose
+    std::optional<Vec3> centre;
+    for (const WorldJointBody& body : joint.bodies) {
+      const int id = JointBodyId(world, body);
+      const std::optional<Pose> now = id >= 0 ? DrawnBodyFrame(world, poses, id) : std::nullopt;
+      const std::optional<Pose> start = id >= 0 ? DrawnBodyFrame(world, initial, id) : std::nullopt;
+      if (!now || !start) continue;
+      motion = *now * start->inverse();
+      const bool object = body.kind == WorldId::Kind::kRigidObject;
+      centre = *now * (object ? world.objects[body.index].com
+                              : world.robots[body.index].links[body.link].com);
+      break;
+    }
     const Vec3 axis = motion.linear() * joint.axis;
     Vec3 at = centre ? *centre : motion * joint.point;
     if (joint.type == WorldJointType::kHinge) {
