@@ -10,6 +10,7 @@
 #include "core/io/rob_statements.h"
 #include "core/io/robot_file.h"
 #include "core/io/text_statements.h"
+#include "core/sensors/robot_sensors.h"
 
 namespace lamina::core {
 
@@ -37,10 +38,12 @@ std::vector<int> ResolveMountLinks(const RobBuild& build) {
   return links;
 }
 
-// `property` lines; `controller` and `sensors` naming an .xml file hold that file's text
+// `property` lines; `controller` and `sensors` naming an .xml file hold that file's text; the
+// sensors are checked now, so that their problems are reported at their file:line
 void ApplyProperties(const RobBuild& build) {
   for (const PropertyStatement& property : build.statements.properties) {
     std::string value = property.value;
+    SourceLocation where = build.At(property.line);
     const bool may_be_file = property.name == "controller" || property.name == "sensors";
     if (may_be_file && LowerExtension(value) == "xml" && value.find('<') == std::string::npos) {
       const std::string file = ResolvePath(DirectoryOf(build.path), value);
@@ -48,8 +51,12 @@ void ApplyProperties(const RobBuild& build) {
         build.Error(property.line, "cannot read '" + property.name + "' file '" + file + "'");
         continue;
       }
+      where = {file, 1, 0};
     }
     build.robot.properties[property.name] = value;
+    if (property.name == "sensors") {
+      ParseSensorsXml(value, build.robot, where, &build.context.diagnostics);
+    }
   }
 }
 

@@ -20,6 +20,7 @@
 #include "core/io/robot_file.h"
 #include "core/io/text_statements.h"
 #include "core/io/urdf_xml.h"
+#include "core/sensors/robot_sensors.h"
 
 namespace lamina::core {
 
@@ -542,6 +543,9 @@ bool ParseUrdfNested(const std::string& text, const std::string& path, LoadConte
     ResolvePairs(robot, self, "selfcollision", true, path, diagnostics, &robot.self_collision);
     ResolvePairs(robot, no_self, "noselfcollision", true, path, diagnostics,
                  &robot.no_self_collision);
+    if (const auto sensors = robot.properties.find("sensors"); sensors != robot.properties.end()) {
+      ParseSensorsXml(sensors->second, robot, extras.sensors_at, &diagnostics);
+    }
   }
   *out = std::move(robot);
   return diagnostics.error_count() == errors_before;

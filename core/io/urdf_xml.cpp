@@ -118,12 +118,14 @@ void ReadProperty(const XmlElementReader& reader, const char* name, const std::s
       reader.Error(name, "names '" + file + "', which cannot be read");
       out->properties.erase(name);
     }
+    if (std::string(name) == "sensors") out->sensors_at = {file, 1, 0};
     return;
   }
   if (const XMLElement* child = reader.element().FirstChildElement(name)) {
     tinyxml2::XMLPrinter printer(nullptr, true);
     child->Accept(&printer);
     out->properties[name] = printer.CStr();
+    if (std::string(name) == "sensors") out->sensors_at = {path, child->GetLineNum(), 0};
   }
 }
 

@@ -59,6 +59,9 @@ struct KlamptExtras {
   std::vector<rob::PairStatement> self_collision, no_self_collision;
   std::vector<rob::MountStatement> mounts;
   std::map<std::string, std::string> properties;  ///< `sensors`, `controller`
+  /// Where the `sensors` text starts: its file's line 1, or the `<sensors>` element's line
+  /// (the element's problems are all reported there).
+  SourceLocation sensors_at;
 };
 
 /// Reads `<robot><klampt>` (if any) into `out`; unknown attributes and elements are warnings.

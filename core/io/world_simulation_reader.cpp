@@ -8,6 +8,7 @@
 
 #include "core/io/param_text.h"
 #include "core/number_text.h"
+#include "core/sensors/robot_sensors.h"
 
 namespace lamina::core {
 
@@ -201,6 +202,9 @@ void SimulationReader::ReadRobotRef(const XMLElement& element) {
       tinyxml2::XMLPrinter printer(nullptr, true);
       e->Accept(&printer);
       robot.properties[property] = printer.CStr();
+      if (std::string(property) == "sensors") {
+        ParseSensorsElement(*e, robot, path_, 0, &diagnostics_);
+      }
     }
   }
 }

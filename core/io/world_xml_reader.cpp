@@ -19,6 +19,7 @@
 #include "core/io/world_xml_transform.h"
 #include "core/io/xml_element_reader.h"
 #include "core/model/params.h"
+#include "core/sensors/robot_sensors.h"
 
 namespace lamina::core {
 
@@ -60,6 +61,7 @@ class WorldReader {
   }
   void ReadRobot(const XMLElement& element);
   void ReadRobotChildren(const XMLElement& element, RobotDesc* robot);
+  void ReadSensors(const XMLElement& element, RobotDesc* robot);
   void ReadRobotConfig(const XmlElementReader& reader, RobotDesc* robot);
   void ReadRobotVelocity(const XmlElementReader& reader, RobotDesc* robot);
   void ReadObject(const XMLElement& element);
@@ -164,14 +166,31 @@ void WorldReader::ReadRobotChildren(const XMLElement& element, RobotDesc* robot)
       display.erase("link");
       robot->link_display.emplace_back(link, std::move(display));
     } else if (name == "sensors") {
-      tinyxml2::XMLPrinter printer(nullptr, true);
-      e->Accept(&printer);
-      robot->properties["sensors"] =
-          e->Attribute("file") ? std::string(e->Attribute("file")) : printer.CStr();
+      ReadSensors(*e, robot);
     } else {
       Reader(*e).Warning("unknown element ignored");
     }
   }
+}
+
+// `<sensors>` inline or `file=` (read now, relative to the world file): the robot's `sensors`
+// property holds the XML text; the sensors are checked here to report at their file:line
+void WorldReader::ReadSensors(const XMLElement& element, RobotDesc* robot) {
+  if (const char* file = element.Attribute("file")) {
+    const std::string path = ResolvePath(dir_, file);
+    std::string text;
+    if (!ReadFileText(path, &text)) {
+      Reader(element).Error("cannot read sensors file '" + path + "'");
+      return;
+    }
+    robot->properties["sensors"] = text;
+    ParseSensorsXml(text, *robot, {path, 1, 0}, &context_.diagnostics);
+    return;
+  }
+  tinyxml2::XMLPrinter printer(nullptr, true);
+  element.Accept(&printer);
+  robot->properties["sensors"] = printer.CStr();
+  ParseSensorsElement(element, *robot, path_, 0, &context_.diagnostics);
 }
 
 void WorldReader::ReadObject(const XMLElement& element) {

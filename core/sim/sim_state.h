@@ -6,6 +6,7 @@
 
 #include "core/control/robot_controller.h"
 #include "core/math_types.h"
+#include "core/sensors/robot_sensors.h"
 #include "core/sim/friction_anchor.h"
 #include "core/sim/robot_joint_state.h"
 
@@ -30,6 +31,7 @@ struct RobotSimState {
   std::vector<BodyState> bodies;  ///< one per body of the robot, in link order
   RobotJointState joints;
   RobotControllerState controller;
+  RobotSensorsState sensors;  ///< captured and restored with the controller
   /// Physical state only (the controller's state has no equality).
   bool operator==(const RobotSimState& other) const {
     return bodies == other.bodies && joints == other.joints;

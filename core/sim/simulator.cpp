@@ -68,6 +68,7 @@ Simulator::Simulator(const WorldDesc& world)
   Build();
   // made once: callers may hold references to them, and rebuilds keep their settings
   for (RobotDesc& robot : world_.robots) controllers_.push_back(RobotController::ViewOf(&robot));
+  BuildSensors();
   ApplyInitialState();
 }
 
@@ -369,6 +370,7 @@ Simulator::SubStep Simulator::Halt(const std::string& error) {
   last_good_ = guard_.rollback_state();  // the start of the step that failed
   for (int r = 0; r < robot_count(); ++r) {
     last_good_.robots[r].controller = controllers_[r].GetState();
+    last_good_.robots[r].sensors = sensors_[r].GetState();
   }
   if (!error.empty()) statistics_.error = error;
   statistics_.worst_status = StepStatus::kError;

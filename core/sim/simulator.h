@@ -265,6 +265,18 @@ class Simulator {
   const RobotController& controller(int robot) const;
   /// Clamped driver efforts at the current state (driver-sized; Klamp't getActualTorque).
   VecX GetActuatorTorques(int robot) const;
+
+  /// The robot's sensors (core/sensors/robot_sensors.h): sampled at the start of every physics
+  /// step before its controller, each at its own rate (simulator_sensors.cpp).
+  RobotSensors& sensors(int robot);
+  const RobotSensors& sensors(int robot) const;
+  /// What camera sensors render through (null: cameras measure nothing); not owned, and must
+  /// outlive its use. A simulation without cameras never calls it.
+  void SetCameraRenderer(CameraRenderer* renderer) { camera_renderer_ = renderer; }
+  /// Distance (m) from `origin` along unit `direction` to the first body surface (padding not
+  /// counted), skipping body `ignore_id` (-1: none); +inf beyond `max_distance`.
+  double CastRay(const Vec3& origin, const Vec3& direction, double max_distance,
+                 int ignore_id = -1) const;
   /// No physics: runs the controllers for dt, advances the time and moves every robot to its
   /// commanded configuration with the commanded velocities. Objects stay where they are.
   void FakeSimulate(double dt);
@@ -376,6 +388,12 @@ class Simulator {
   void RobotLinksChanged(int robot, unsigned changes);
   int RequireRobot(int robot) const;
 
+  // sensors (simulator_sensors.cpp)
+  void BuildSensors();
+  void SampleSensors(int robot, double step);
+  void RecordSensorStep(int robot, double step);
+  std::vector<LinkContact> RobotContacts(int robot) const;
+
   // edits (simulator_edit.cpp)
   void ApplySettingsEdit(const ParamSpec& spec);
   void ApplyBodyEdit(const ElementIndex& element, const ParamSpec& spec);
@@ -426,6 +444,8 @@ class Simulator {
   std::vector<std::unique_ptr<OdeRobot>> robots_;
   OdeWorldJoints world_joints_;
   std::vector<RobotController> controllers_;
+  std::vector<RobotSensors> sensors_;  ///< per robot; made once, as the controllers
+  CameraRenderer* camera_renderer_ = nullptr;
   std::vector<std::vector<std::pair<int, int>>> self_collision_pairs_;  ///< per robot, sorted
   std::vector<RobotScratch> robot_scratch_;  ///< per robot, reused every sub-step
   std::vector<int> collidable_;              ///< ids of bodies with geometry, for the broad phase

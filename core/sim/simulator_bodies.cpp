@@ -130,6 +130,7 @@ void Simulator::ApplyInitialState() {
     SetRobotVelocity(r, robot.InitialVelocity());
     controllers_[r] = RobotController::ViewOf(&world_.robots[r]);
     controllers_[r].SetGravity(world_.settings.gravity);
+    if (r < static_cast<int>(sensors_.size())) sensors_[r].Reset();
   }
   anchors_.Clear();
   sleep_.WakeAll(&bodies_);

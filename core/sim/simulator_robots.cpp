@@ -111,6 +111,7 @@ std::shared_ptr<const CollisionGeometry> Simulator::LinkCollisionGeometry(int ro
 // step, with the state at the start of the step as its sensor readings
 void Simulator::RunControllers(double step) {
   for (int r = 0; r < robot_count(); ++r) {
+    SampleSensors(r, step);
     RobotController& controller = controllers_[r];
     if (!controller.ControlDue(time_ + step)) continue;
     RobotScratch& scratch = robot_scratch_[r];
@@ -148,6 +149,7 @@ void Simulator::PrepareRobotsForStep(double step) {
 void Simulator::AcceptRobotStep(double step) {
   for (int r = 0; r < robot_count(); ++r) {
     robots_[r]->AcceptStep();
+    RecordSensorStep(r, step);
     RobotScratch& scratch = robot_scratch_[r];
     robots_[r]->GetConfig(&scratch.q);
     controllers_[r].AcceptStep(scratch.q, step);
@@ -165,7 +167,9 @@ void Simulator::CaptureRobotState(SimState* state, bool with_controllers) const 
       robot_state.bodies.push_back(ReadBodyState(robot.link(l).body));
     }
     robot.CaptureJointState(&robot_state.joints);
-    if (with_controllers) robot_state.controller = controllers_[r].GetState();
+    if (!with_controllers) continue;
+    robot_state.controller = controllers_[r].GetState();
+    robot_state.sensors = sensors_[r].GetState();
   }
 }
 
@@ -185,6 +189,7 @@ void Simulator::RestoreRobotState(const SimState& state) {
 void Simulator::RestoreControllers(const SimState& state) {
   for (int r = 0; r < robot_count() && r < static_cast<int>(state.robots.size()); ++r) {
     controllers_[r].SetState(state.robots[r].controller);
+    sensors_[r].SetState(state.robots[r].sensors);
   }
 }
 
