@@ -12,8 +12,9 @@
 // its joint (Klamp't's sign), in the link frame (all six axes by default; Klamp't's default
 // 0 0 0 read zero until set): force (N) and torque (N·m) about the link's
 // origin (the joint; Klamp't takes it about the link's centre of mass). It is found by
-// Newton–Euler on the subtree from the inputs (gravity, the last step's accelerations and
-// contacts): under a static load of mass m it reads m·g and the load's moment about the joint.
+// Newton–Euler on the subtree from the inputs (gravity, the accelerations since the previous
+// sample and the last step's contacts): under a static load of mass m it reads m·g and the
+// load's moment about the joint.
 // Forces a user applies (mouse spring, held wrenches) are not inputs: they read as if the joint
 // carried them.
 #include <array>

@@ -118,6 +118,15 @@ std::vector<std::unique_ptr<Sensor>> ParseSensorsXml(const std::string& xml,
   return ParseSensorsElement(*root, robot, first_line.file, offset, diagnostics);
 }
 
+bool IsImageSensor(const Sensor& sensor) {
+  const Sensor* s = &sensor;
+  while (const auto* wrapper = dynamic_cast<const WrapperSensor*>(s)) {
+    if (!wrapper->wrapped()) return false;
+    s = wrapper->wrapped();
+  }
+  return std::string(s->type()) == "CameraSensor";
+}
+
 RobotSensors::RobotSensors(const RobotDesc& robot, Diagnostics* diagnostics) {
   const auto it = robot.properties.find("sensors");
   if (it != robot.properties.end()) {
@@ -166,9 +175,17 @@ bool RobotSensors::AnyDue(double time) const {
   return false;
 }
 
+VecX RobotSensors::MeanAcceleration(double time, const VecX& dq) const {
+  const double dt = time - sample_time_;
+  if (!started_ || dt <= 0.0 || sample_dq_.size() != dq.size()) return VecX::Zero(dq.size());
+  return (dq - sample_dq_) / dt;
+}
+
 void RobotSensors::Sample(const SensorInputs& inputs, double step, double control_period) {
   if (!started_) std::fill(next_times_.begin(), next_times_.end(), inputs.time);
   started_ = true;
+  sample_time_ = inputs.time;
+  sample_dq_ = inputs.dq;
   for (int i = 0; i < size(); ++i) {
     Sensor& s = *sensors_[i];
     if (!s.enabled() || inputs.time < next_times_[i] - kTimeTolerance) continue;
@@ -179,11 +196,6 @@ void RobotSensors::Sample(const SensorInputs& inputs, double step, double contro
   }
 }
 
-void RobotSensors::RecordStep(VecX ddq, std::vector<LinkContact> contacts) {
-  ddq_ = std::move(ddq);
-  contacts_ = std::move(contacts);
-}
-
 void RobotSensors::Reset() {
   for (auto& s : sensors_) {
     s->Reset();
@@ -191,7 +203,8 @@ void RobotSensors::Reset() {
   }
   next_times_.assign(sensors_.size(), 0.0);
   started_ = false;
-  ddq_.resize(0);
+  sample_time_ = 0.0;
+  sample_dq_.resize(0);
   contacts_.clear();
 }
 
@@ -204,7 +217,8 @@ RobotSensorsState RobotSensors::GetState() const {
     state.internal.push_back(s->InternalState());
     state.noise_counts.push_back(s->noise().count());
   }
-  state.ddq = ddq_;
+  state.sample_time = sample_time_;
+  state.sample_dq = sample_dq_;
   state.contacts = contacts_;
   return state;
 }
@@ -222,7 +236,8 @@ bool RobotSensors::SetState(const RobotSensorsState& state) {
     sensors_[i]->SetInternalState(state.internal[i]);
     sensors_[i]->noise().set_count(state.noise_counts[i]);
   }
-  ddq_ = state.ddq;
+  sample_time_ = state.sample_time;
+  sample_dq_ = state.sample_dq;
   contacts_ = state.contacts;
   return true;
 }

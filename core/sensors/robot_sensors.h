@@ -34,7 +34,8 @@ struct RobotSensorsState {
   std::vector<double> next_times;  ///< s, per sensor
   std::vector<std::vector<double>> measurements, internal;
   std::vector<std::uint64_t> noise_counts;
-  VecX ddq;                           ///< the last physics step's joint accelerations
+  double sample_time = 0.0;            ///< s, of the last sample (when started)
+  VecX sample_dq;                      ///< the joint rates then
   std::vector<LinkContact> contacts;  ///< the last physics step's contacts on the robot
 };
 
@@ -52,6 +53,10 @@ std::vector<std::unique_ptr<Sensor>> ParseSensorsXml(const std::string& xml,
                                                      const RobotDesc& robot,
                                                      const SourceLocation& first_line,
                                                      Diagnostics* diagnostics);
+
+/// A sensor whose measurements are an image (CameraSensor): left out of logs and reports, which
+/// list it with its size only (`run --sensor-images` writes the images).
+bool IsImageSensor(const Sensor& sensor);
 
 class RobotSensors {
  public:
@@ -75,12 +80,17 @@ class RobotSensors {
   bool needs_contacts() const;
   /// Some enabled sensor is due in a step starting at `time` (s).
   bool AnyDue(double time) const;
-  /// Samples every due sensor (see the schedule above) for a step of `step` s.
+  /// Samples every due sensor (see the schedule above) for a step of `step` s, and keeps the
+  /// time and the joint rates of `inputs` for the next MeanAcceleration.
   void Sample(const SensorInputs& inputs, double step, double control_period);
-  /// After an accepted physics step: its joint accelerations and contacts, inputs of the next
-  /// samples.
-  void RecordStep(VecX ddq, std::vector<LinkContact> contacts);
-  const VecX& last_ddq() const { return ddq_; }
+  /// The joint accelerations sensors see at `time` with rates `dq`: the mean since the robot's
+  /// last sample, (dq − dq_last) / (time − t_last) (zero before the first). Like Klamp't's
+  /// difference over the sensor period, this is what a sampled sensor's anti-aliasing gives: a
+  /// sample at the control rate does not alias a stiff servo's vibration at the physics rate
+  /// into a bias (a TX90 tracking a ramp read 48 m/s² of it from one-step differences).
+  VecX MeanAcceleration(double time, const VecX& dq) const;
+  /// After an accepted physics step: its contacts on the robot, inputs of the next samples.
+  void RecordContacts(std::vector<LinkContact> contacts) { contacts_ = std::move(contacts); }
   const std::vector<LinkContact>& last_contacts() const { return contacts_; }
 
   /// Back to the start: every sensor reset, no sample taken.
@@ -95,7 +105,8 @@ class RobotSensors {
   std::vector<double> next_times_;
   bool started_ = false;
   bool defaults_ = false;
-  VecX ddq_;
+  double sample_time_ = 0.0;
+  VecX sample_dq_;
   std::vector<LinkContact> contacts_;
 };
 

@@ -12,7 +12,8 @@
 // Differences from Klamp't (its quirk list; fixed rather than copied, docs/sensors.md):
 // - the accelerometer reads specific force, a − g (at rest it reads +9.8 along the world's up
 //   axis, in free fall 0), where Klamp't adds g (reading −9.8 at rest and −19.6 in free fall);
-//   link accelerations come from the last physics step, not a difference over the sensor period;
+//   joint accelerations are the mean since the robot's previous sample (RobotSensors), where
+//   Klamp't differences each sensor's velocity over its own period;
 // - gyroscopes read in the link frame (a real gyro), where Klamp't reports world-frame rates;
 // - TransformedSensor's `maximum` is an upper bound (Klamp't applies it as a second minimum);
 // - CorruptedSensor with resolution 0 does not quantise (Klamp't divides by it);
@@ -73,7 +74,7 @@ class CameraRenderer {
 struct SensorInputs {
   const RobotDesc* robot = nullptr;
   double time = 0.0;               ///< s
-  VecX q, dq, ddq;                 ///< link space; ddq over the last physics step
+  VecX q, dq, ddq;                 ///< link space; ddq the mean since the previous sample
   LinkMotion motion;               ///< link frames, velocities and accelerations (world)
   Vec3 gravity = Vec3(0, 0, -9.8); ///< m/s²
   VecX driver_torques;             ///< the drivers' clamped efforts, driver space

@@ -36,6 +36,28 @@ double Percent(double part, double total) {
   return total > 0.0 ? 100.0 * part / total : 0.0;
 }
 
+// each sensor's measurements by Klamp't's names (an image sensor: its size only; an infinite
+// reading, a laser's miss, is null in JSON)
+ordered_json SensorsJson(const RobotSensors& sensors) {
+  ordered_json out = ordered_json::array();
+  for (int i = 0; i < sensors.size(); ++i) {
+    const Sensor& s = sensors.sensor(i);
+    ordered_json sensor = {{"name", s.name()}, {"type", s.type()}, {"enabled", s.enabled()}};
+    if (IsImageSensor(s)) {
+      sensor["measurement_count"] = s.measurements().size();
+    } else {
+      ordered_json values = ordered_json::object();
+      const std::vector<std::string> names = s.MeasurementNames();
+      for (size_t k = 0; k < names.size() && k < s.measurements().size(); ++k) {
+        values[names[k]] = s.measurements()[k];
+      }
+      sensor["measurements"] = values;
+    }
+    out.push_back(sensor);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
@@ -87,6 +109,7 @@ std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
           std::vector<double>(commanded.data(), commanded.data() + commanded.size());
       robot["tracking_error"] = (commanded - q).cwiseAbs().maxCoeff();
     }
+    robot["sensors"] = SensorsJson(simulator.sensors(r));
     robots.push_back(robot);
   }
   out["robots"] = robots;

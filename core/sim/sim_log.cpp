@@ -6,6 +6,46 @@
 
 namespace lamina::core {
 
+namespace {
+
+// Klamp't SimTest's sensor columns, `<robot>_<sensor>[<measurement>]` and an empty column per
+// sensor, after every robot's state; image sensors are left out (their measurements are images)
+std::string SensorHeader(const Simulator& simulator) {
+  std::string header;
+  for (int r = 0; r < simulator.robot_count(); ++r) {
+    const RobotSensors& sensors = simulator.sensors(r);
+    for (int i = 0; i < sensors.size(); ++i) {
+      const Sensor& s = sensors.sensor(i);
+      if (IsImageSensor(s)) continue;
+      const std::string prefix = simulator.world().robots[r].name + "_" + s.name() + "[";
+      for (const std::string& name : s.MeasurementNames()) header += prefix + name + "],";
+      header += ",";
+    }
+  }
+  return header;
+}
+
+// a sensor with fewer measurements than names (a delayed one before its first delivery)
+// leaves the rest of its columns empty
+std::string SensorRow(const Simulator& simulator) {
+  std::string row;
+  for (int r = 0; r < simulator.robot_count(); ++r) {
+    const RobotSensors& sensors = simulator.sensors(r);
+    for (int i = 0; i < sensors.size(); ++i) {
+      const Sensor& s = sensors.sensor(i);
+      if (IsImageSensor(s)) continue;
+      const size_t n = s.MeasurementNames().size();
+      for (size_t k = 0; k < n; ++k) {
+        row += (k < s.measurements().size() ? FormatDouble(s.measurements()[k]) : "") + ",";
+      }
+      row += ",";
+    }
+  }
+  return row;
+}
+
+}  // namespace
+
 std::string SimLogHeader(const Simulator& simulator) {
   std::string header = "time,";
   // robots first, as Klamp't's simtest_log.csv: configuration, velocity, actuator torques
@@ -18,6 +58,7 @@ std::string SimLogHeader(const Simulator& simulator) {
     }
     header += ",";
   }
+  header += SensorHeader(simulator);
   for (const RigidObjectDesc& object : simulator.world().objects) {
     for (const char* column :
          {"_x", "_y", "_z", "_rz", "_ry", "_rx", "_dx", "_dy", "_dz", "_wz", "_wy", "_wx"}) {
@@ -37,6 +78,7 @@ std::string SimLogRow(const Simulator& simulator) {
     }
     row += ",";
   }
+  row += SensorRow(simulator);
   for (int i = 0; i < simulator.object_count(); ++i) {
     const Pose pose = simulator.GetObjectPose(i);
     const Vec3 rpy = RollPitchYawFromRotation(pose.linear());

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
-// The simulation CSV log in Klamp't SimTest's `simtest_log.csv` layout (objects part): a `time`
-// column, then per object `_x,_y,_z,_rz,_ry,_rx,_dx,_dy,_dz,_wz,_wy,_wx` and an empty column.
+// The simulation CSV log in Klamp't SimTest's `simtest_log.csv` layout: a `time` column, per robot
+// its q, dq and actuator torques, then per sensor `<robot>_<sensor>[<measurement>]` columns and an
+// empty column (images left out), then per object `_x,_y,_z,_rz,_ry,_rx,_dx,_dy,_dz,_wz,_wy,_wx`
+// and an empty column.
 #pragma once
 
 #include <ostream>

@@ -391,7 +391,7 @@ class Simulator {
   // sensors (simulator_sensors.cpp)
   void BuildSensors();
   void SampleSensors(int robot, double step);
-  void RecordSensorStep(int robot, double step);
+  void RecordSensorStep(int robot);
   std::vector<LinkContact> RobotContacts(int robot) const;
 
   // edits (simulator_edit.cpp)

@@ -149,7 +149,7 @@ void Simulator::PrepareRobotsForStep(double step) {
 void Simulator::AcceptRobotStep(double step) {
   for (int r = 0; r < robot_count(); ++r) {
     robots_[r]->AcceptStep();
-    RecordSensorStep(r, step);
+    RecordSensorStep(r);
     RobotScratch& scratch = robot_scratch_[r];
     robots_[r]->GetConfig(&scratch.q);
     controllers_[r].AcceptStep(scratch.q, step);

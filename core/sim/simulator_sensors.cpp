@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The Simulator's robot sensors: built once with the controllers, sampled at the start of every
 // physics step before the controllers (Klamp't's order), fed after every accepted step with the
-// step's joint accelerations and, for robots with contact or force/torque sensors, the contacts
-// on their links (from the contact feedback those sensors register), and a ray caster over the
+// contacts on the links of robots with contact or force/torque sensors (from the contact feedback those sensors register), and a ray caster over the
 // bodies for laser range sensors.
 #include <cmath>
 
@@ -56,7 +55,7 @@ void Simulator::SampleSensors(int robot, double step) {
   in.time = time_;
   in.q = GetRobotConfig(robot);
   in.dq = GetRobotVelocity(robot);
-  in.ddq = sensors.last_ddq().size() == desc.dof() ? sensors.last_ddq() : VecX::Zero(desc.dof());
+  in.ddq = sensors.MeanAcceleration(time_, in.dq);
   in.motion = ComputeLinkMotion(desc, in.q, in.dq, in.ddq);
   in.gravity = world_.settings.gravity;
   in.driver_torques = controllers_[robot].DriverEfforts(in.q, in.dq);
@@ -84,16 +83,10 @@ std::vector<LinkContact> Simulator::RobotContacts(int robot) const {
   return out;
 }
 
-// after an accepted step of `step` s: ddq = (dq_end − dq_start) / step (the start's rates are
-// the ones PrepareRobotsForStep read)
-void Simulator::RecordSensorStep(int robot, double step) {
+// after an accepted step: the contacts on the robot's links, for its contact and force sensors
+void Simulator::RecordSensorStep(int robot) {
   RobotSensors& sensors = sensors_[robot];
-  const VecX& start = robot_scratch_[robot].dq;
-  const VecX end = GetRobotVelocity(robot);
-  VecX ddq = step > 0.0 && start.size() == end.size() ? VecX((end - start) / step)
-                                                       : VecX::Zero(end.size());
-  sensors.RecordStep(std::move(ddq), sensors.needs_contacts() ? RobotContacts(robot)
-                                                              : std::vector<LinkContact>{});
+  if (sensors.needs_contacts()) sensors.RecordContacts(RobotContacts(robot));
 }
 
 }  // namespace lamina::core
