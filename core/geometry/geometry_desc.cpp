@@ -9,10 +9,15 @@ int GeometryDesc::triangle_count() const {
   return (kind == GeometryKind::kMesh && mesh) ? mesh->triangle_count() : 0;
 }
 
+int GeometryDesc::point_count() const {
+  return (kind == GeometryKind::kPointCloud && point_cloud) ? point_cloud->point_count() : 0;
+}
+
 TriangleMesh BakedMesh(const GeometryDesc& geometry) {
   TriangleMesh out;
   switch (geometry.kind) {
     case GeometryKind::kNone:
+    case GeometryKind::kPointCloud:
       return out;
     case GeometryKind::kMesh:
       if (geometry.mesh) out = *geometry.mesh;
@@ -28,6 +33,11 @@ TriangleMesh BakedMesh(const GeometryDesc& geometry) {
     for (Eigen::Vector3i& t : out.triangles) std::swap(t[1], t[2]);
   }
   return out;
+}
+
+std::vector<Vec3> BakedPoints(const GeometryDesc& geometry) {
+  if (geometry.kind != GeometryKind::kPointCloud || !geometry.point_cloud) return {};
+  return TransformedPoints(*geometry.point_cloud, geometry.Matrix());
 }
 
 }  // namespace lamina::core

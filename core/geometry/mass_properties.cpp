@@ -5,6 +5,8 @@
 #include <cmath>
 #include <optional>
 
+#include <Eigen/Eigenvalues>
+
 #include "core/geometry/tessellate.h"
 
 namespace lamina::core {
@@ -159,6 +161,32 @@ MassProperties PrimitiveMassProperties(const Primitive& primitive, const Pose& p
   return FromDistribution(placement.translation(), Vec3::Zero(), second, mass);
 }
 
+// Unit masses at the points, relative to `reference`.
+Moments PointMoments(const std::vector<Vec3>& points, const Vec3& reference) {
+  Moments m;
+  for (const Vec3& p : points) {
+    m.measure += 1.0;
+    m.first += p - reference;
+    m.second += (p - reference) * (p - reference).transpose();
+  }
+  return m;
+}
+
+// Equal point masses (Klamp't's rule for point clouds: mean and covariance of the points).
+// Invalid without points or when they lie on one line (no inertia about it).
+MassProperties PointMassProperties(const std::vector<Vec3>& points, double mass) {
+  Eigen::AlignedBox3d bounds;
+  for (const Vec3& p : points) bounds.extend(p);
+  if (points.empty()) return MassProperties();
+  const Moments m = PointMoments(points, bounds.center());
+  MassProperties out =
+      FromDistribution(bounds.center(), m.first / m.measure, m.second / m.measure, 1.0);
+  const double least = Eigen::SelfAdjointEigenSolver<Mat3>(out.inertia).eigenvalues().minCoeff();
+  if (!(least > kDegenerateFraction * bounds.diagonal().squaredNorm())) return MassProperties();
+  out.inertia *= mass;
+  return out;
+}
+
 bool IsUniform(const Vec3& scale) {
   const double tolerance = 1e-12 * std::abs(scale.x());
   return std::abs(scale.y() - scale.x()) <= tolerance &&
@@ -227,6 +255,8 @@ MassProperties ComputeMassProperties(const GeometryDesc& geometry, double mass,
       return MassProperties();
     case GeometryKind::kMesh:
       return geometry.mesh ? ComputeMassProperties(BakedMesh(geometry), mass, f) : MassProperties();
+    case GeometryKind::kPointCloud:
+      return PointMassProperties(BakedPoints(geometry), mass);
     case GeometryKind::kPrimitive:
       break;
   }

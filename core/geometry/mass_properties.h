@@ -22,7 +22,10 @@ struct MassProperties {
 /// The mesh must be closed and outward-oriented for the solid part to be right.
 MassProperties ComputeMassProperties(const TriangleMesh& mesh, double mass,
                                      double surface_fraction);
-/// Same for a body's geometry (scale and transform applied; primitives analytically).
+/// Same for a body's geometry (scale and transform applied; primitives analytically). A point
+/// cloud has neither volume nor area: as in Klamp't, every point carries an equal share of the
+/// mass (`surface_fraction` is ignored); invalid when its points are collinear (or absent),
+/// since then the inertia about their line is zero.
 MassProperties ComputeMassProperties(const GeometryDesc& geometry, double mass,
                                      double surface_fraction);
 

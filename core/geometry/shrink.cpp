@@ -423,6 +423,10 @@ GeometryDesc ShrinkGeometry(const GeometryDesc& geometry, double amount, Diagnos
       return ShrinkMeshGeometry(geometry, amount, report);
     case GeometryKind::kPrimitive:
       return ShrinkPrimitiveGeometry(geometry, amount, report);
+    case GeometryKind::kPointCloud:
+      // points have no surface to move in (Klamp't: unsupported, unchanged)
+      report.Warn("cannot preshrink a point cloud (its points have no surface); left as is");
+      return geometry;
   }
   return geometry;
 }

@@ -44,6 +44,7 @@ ShrunkMesh ApproximateShrink(const TriangleMesh& mesh, double amount);
 ///  - meshes: ApproximateShrink in the frame where distances are body distances (scale baked
 ///    in, scale 1 and the transform kept; or everything baked in, when the transform is not
 ///    rigid). Warns when triangles flip.
+///  - point clouds: unchanged, with a warning (their points have no surface; Klamp't likewise).
 /// A dimension that would reach 0 is clamped to 1/1000 of its original value, with a warning.
 /// amount 0 returns a copy; a negative or non-finite amount returns a copy with a warning.
 /// Diagnostics are reported at `where`, or at the geometry's file when `where.file` is empty;

@@ -7,6 +7,7 @@
 
 #include "core/io/mesh_file.h"
 #include "core/io/paths.h"
+#include "core/io/point_cloud_file.h"
 #include "core/io/text_statements.h"
 
 namespace lamina::core {
@@ -203,6 +204,19 @@ class GeomParser {
   size_t first_value_ = 0;  // index of the first value read by the last ReadValues
 };
 
+bool LoadPointCloud(const std::string& path, const SourceLocation& at, LoadContext& context,
+                    GeometryDesc* out) {
+  std::shared_ptr<const PointCloud> cloud =
+      context.meshes.GetPointCloud(path, at, context.diagnostics);
+  if (!cloud) return false;
+  out->kind = GeometryKind::kPointCloud;
+  out->path = path;
+  out->mesh = nullptr;
+  out->primitive = Primitive();
+  out->point_cloud = std::move(cloud);
+  return true;
+}
+
 }  // namespace
 
 std::optional<Primitive> ParseGeomText(const std::string& text, const std::string& file,
@@ -226,12 +240,14 @@ bool LoadGeometryFile(const std::string& path, const SourceLocation& where, Load
     out->path = path;
     out->mesh = nullptr;
     out->primitive = *primitive;
+    out->point_cloud = nullptr;
     return true;
   }
   if (extension.empty()) {
     context.diagnostics.Error(at, "geometry file '" + path + "' has no extension");
     return false;
   }
+  if (IsPointCloudExtension(extension)) return LoadPointCloud(path, at, context, out);
   if (!IsMeshExtension(extension)) {
     context.diagnostics.Error(at, "unsupported geometry file type '." + extension + "'");
     return false;
@@ -242,6 +258,7 @@ bool LoadGeometryFile(const std::string& path, const SourceLocation& where, Load
   out->path = path;
   out->mesh = std::move(mesh);
   out->primitive = Primitive();
+  out->point_cloud = nullptr;
   return true;
 }
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Loading a geometry file of any kind: a mesh (through MeshCache) or a Klamp't `.geom` text
-// file holding a primitive.
+// Loading a geometry file of any kind: a mesh or a `.pcd` point cloud (through MeshCache), or a
+// Klamp't `.geom` text file holding a primitive.
 #pragma once
 
 #include <optional>
@@ -11,8 +11,8 @@
 
 namespace lamina::core {
 
-/// Fills `out->kind`, `path`, `mesh` or `primitive` from file `path` (absolute). Leaves scale,
-/// transform and margin alone. Returns false (with diagnostics) on failure.
+/// Fills `out->kind`, `path`, `mesh`, `primitive` or `point_cloud` from file `path` (absolute).
+/// Leaves scale, transform and margin alone. Returns false (with diagnostics) on failure.
 bool LoadGeometryFile(const std::string& path, const SourceLocation& where, LoadContext& context,
                       GeometryDesc* out);
 

@@ -118,14 +118,17 @@ class RobWriter {
   std::string out_;
 };
 
+// what an inline geometry is, for the note that it is not saved
+std::string InlineShapeName(const GeometryDesc& geometry) {
+  if (geometry.kind == GeometryKind::kPrimitive) return geometry.primitive.TypeName();
+  return geometry.kind == GeometryKind::kPointCloud ? "point cloud" : "mesh";
+}
+
 std::string RobWriter::FileOf(const GeometryDesc& geometry, int link) {
   if (!geometry.path.empty()) return RelativePath(geometry.path, rob_dir_);
   if (!geometry.empty()) {
-    notes_ +=
-        "# link " + std::to_string(link) + " ('" + robot_.links[link].name + "'): an inline " +
-        (geometry.kind == GeometryKind::kPrimitive ? std::string(geometry.primitive.TypeName())
-                                                   : std::string("mesh")) +
-        " without a file is not saved\n";
+    notes_ += "# link " + std::to_string(link) + " ('" + robot_.links[link].name +
+              "'): an inline " + InlineShapeName(geometry) + " without a file is not saved\n";
   }
   return "";
 }

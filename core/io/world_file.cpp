@@ -6,6 +6,7 @@
 #include "core/io/mesh_file.h"
 #include "core/io/object_file.h"
 #include "core/io/paths.h"
+#include "core/io/point_cloud_file.h"
 #include "core/io/robot_file.h"
 
 namespace lamina::core {
@@ -27,7 +28,7 @@ bool LoadSingleElement(const std::string& path, const std::string& extension, Lo
     out->objects.push_back(std::move(object));
     return true;
   }
-  if (extension == "env" || IsMeshExtension(extension)) {
+  if (extension == "env" || IsMeshExtension(extension) || IsPointCloudExtension(extension)) {
     TerrainDesc terrain;
     if (!LoadTerrainFile(path, where, context, &terrain)) return false;
     out->terrains.push_back(std::move(terrain));
@@ -35,7 +36,7 @@ bool LoadSingleElement(const std::string& path, const std::string& extension, Lo
   }
   context.diagnostics.Error(where,
                             "unsupported file type '." + extension +
-                                "' (expected a world .xml, .rob, .urdf, .obj, .env or mesh)");
+                                "' (expected a world .xml, .rob, .urdf, .obj, .env, mesh or .pcd)");
   return false;
 }
 

@@ -114,6 +114,9 @@ void Comparer::Geometry(const std::string& f, const GeometryDesc& a, const Geome
   if (a.kind == GeometryKind::kMesh && b.kind == GeometryKind::kMesh) {
     Integer(f + ".triangles", a.triangle_count(), b.triangle_count());
   }
+  if (a.kind == GeometryKind::kPointCloud && b.kind == GeometryKind::kPointCloud) {
+    Integer(f + ".points", a.point_count(), b.point_count());
+  }
 }
 
 void Comparer::Link(const std::string& f, const LinkDesc& a, const LinkDesc& b) {

@@ -70,6 +70,7 @@ ordered_json TerrainJson(const WorldDesc& world, int index) {
           {"name", terrain.name},
           {"file", terrain.geometry.path},
           {"triangles", terrain.geometry.triangle_count()},
+          {"points", terrain.geometry.point_count()},
           {"simulation",
            RowsJson(world, ElementIndex::Terrain(index), Rows(ElementKind::kTerrain, true))}};
 }
@@ -81,6 +82,7 @@ ordered_json ObjectJson(const WorldDesc& world, int index) {
                       {"name", object.name},
                       {"file", object.geometry.path},
                       {"triangles", object.geometry.triangle_count()},
+                      {"points", object.geometry.point_count()},
                       {"position", Vector(object.pose.translation())}};
   out.update(RowsJson(world, element, Rows(ElementKind::kObject, false)));
   out["simulation"] = RowsJson(world, element, Rows(ElementKind::kObject, true));
@@ -127,6 +129,7 @@ ordered_json RobotJson(const WorldDesc& world, int index) {
                       {"joints", joint_counts},
                       {"total_mass", robot.TotalMass()},
                       {"triangles", RobotTriangleCount(robot)},
+                      {"points", RobotPointCount(robot)},
                       {"self_collision_pairs", robot.SelfCollisionPairs().size()}};
   out.update(RowsJson(world, ElementIndex::Robot(index), ParamsOf(ElementKind::kRobot)));
   out["link_details"] = LinksJson(world, index);
@@ -164,12 +167,22 @@ std::string RowsText(const WorldDesc& world, const ElementIndex& element,
   return text;
 }
 
+// "12 triangles", or "1000 points" for a point cloud
+std::string ShapeText(const GeometryDesc& geometry) {
+  if (geometry.kind == GeometryKind::kPointCloud) {
+    return std::to_string(geometry.point_count()) + " points";
+  }
+  return std::to_string(geometry.triangle_count()) + " triangles";
+}
+
 std::string RobotText(const WorldDesc& world, int index) {
   const RobotDesc& r = world.robots[index];
   std::ostringstream out;
   out << "robot " << world.RobotId(index) << " '" << r.name << "': " << r.dof() << " DOFs ("
       << r.dof() << " links), " << r.drivers.size() << " drivers, total mass "
-      << Text(r.TotalMass()) << " kg, " << RobotTriangleCount(r) << " triangles\n";
+      << Text(r.TotalMass()) << " kg, " << RobotTriangleCount(r) << " triangles"
+      << (RobotPointCount(r) > 0 ? ", " + std::to_string(RobotPointCount(r)) + " points" : "")
+      << "\n";
   if (r.dof() > 0) {
     out << "  link 0: "
         << RowsText(world, ElementIndex::Link(index, 0), Rows(ElementKind::kLink, true)) << "\n";
@@ -183,6 +196,14 @@ std::string RobotText(const WorldDesc& world, int index) {
 }
 
 }  // namespace
+
+int RobotPointCount(const RobotDesc& robot) {
+  int points = 0;
+  for (const LinkDesc& link : robot.links) {
+    for (const GeometryDesc& geometry : link.geometry) points += geometry.point_count();
+  }
+  return points;
+}
 
 int RobotTriangleCount(const RobotDesc& robot) {
   int triangles = 0;
@@ -271,16 +292,16 @@ std::string WorldSummaryText(const WorldDesc& world) {
   out << "world " << world.name << " (" << world.source_path << ")\n";
   for (int i = 0; i < static_cast<int>(world.terrains.size()); ++i) {
     const TerrainDesc& t = world.terrains[i];
-    out << "terrain " << world.TerrainId(i) << " '" << t.name
-        << "': " << t.geometry.triangle_count() << " triangles\n  "
-        << RowsText(world, ElementIndex::Terrain(i), Rows(ElementKind::kTerrain, true)) << "\n";
+    out << "terrain " << world.TerrainId(i) << " '" << t.name << "': " << ShapeText(t.geometry)
+        << "\n  " << RowsText(world, ElementIndex::Terrain(i), Rows(ElementKind::kTerrain, true))
+        << "\n";
   }
   for (int i = 0; i < static_cast<int>(world.objects.size()); ++i) {
     const RigidObjectDesc& o = world.objects[i];
     const Vec3 p = o.pose.translation();
     out << "object " << world.ObjectId(i) << " '" << o.name << "': mass " << Text(o.mass) << " kg, "
-        << o.geometry.triangle_count() << " triangles, at (" << Text(p.x()) << ", " << Text(p.y())
-        << ", " << Text(p.z()) << ")\n  "
+        << ShapeText(o.geometry) << ", at (" << Text(p.x()) << ", " << Text(p.y()) << ", "
+        << Text(p.z()) << ")\n  "
         << RowsText(world, ElementIndex::Object(i), Rows(ElementKind::kObject, true)) << "\n";
   }
   for (int i = 0; i < static_cast<int>(world.robots.size()); ++i) out << RobotText(world, i);

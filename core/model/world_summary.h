@@ -24,5 +24,7 @@ std::string ParamsJson(const WorldDesc& world, const ElementIndex& element);
 
 /// Triangles of all of a robot's link geometry.
 int RobotTriangleCount(const RobotDesc& robot);
+/// Points of every point-cloud geometry of the robot's links.
+int RobotPointCount(const RobotDesc& robot);
 
 }  // namespace lamina::core

@@ -180,7 +180,7 @@ TEST(WorldErrorsTest, UnsupportedFileType) {
   test::LoadWorld(path, &loaded);
   EXPECT_THAT(loaded.diagnostics.Messages(Severity::kError),
               ElementsAre(path + ": error: unsupported file type '.txt' (expected a world .xml, "
-                                 ".rob, .urdf, .obj, .env or mesh)"));
+                                 ".rob, .urdf, .obj, .env, mesh or .pcd)"));
 }
 
 }  // namespace

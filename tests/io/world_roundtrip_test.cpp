@@ -58,7 +58,8 @@ INSTANTIATE_TEST_SUITE_P(AllExamples, RoundTripTest,
                                            "klampt/simulation_test_worlds/heavyblocktest.xml",
                                            "klampt/simulation_test_worlds/slideblock.xml",
                                            "klampt/simulation_test_worlds/stacktest.xml",
-                                           "klampt/simulation_test_worlds/stiffness_test.xml"));
+                                           "klampt/simulation_test_worlds/stiffness_test.xml",
+                                           "examples/point_clouds.xml"));
 
 TEST(WorldSaveTest, EditsSurviveSaving) {
   LoadedWorld original;
