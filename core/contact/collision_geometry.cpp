@@ -16,6 +16,7 @@
 #include <fcl/narrowphase/detail/primitive_shape_algorithm/triangle_distance.h>
 
 #include "core/contact/mesh_query.h"
+#include "core/contact/point_cloud_contacts.h"
 
 namespace lamina::core {
 
@@ -542,6 +543,12 @@ void TrianglesNearBox(const MeshBvh& bvh, const Pose& X_mesh_box, const Vec3& ha
   CollectTriangles(bvh.model, 0, overlaps, std::numeric_limits<size_t>::max(), triangles);
 }
 
+void TrianglesNearAlignedBox(const MeshBvh& bvh, const Eigen::AlignedBox3d& bounds, double reach,
+                             std::vector<int>* triangles) {
+  if (bvh.model.getNumBVs() == 0 || bounds.isEmpty()) return;
+  TrianglesNearBounds(bvh.model, bounds, reach, std::numeric_limits<size_t>::max(), triangles);
+}
+
 void TrianglesBelowPlane(const MeshBvh& bvh, const Vec3& normal, double height,
                          std::vector<int>* triangles) {
   if (bvh.model.getNumBVs() == 0) return;
@@ -558,6 +565,16 @@ std::shared_ptr<const CollisionGeometry> CollisionGeometry::Build(const Geometry
   if (desc.kind == GeometryKind::kNone) return nullptr;
   auto geometry = std::make_shared<CollisionGeometry>();
   geometry->margin_ = desc.margin;
+  if (desc.kind == GeometryKind::kPointCloud) {
+    geometry->kind_ = Kind::kPointCloud;
+    geometry->points_ = BakedPoints(desc);
+    if (geometry->points_.empty()) return nullptr;
+    geometry->point_leaves_ =
+        point_cloud_detail::PartitionPoints(kPointsPerLeaf, &geometry->points_);
+    for (const PointLeaf& leaf : geometry->point_leaves_)
+      geometry->local_bounds_.extend(leaf.bounds);
+    return geometry;
+  }
   if (desc.kind == GeometryKind::kPrimitive) {
     const std::optional<Primitive> placed =
         PlacedPrimitive(desc.primitive, desc.Matrix() * desc.primitive.pose);
@@ -577,21 +594,32 @@ std::shared_ptr<const CollisionGeometry> CollisionGeometry::Build(const Geometry
   return geometry;
 }
 
+namespace {
+
+// the shared mesh or point cloud a geometry refers to; null for primitives
+const void* SharedShape(const GeometryDesc& desc) {
+  if (desc.kind == GeometryKind::kMesh) return desc.mesh.get();
+  if (desc.kind == GeometryKind::kPointCloud) return desc.point_cloud.get();
+  return nullptr;
+}
+
+}  // namespace
+
 std::shared_ptr<const CollisionGeometry> CollisionGeometryCache::Get(const GeometryDesc& desc) {
   if (desc.kind == GeometryKind::kNone) return nullptr;
-  // the key: the shared mesh (null for primitives), then every number that shapes the result
+  // the key: the shared mesh or cloud (null for primitives), then every number that shapes it
   std::vector<double> numbers;
   const Affine matrix = desc.Matrix();
   numbers.assign(matrix.matrix().data(), matrix.matrix().data() + 16);
   numbers.push_back(desc.margin);
+  numbers.push_back(static_cast<double>(desc.kind));
   if (desc.kind == GeometryKind::kPrimitive) {
     const Primitive& p = desc.primitive;
     numbers.push_back(static_cast<double>(p.type));
     numbers.insert(numbers.end(), {p.radius, p.length, p.size.x(), p.size.y(), p.size.z()});
     numbers.insert(numbers.end(), p.pose.matrix().data(), p.pose.matrix().data() + 16);
   }
-  const TriangleMesh* mesh = desc.kind == GeometryKind::kMesh ? desc.mesh.get() : nullptr;
-  auto key = std::make_pair(mesh, std::move(numbers));
+  auto key = std::make_pair(SharedShape(desc), std::move(numbers));
   const auto found = cache_.find(key);
   if (found != cache_.end()) return found->second;
   std::shared_ptr<const CollisionGeometry> built = CollisionGeometry::Build(desc);

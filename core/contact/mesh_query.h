@@ -108,6 +108,12 @@ void NearTrianglePairs(const MeshBvh& a, const MeshBvh& b, const Pose& X_ab, dou
 void TrianglesNearBox(const MeshBvh& bvh, const Pose& X_mesh_box, const Vec3& half_extents,
                       std::vector<int>* triangles);
 
+/// Triangles whose bounding volumes may come within `reach` of the axis-aligned `bounds` (mesh
+/// frame), appended to `triangles` in increasing order (a superset of the triangles within
+/// `reach` of the box). Cheaper per node than TrianglesNearBox (six separating axes, not 15).
+void TrianglesNearAlignedBox(const MeshBvh& bvh, const Eigen::AlignedBox3d& bounds, double reach,
+                             std::vector<int>* triangles);
+
 /// Triangles whose bounding volumes reach below `height` along the unit `normal` (points x
 /// with normal.dot(x) < height exist in the volume), appended to `triangles`.
 void TrianglesBelowPlane(const MeshBvh& bvh, const Vec3& normal, double height,

@@ -171,6 +171,7 @@ double RayCast(const CollisionGeometry& geometry, const Pose& X_W, const Vec3& o
   const double length = direction.norm();
   if (!(length > 0.0) || !std::isfinite(length) || !(max_distance >= 0.0)) return kInf;
   const Vec3 unit = direction / length;
+  if (geometry.kind() == CollisionGeometry::Kind::kPointCloud) return kInf;  // no surface
   if (geometry.kind() == CollisionGeometry::Kind::kMesh) {
     return MeshRayCast(geometry, InFrame(X_W, origin, unit), max_distance);
   }

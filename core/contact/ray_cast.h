@@ -18,6 +18,8 @@
 //  - Meshes need not be closed, so they have no inside: they are two-sided surfaces, hit from
 //    either side of each triangle. A ray that starts inside a closed mesh reads the distance to
 //    the wall it leaves through; a ray in the plane of a triangle does not hit that triangle.
+//  - Point clouds have no surface (their points have no size), so every ray misses them: a
+//    laser sees through a point cloud.
 #pragma once
 
 #include "core/contact/collision_geometry.h"
