@@ -18,7 +18,8 @@ struct RenderMesh {
   std::vector<Eigen::Vector3f> positions;
   /// Unit normal of each corner.
   std::vector<Eigen::Vector3f> normals;
-  /// Bounds of the positions (empty box when there are no triangles).
+  /// Bounds of the positions (empty box when there are no triangles); for one colour group of a
+  /// point cloud, of the whole cloud (RenderMeshCache::ColoredShapes), so boxes show the body.
   Eigen::AlignedBox3f bounds;
   /// Unique per built mesh in this process: renderers key their GPU copies on it.
   std::uint64_t serial = 0;

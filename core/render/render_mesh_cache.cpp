@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/geometry/tessellate.h"
+#include "core/render/point_markers.h"
 
 namespace lamina::core {
 
@@ -25,15 +26,36 @@ std::string PrimitiveKey(const Primitive& p) {
   return key;
 }
 
-std::string MeshKey(const TriangleMesh* mesh) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "mesh %p", static_cast<const void*>(mesh));
+// "mesh 0x…" or "cloud 0x…": a shared shape by its address
+std::string AddressKey(const char* what, const void* address) {
+  char buffer[48];
+  std::snprintf(buffer, sizeof(buffer), "%s %p", what, address);
   return buffer;
 }
 
 std::string ShapeKey(const GeometryDesc& geometry) {
   if (geometry.kind == GeometryKind::kPrimitive) return PrimitiveKey(geometry.primitive);
-  return MeshKey(geometry.mesh.get());
+  if (geometry.kind == GeometryKind::kPointCloud) {
+    return AddressKey("cloud", geometry.point_cloud.get());
+  }
+  return AddressKey("mesh", geometry.mesh.get());
+}
+
+// what the shape's key refers to, kept alive with the entry
+std::shared_ptr<const void> ShapeSource(const GeometryDesc& geometry) {
+  if (geometry.kind == GeometryKind::kPointCloud) return geometry.point_cloud;
+  return geometry.mesh;
+}
+
+// nothing to draw: no kind, or a mesh or cloud that is missing
+bool Undrawable(const GeometryDesc& geometry) {
+  return geometry.empty() || (geometry.kind == GeometryKind::kMesh && !geometry.mesh) ||
+         (geometry.kind == GeometryKind::kPointCloud && !geometry.point_cloud);
+}
+
+// the octahedra of a cloud's points, file coordinates
+TriangleMesh CloudMarkers(const PointCloud& cloud) {
+  return PointMarkers(cloud.points, PointMarkerRadius(cloud));
 }
 
 // a square of +-kPlaneDisplayHalfSize in the plane's z = 0, facing +z
@@ -97,20 +119,45 @@ std::shared_ptr<const RenderMesh> RenderMeshCache::Store(const std::string& key,
 }
 
 std::shared_ptr<const RenderMesh> RenderMeshCache::Shape(const GeometryDesc& geometry) {
-  if (geometry.empty() || (geometry.kind == GeometryKind::kMesh && !geometry.mesh)) return nullptr;
+  if (Undrawable(geometry)) return nullptr;
   const std::string key = ShapeKey(geometry);
   const auto found = meshes_.find(key);
   if (found != meshes_.end()) return found->second.mesh;
-  meshes_[key].source = geometry.mesh;
+  meshes_[key].source = ShapeSource(geometry);
   if (geometry.kind == GeometryKind::kPrimitive) {
     return Store(key, PrimitiveMesh(geometry.primitive));
   }
+  if (geometry.kind == GeometryKind::kPointCloud)
+    return Store(key, CloudMarkers(*geometry.point_cloud));
   return Store(key, *geometry.mesh);
+}
+
+const std::vector<ColoredShape>& RenderMeshCache::ColoredShapes(const GeometryDesc& geometry) {
+  static const std::vector<ColoredShape> kNone;
+  if (geometry.kind != GeometryKind::kPointCloud || !geometry.point_cloud) return kNone;
+  const PointCloud& cloud = *geometry.point_cloud;
+  const auto found = colored_.find(&cloud);
+  if (found != colored_.end()) return found->second.shapes;
+  ColoredEntry& entry = colored_[&cloud];
+  entry.source = geometry.point_cloud;
+  const double radius = PointMarkerRadius(cloud);
+  Eigen::AlignedBox3f whole;
+  std::vector<RenderMesh> meshes;
+  for (const PointColorGroup& group : GroupPointsByColor(cloud)) {
+    meshes.push_back(BuildRenderMesh(PointMarkers(group.points, radius)));
+    entry.shapes.push_back({nullptr, group.color});
+    whole.extend(meshes.back().bounds);
+  }
+  for (std::size_t g = 0; g < meshes.size(); ++g) {
+    meshes[g].bounds = whole;
+    entry.shapes[g].mesh = std::make_shared<const RenderMesh>(std::move(meshes[g]));
+  }
+  return entry.shapes;
 }
 
 std::shared_ptr<const RenderMesh> RenderMeshCache::PaddedShape(const GeometryDesc& geometry,
                                                                double padding) {
-  if (geometry.empty() || (geometry.kind == GeometryKind::kMesh && !geometry.mesh)) return nullptr;
+  if (Undrawable(geometry)) return nullptr;
   char suffix[64];
   std::snprintf(suffix, sizeof(suffix), " padded %.17g", padding);
   std::string key = ShapeKey(geometry) + suffix;
@@ -121,7 +168,10 @@ std::shared_ptr<const RenderMesh> RenderMeshCache::PaddedShape(const GeometryDes
   }
   const auto found = meshes_.find(key);
   if (found != meshes_.end()) return found->second.mesh;
-  meshes_[key].source = geometry.mesh;
+  meshes_[key].source = ShapeSource(geometry);
+  if (geometry.kind == GeometryKind::kPointCloud) {
+    return Store(key, PointMarkers(BakedPoints(geometry), padding));
+  }
   if (geometry.kind == GeometryKind::kPrimitive && UniformScale(geometry.scale)) {
     const Primitive grown = InflatePrimitive(geometry.primitive, padding / geometry.scale.x());
     return Store(key, Transformed(PrimitiveMesh(grown), matrix));

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 
 #include "core/robot/kinematics.h"
 
@@ -135,24 +136,40 @@ float MarkerSize(const RenderScene& scene) {
   return static_cast<float>(std::clamp(0.006 * diagonal, 0.002, 0.03));
 }
 
+void AddBodyItem(const BodyPart& part, std::shared_ptr<const RenderMesh> mesh, const Rgba& color,
+                 RenderScene* scene) {
+  DrawItem item;
+  item.mesh = std::move(mesh);
+  item.transform = (part.pose * part.geometry->Matrix()).matrix().cast<float>();
+  item.color = color;
+  item.world_id = part.world_id;
+  item.flags = kDrawNone;
+  if (part.terrain) item.flags |= kDrawTerrain;
+  if (part.selected) item.flags |= kDrawSelected;
+  if (item.color.w() < 1.0f) item.flags |= kDrawTranslucent;
+  scene->items.push_back(item);
+  if (IsPlane(*part.geometry)) return;
+  const Eigen::AlignedBox3d box = TransformedBox(item.mesh->bounds, item.transform);
+  scene->bounds.extend(box);
+  if (!part.terrain) scene->body_bounds.extend(box);
+}
+
+// a point cloud with colours: one item per colour group, in the file's colours (the body's
+// alpha kept)
+bool AddColoredBody(const BodyPart& part, RenderMeshCache* cache, RenderScene* scene) {
+  const std::vector<ColoredShape>& shapes = cache->ColoredShapes(*part.geometry);
+  for (const ColoredShape& shape : shapes) {
+    AddBodyItem(part, shape.mesh,
+                Rgba(shape.color.x(), shape.color.y(), shape.color.z(), part.color.w()), scene);
+  }
+  return !shapes.empty();
+}
+
 void AddBodies(const std::vector<BodyPart>& parts, RenderMeshCache* cache, RenderScene* scene) {
   for (const BodyPart& part : parts) {
+    if (AddColoredBody(part, cache, scene)) continue;
     std::shared_ptr<const RenderMesh> mesh = cache->Shape(*part.geometry);
-    if (!mesh) continue;
-    DrawItem item;
-    item.mesh = mesh;
-    item.transform = (part.pose * part.geometry->Matrix()).matrix().cast<float>();
-    item.color = part.color;
-    item.world_id = part.world_id;
-    item.flags = kDrawNone;
-    if (part.terrain) item.flags |= kDrawTerrain;
-    if (part.selected) item.flags |= kDrawSelected;
-    if (item.color.w() < 1.0f) item.flags |= kDrawTranslucent;
-    scene->items.push_back(item);
-    if (IsPlane(*part.geometry)) continue;
-    const Eigen::AlignedBox3d box = TransformedBox(mesh->bounds, item.transform);
-    scene->bounds.extend(box);
-    if (!part.terrain) scene->body_bounds.extend(box);
+    if (mesh) AddBodyItem(part, std::move(mesh), part.color, scene);
   }
 }
 

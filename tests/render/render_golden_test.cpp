@@ -4,7 +4,9 @@
 // more than 16 levels; a test fails when more than 0.5 % of the pixels differ (software rendering
 // is deterministic on one machine; the slack absorbs Mesa/LLVM version differences).
 // On failure <name>_actual.png and <name>_diff.png are written to the working directory.
-// LAMINA_UPDATE_GOLDEN=1 rewrites the references instead of comparing.
+// LAMINA_UPDATE_GOLDEN=1 rewrites the references instead of comparing. One test needs no golden:
+// a point cloud is found in the picture where its outline projects.
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -78,6 +80,20 @@ class RenderGoldenTest : public ::testing::Test {
     EXPECT_TRUE(core::CameraForScene(c.camera, scene, double(kWidth) / kHeight, &camera, &error))
         << error;
     renderer_->Render(scene, camera, kWidth, kHeight);
+    context_->SwapOrFinish();
+    return FromBottomUp(kWidth, kHeight, renderer_->ReadPixels(kWidth, kHeight));
+  }
+
+  // `world` at its initial poses from the camera `description`, no overlays; RGBA rows top first
+  static Image RenderWorld(const core::WorldDesc& world, const std::string& description,
+                           core::OrbitCamera* camera) {
+    core::RenderMeshCache meshes;
+    core::RenderScene scene;
+    core::ExtractScene(world, core::InitialPoses(world), {}, {}, &meshes, &scene);
+    std::string error;
+    EXPECT_TRUE(core::CameraForScene(description, scene, double(kWidth) / kHeight, camera, &error))
+        << error;
+    renderer_->Render(scene, *camera, kWidth, kHeight);
     context_->SwapOrFinish();
     return FromBottomUp(kWidth, kHeight, renderer_->ReadPixels(kWidth, kHeight));
   }
@@ -167,6 +183,53 @@ TEST_F(RenderGoldenTest, ShotCommandIsByteForByteRepeatable) {
   const std::string bytes_b((std::istreambuf_iterator<char>(b)), std::istreambuf_iterator<char>());
   EXPECT_GT(bytes_a.size(), 1000u);
   EXPECT_TRUE(bytes_a == bytes_b);
+}
+
+// The pixel of world point `p` (column, row from the top) for `camera`.
+Eigen::Vector2d PixelOf(const core::OrbitCamera& camera, const core::Vec3& p) {
+  const Eigen::Vector4d clip = camera.ProjectionMatrix(double(kWidth) / kHeight, 10.0) *
+                               camera.ViewMatrix() * p.homogeneous();
+  const Eigen::Vector2d ndc = clip.head<2>() / clip.w();
+  return Eigen::Vector2d((ndc.x() + 1.0) / 2.0 * kWidth, (1.0 - ndc.y()) / 2.0 * kHeight);
+}
+
+// Golden-free: the 800-point ball of worlds/examples/point_clouds.xml (0.1 m, six colour bands)
+// drawn by the GL renderer as it draws any mesh. Within 0.8 of the ball's projected radius most
+// pixels differ from the picture without the ball, and its green and blue bands show.
+TEST_F(RenderGoldenTest, PointCloudIsDrawnWhereItIsInItsColours) {
+  LoadedWorld loaded;
+  LoadWorld(WorldsPath("examples/point_clouds.xml"), &loaded);
+  ASSERT_TRUE(loaded.ok) << loaded.diagnostics.FormatAll();
+  core::WorldDesc without = loaded.world;
+  without.objects.erase(without.objects.begin() + 1);  // the ball
+  const std::string view = "target=0.35,0,0.3;yaw=20;pitch=15;dist=1;fov=45";
+  core::OrbitCamera camera;
+  const Image with_ball = RenderWorld(loaded.world, view, &camera);
+  const Image no_ball = RenderWorld(without, view, &camera);
+  const Eigen::Vector2d centre = PixelOf(camera, core::Vec3(0.35, 0, 0.3));
+  const double radius = (PixelOf(camera, core::Vec3(0.35, 0, 0.4)) - centre).norm();
+  EXPECT_GT(radius, 20.0);  // 0.1 m at 1 m with a 45 degree field of view: about 29 px
+  int inside = 0, differ = 0, green = 0, blue = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      if ((Eigen::Vector2d(x + 0.5, y + 0.5) - centre).norm() > 0.8 * radius) continue;
+      const std::uint8_t* a = &with_ball.rgba[4 * (y * kWidth + x)];
+      const std::uint8_t* b = &no_ball.rgba[4 * (y * kWidth + x)];
+      ++inside;
+      if (std::abs(a[0] - b[0]) <= kChannelThreshold &&
+          std::abs(a[1] - b[1]) <= kChannelThreshold &&
+          std::abs(a[2] - b[2]) <= kChannelThreshold) {
+        continue;  // the same pixel as without the ball: a gap between its points
+      }
+      ++differ;
+      green += (a[1] > a[0] + 20 && a[1] > a[2] + 20);
+      blue += (a[2] > a[0] + 20 && a[2] > a[1] + 20);
+    }
+  }
+  ASSERT_GT(inside, 1000);
+  EXPECT_GT(differ, inside / 2) << differ << " of " << inside << " pixels differ";
+  EXPECT_GT(green, 10);
+  EXPECT_GT(blue, 10);
 }
 
 }  // namespace

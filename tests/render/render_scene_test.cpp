@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Scene extraction without any GL: draw items per world, colours from display attributes and
 // defaults, mesh caching across frames, overlays and the overlay list parser; the description
-// drawn at poses that are not its own (WorldPoses), and where those poses come from.
+// drawn at poses that are not its own (WorldPoses), and where those poses come from; point
+// clouds as octahedra, grouped by the file's colours.
 #include <cmath>
 #include <iterator>
 #include <string>
@@ -11,6 +12,7 @@
 #include "core/render/display_color.h"
 #include "core/render/overlay_options.h"
 #include "core/render/picking.h"
+#include "core/render/point_markers.h"
 #include "core/render/scene_camera.h"
 #include "core/render/scene_extract.h"
 #include "core/render/world_poses.h"
@@ -369,6 +371,74 @@ TEST(RenderMeshTest, CreasesStaySharpAndOffsetsGrow) {
   }
   const TriangleMesh grown = OffsetMesh(box, 0.1);
   EXPECT_GT(grown.Bounds().sizes().x(), 1.1);
+}
+
+TEST(PointMarkersTest, AnOctahedronPerPointFacingOutward) {
+  const TriangleMesh mesh = PointMarkers({Vec3(0, 0, 0), Vec3(1, 2, 3)}, 0.01);
+  ASSERT_EQ(mesh.vertex_count(), 12);
+  ASSERT_EQ(mesh.triangle_count(), 16);
+  EXPECT_TRUE(test::IsClosedAndConsistent(mesh));
+  EXPECT_EQ(mesh.Bounds().max(), Vec3(1.01, 2.01, 3.01));
+  for (int t = 0; t < 8; ++t) {  // every face normal points away from its point
+    const Eigen::Vector3i& f = mesh.triangles[t];
+    const Vec3 n = (mesh.vertices[f[1]] - mesh.vertices[f[0]])
+                       .cross(mesh.vertices[f[2]] - mesh.vertices[f[0]]);
+    EXPECT_GT(n.dot(mesh.vertices[f[0]] + mesh.vertices[f[1]] + mesh.vertices[f[2]]), 0.0);
+  }
+  // 1016 points over a 0.346 m diagonal: half the spacing, 0.5 * 0.346 / sqrt(1016) = 5.4 mm
+  PointCloud cube;
+  for (int i = 0; i < 1016; ++i) cube.points.push_back(Vec3(i % 2, (i / 2) % 2, (i / 4) % 2) * 0.2);
+  EXPECT_NEAR(PointMarkerRadius(cube), 0.5 * std::sqrt(0.12) / std::sqrt(1016.0), 1e-15);
+}
+
+TEST(PointMarkersTest, ColoursGroupExactlyOrBinned) {
+  PointCloud cloud;
+  for (int i = 0; i < 6; ++i) {
+    cloud.points.push_back(Vec3(i, 0, 0));
+    cloud.colors.push_back(i % 2 == 0 ? 0xFF0000u : 0x0000FFu);
+  }
+  std::vector<PointColorGroup> groups = GroupPointsByColor(cloud);
+  ASSERT_EQ(groups.size(), 2u);
+  EXPECT_EQ(groups[0].color, Rgba(1, 0, 0, 1));
+  EXPECT_EQ(groups[1].points, (std::vector<Vec3>{Vec3(1, 0, 0), Vec3(3, 0, 0), Vec3(5, 0, 0)}));
+  // 4096 distinct colours: binned to 8 levels a channel, each group its members' mean colour
+  cloud = PointCloud();
+  for (std::uint32_t i = 0; i < 4096; ++i) {
+    cloud.points.push_back(Vec3(i, 0, 0));
+    cloud.colors.push_back(((i & 0xF) << 20) | (((i >> 4) & 0xF) << 12) | ((i >> 8) << 4));
+  }
+  groups = GroupPointsByColor(cloud);
+  EXPECT_EQ(groups.size(), 512u);
+  // the first bin holds red 0x00 and 0x10, green and blue likewise: means 0x08 / 255
+  EXPECT_NEAR(groups[0].color.x(), 8.0f / 255.0f, 1e-6f);
+  EXPECT_TRUE(GroupPointsByColor(PointCloud{{Vec3::Zero()}, {}}).empty());
+}
+
+TEST(RenderSceneTest, PointCloudsAreDrawnInTheirFilesColours) {
+  test::LoadedWorld loaded;
+  test::LoadWorld(test::WorldsPath("examples/point_clouds.xml"), &loaded);
+  ASSERT_TRUE(loaded.ok) << loaded.diagnostics.FormatAll();
+  RenderScene scene;
+  RenderMeshCache cache;
+  OverlayOptions options;
+  options.padding = true;
+  ExtractScene(loaded.world, InitialPoses(loaded.world), options, {}, &cache, &scene);
+  // the floor, the cube cloud's colour groups (1016 colours: binned), the ball's six bands, the
+  // block; then the padding shells of the three bodies (the floor has none)
+  int cube_items = 0, ball_items = 0;
+  const double cube_marker = PointMarkerRadius(*loaded.world.objects[0].geometry.point_cloud);
+  for (const DrawItem& item : scene.items) {
+    if (item.has(kDrawTranslucent)) continue;
+    ball_items += item.world_id == 2 ? 1 : 0;
+    if (item.world_id != 1) continue;
+    ++cube_items;
+    // each group's bounds are the whole cloud's: the cube's 0.2 m plus its markers
+    EXPECT_NEAR(item.mesh->bounds.sizes().x(), 0.2 + 2 * cube_marker, 1e-6);
+  }
+  EXPECT_GT(cube_items, 6);
+  EXPECT_LE(cube_items, 512);
+  EXPECT_EQ(ball_items, 6);
+  EXPECT_EQ(CountFlag(scene, kDrawTranslucent), 3);
 }
 
 }  // namespace
