@@ -4,9 +4,12 @@
 // point clouds in worlds (loading, sharing, automass, summaries).
 #include "core/io/point_cloud_file.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <tuple>
+#include <vector>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
