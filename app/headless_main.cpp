@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/headless_batch.h"
+#include "app/headless_sensors.h"
 #include "app/headless_render_commands.h"
 #include "core/control/send_motion.h"
 #include "core/io/trajectory_file.h"
@@ -179,6 +180,7 @@ struct RunOptions {
   bool sleep = false;             ///< Simulator::SetSleeping (else the world's setting)
   std::vector<std::string> sets;  ///< --set PATH=VALUE
   std::vector<std::string> gets;  ///< --get PATH
+  std::string sensor_images;      ///< --sensor-images DIR
 };
 
 // Klamp't SimTest logs every 0.01 s of simulated time
@@ -282,8 +284,19 @@ int RunSimulation(const RunOptions& options) {
   const auto targets = ResolveGets(options.gets, simulator);
   if (!targets) return 2;
   if (!options.motion.empty() && !SendMotionFile(options.motion, &simulator)) return 1;
+  lamina::app::SensorCameras cameras;
+  std::string error;
+  if (!cameras.Open(&simulator, options.sensor_images, &error)) {
+    std::cerr << "lamina-headless: sensor cameras: " << error << "\n";
+    return 1;
+  }
   lamina::core::RunTiming timing;
   if (!Advance(options, &simulator, &timing)) return 1;
+  if (cameras.failures() > 0) {
+    std::cerr << "lamina-headless: " << cameras.failures() << " sensor images could not be written, "
+              << "the first " << cameras.first_failure() << "\n";
+    return 1;
+  }
   return Report(options, simulator, timing, *targets);
 }
 
@@ -328,6 +341,9 @@ int main(int argc, char** argv) {
                                       "timed .path (or MultiPath .xml) sent to robot 0");
   run->add_option("--milestones", run_options.motion, ".milestones file sent to robot 0")
       ->excludes(path);
+  run->add_option("--sensor-images", run_options.sensor_images,
+                  "write every camera sensor's pictures into DIR (PNG colour, 16-bit PGM depth "
+                  "in mm)");
   AddSetOption(run, &run_options.sets);
   run->add_option("--get", run_options.gets,
                   "report the value an access path names at the end (repeatable)")

@@ -8,6 +8,7 @@
 #include "core/render/contact_markers.h"
 #include "core/render/scene_camera.h"
 #include "core/render/scene_extract.h"
+#include "core/render/sensor_overlay.h"
 #include "core/sim/simulator.h"
 #include "ui/platform/osmesa_context.h"
 #include "ui/render/renderer.h"
@@ -58,6 +59,7 @@ std::vector<std::uint8_t> OffscreenView::Render(const core::WorldDesc& world,
       simulator ? core::ContactMarkersFromSimulator(*simulator)
                 : std::vector<core::ContactMarker>();
   core::ExtractScene(world, poses, s.options.overlays, contacts, &s.meshes, &s.scene);
+  if (simulator) core::AddSensorOverlays(*simulator, s.options.overlays, &s.scene);
   if (!s.camera_chosen) {
     std::string ignored;  // the spec was validated by core::ParseViewOptions
     core::CameraForScene(s.options.camera, s.scene,

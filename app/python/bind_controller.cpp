@@ -8,6 +8,7 @@
 
 #include "app/python/bindings.h"
 #include "core/control/robot_controller.h"
+#include "core/sensors/robot_sensors.h"
 
 namespace lamina::python {
 
@@ -18,6 +19,23 @@ using core::VecX;
 
 RobotController& C(const PyController& c) {
   return c.sim->get().controller(c.robot);
+}
+
+// a sensor by index (negative from the end, as Python) or name
+int SensorIndex(const core::RobotSensors& sensors, py::handle which) {
+  if (py::isinstance<py::str>(which)) {
+    const std::string name = which.cast<std::string>();
+    const int i = sensors.Find(name);
+    if (i < 0) throw py::key_error("no sensor named '" + name + "'");
+    return i;
+  }
+  int i = which.cast<int>();
+  if (i < 0) i += sensors.size();
+  if (i < 0 || i >= sensors.size()) {
+    throw py::index_error("sensor " + std::to_string(which.cast<int>()) + ": the robot has " +
+                          std::to_string(sensors.size()) + " sensors");
+  }
+  return i;
 }
 
 void Check(const RobotController& controller, bool ok) {
@@ -126,7 +144,14 @@ void BindController(py::module_& m) {
              if (!k.SetControlPeriod(dt)) throw py::value_error("setRate: the period must be > 0");
            })
       .def("getRate", [](const PyController& c) { return C(c).control_period(); })
-      .def("remainingTime", [](const PyController& c) { return C(c).RemainingTime(); });
+      .def("remainingTime", [](const PyController& c) { return C(c).RemainingTime(); })
+      // sensors (bind_sensor.cpp): by index or name; IndexError / KeyError when missing
+      .def("numSensors",
+           [](const PyController& c) { return c.sim->get().sensors(c.robot).size(); })
+      .def("sensor", [](const PyController& c, py::handle which) {
+        const core::RobotSensors& sensors = c.sim->get().sensors(c.robot);
+        return PySensor{c.sim, c.robot, SensorIndex(sensors, which)};
+      });
 }
 
 }  // namespace lamina::python

@@ -62,6 +62,13 @@ struct PyController {
   int robot = 0;
 };
 
+/// A robot's sensor in a simulation (bind_sensor.cpp).
+struct PySensor {
+  std::shared_ptr<PySim> sim;
+  int robot = 0;
+  int index = 0;
+};
+
 // ---- conversions (convert.cpp) ------------------------------------------------------------
 /// Every number of a number or (nested) sequence, e.g. a numpy array or Klamp't's (R, t).
 std::vector<double> Flatten(py::handle value);
@@ -86,6 +93,7 @@ py::object AccessValueToPy(const core::AccessTarget& target, const std::vector<d
 void BindWorld(py::module_& m);
 void BindSim(py::module_& m);
 void BindController(py::module_& m);
+void BindSensor(py::module_& m);
 void BindBatch(py::module_& m);
 void BindTrajectory(py::module_& m);
 

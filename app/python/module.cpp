@@ -10,6 +10,7 @@ PYBIND11_MODULE(_lamina, m) {
   lamina::python::BindWorld(m);
   lamina::python::BindSim(m);
   lamina::python::BindController(m);
+  lamina::python::BindSensor(m);
   lamina::python::BindBatch(m);
   lamina::python::BindTrajectory(m);
 }

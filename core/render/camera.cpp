@@ -171,6 +171,25 @@ Eigen::Matrix4d OrbitCamera::ProjectionMatrix(double aspect, double scene_radius
   return projection;
 }
 
+Eigen::Matrix4d CameraFrameViewMatrix(const Pose& camera) {
+  Eigen::Matrix4d flip = Eigen::Matrix4d::Identity();
+  flip(1, 1) = flip(2, 2) = -1.0;  // y down, z forward -> y up, looking down -z
+  return flip * camera.inverse().matrix();
+}
+
+Eigen::Matrix4d HorizontalFovProjection(double xfov, double aspect, double near_plane,
+                                        double far_plane) {
+  const double t = 1.0 / std::tan(0.5 * xfov);
+  const double n = near_plane, f = far_plane;
+  Eigen::Matrix4d projection = Eigen::Matrix4d::Zero();
+  projection(0, 0) = t;
+  projection(1, 1) = t * aspect;
+  projection(2, 2) = -(f + n) / (f - n);
+  projection(2, 3) = -2.0 * f * n / (f - n);
+  projection(3, 2) = -1.0;
+  return projection;
+}
+
 OrbitCamera FramingCamera(const Eigen::AlignedBox3d& box, double aspect) {
   OrbitCamera camera;
   if (box.isEmpty()) return camera;

@@ -6,6 +6,8 @@
 
 #include <string>
 
+#include "core/math_types.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -32,6 +34,14 @@ struct OrbitCamera {
   /// (the radius of a sphere about the target holding everything drawn).
   Eigen::Matrix4d ProjectionMatrix(double aspect, double scene_radius) const;
 };
+
+/// World -> OpenGL eye space for a camera whose frame `camera` (in the world) looks along its
+/// z with x right and y down (Klamp't's and OpenCV's convention).
+Eigen::Matrix4d CameraFrameViewMatrix(const Pose& camera);
+/// Perspective projection for a horizontal field of view `xfov` (rad), `aspect` = width /
+/// height and clip planes near < far (m).
+Eigen::Matrix4d HorizontalFovProjection(double xfov, double aspect, double near_plane,
+                                        double far_plane);
 
 /// Near and far plane distances used by ProjectionMatrix.
 void ClipDistances(const OrbitCamera& camera, double scene_radius, double* near_plane,

@@ -16,6 +16,7 @@ struct OverlayOptions {
   bool frames = false;    ///< object and link frames (x red, y green, z blue)
   bool bbox = false;      ///< oriented bounding boxes of every body
   bool joints = false;    ///< world-level joints: hinge axes, slider directions, fixed links
+  bool sensors = false;   ///< robot sensors: laser rays, camera frusta, contact patches, forces
 
   double normal_length = 0.05;  ///< m (Klamp't SimTest: 0.05)
   double force_scale = 0.01;    ///< m per N (Klamp't SimTest: 0.01)
@@ -45,6 +46,9 @@ inline constexpr OverlayToggle kOverlayToggles[] = {
     {"bbox", &OverlayOptions::bbox, "oriented bounding boxes of every body"},
     {"joints", &OverlayOptions::joints,
      "world-level joints (orange): hinge axes through their points, slider directions"},
+    {"sensors", &OverlayOptions::sensors,
+     "robot sensors: laser rays (green hits), camera frusta, contact patches (red in contact), "
+     "measured forces, torques and accelerations"},
 };
 
 /// The toggles' names as a comma list ("contacts,normals,...").

@@ -81,6 +81,26 @@ class ContactSensor : public Sensor {
   void Reset() override { measurements_.assign(MeasurementNames().size(), 0.0); }
   int link() const override { return link_; }
   Pose frame() const override { return tsensor_; }
+  // the patch's edge (hot in contact) and the measured force at its centre
+  void Draw(const std::vector<Pose>& frames, SensorDrawing* out) const override {
+    const Pose sensor = frames[link_] * tsensor_;
+    const bool hot = !measurements_.empty() && measurements_[0] != 0.0;
+    const Vec3 c[4] = {sensor * Vec3(patch_min_.x(), patch_min_.y(), 0),
+                       sensor * Vec3(patch_max_.x(), patch_min_.y(), 0),
+                       sensor * Vec3(patch_max_.x(), patch_max_.y(), 0),
+                       sensor * Vec3(patch_min_.x(), patch_max_.y(), 0)};
+    for (int k = 0; k < 4; ++k) {
+      out->segments.push_back({c[k], c[(k + 1) % 4], hot ? SensorDrawing::Kind::kOutlineHot
+                                                         : SensorDrawing::Kind::kOutline});
+    }
+    Vec3 f = Vec3::Zero();
+    for (int i = 0, m = 1; i < 3; ++i) {
+      if (has_force_[i] && m < static_cast<int>(measurements_.size())) f[i] = measurements_[m++];
+    }
+    const Vec3 center = sensor * Vec3(0.5 * (patch_min_.x() + patch_max_.x()),
+                                      0.5 * (patch_min_.y() + patch_max_.y()), 0);
+    out->arrows.push_back({center, sensor.linear() * f, SensorDrawing::Quantity::kForce});
+  }
 
  protected:
   bool ApplySetting(const std::string& key, const std::string& text,
@@ -178,6 +198,17 @@ class ForceTorqueSensor : public Sensor {
     }
   }
   int link() const override { return link_; }
+  // the force and torque the link puts on its parent, at the joint
+  void Draw(const std::vector<Pose>& frames, SensorDrawing* out) const override {
+    if (measurements_.size() != 6) return;
+    const Pose& frame = frames[link_];
+    const Vec3 f(measurements_[0], measurements_[1], measurements_[2]);
+    const Vec3 t(measurements_[3], measurements_[4], measurements_[5]);
+    out->arrows.push_back({frame.translation(), frame.linear() * f,
+                           SensorDrawing::Quantity::kForce});
+    out->arrows.push_back({frame.translation(), frame.linear() * t,
+                           SensorDrawing::Quantity::kTorque});
+  }
 
  protected:
   bool ApplySetting(const std::string& key, const std::string& text,

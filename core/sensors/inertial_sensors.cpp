@@ -135,6 +135,14 @@ class Accelerometer : public Sensor {
   }
   int link() const override { return part_.link; }
   Pose frame() const override { return part_.tsensor; }
+  // the measured specific force at its point
+  void Draw(const std::vector<Pose>& frames, SensorDrawing* out) const override {
+    if (measurements_.size() != 3) return;
+    const Pose sensor = frames[part_.link] * part_.tsensor;
+    const Vec3 f(measurements_[0], measurements_[1], measurements_[2]);
+    out->arrows.push_back({sensor.translation(), sensor.linear() * f,
+                           SensorDrawing::Quantity::kAcceleration});
+  }
 
  protected:
   bool ApplySetting(const std::string& key, const std::string& text,

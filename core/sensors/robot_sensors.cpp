@@ -166,6 +166,11 @@ bool RobotSensors::needs_contacts() const {
   });
 }
 
+bool RobotSensors::has_images() const {
+  return std::any_of(sensors_.begin(), sensors_.end(),
+                     [](const auto& s) { return IsImageSensor(*s); });
+}
+
 bool RobotSensors::AnyDue(double time) const {
   for (int i = 0; i < size(); ++i) {
     if (sensors_[i]->enabled() && (!started_ || time >= next_times_[i] - kTimeTolerance)) {
@@ -194,6 +199,27 @@ void RobotSensors::Sample(const SensorInputs& inputs, double step, double contro
     s.Advance(period);
     next_times_[i] += period;
   }
+}
+
+std::vector<SensorReadout> RobotSensors::Readouts() const {
+  std::vector<SensorReadout> out;
+  for (const auto& s : sensors_) {
+    SensorReadout r{s->name(), s->type(), s->link(), IsImageSensor(*s), {}, {}};
+    if (!r.image) {
+      r.names = s->MeasurementNames();
+      r.values = s->measurements();
+    }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+SensorDrawing RobotSensors::Drawing(const std::vector<Pose>& link_frames) const {
+  SensorDrawing drawing;
+  for (const auto& s : sensors_) {
+    if (s->link() < static_cast<int>(link_frames.size())) s->Draw(link_frames, &drawing);
+  }
+  return drawing;
 }
 
 void RobotSensors::Reset() {

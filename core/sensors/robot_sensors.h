@@ -54,6 +54,15 @@ std::vector<std::unique_ptr<Sensor>> ParseSensorsXml(const std::string& xml,
                                                      const SourceLocation& first_line,
                                                      Diagnostics* diagnostics);
 
+/// A sensor's state copied off the simulation, for a view on another thread (the editor).
+struct SensorReadout {
+  std::string name, type;
+  int link = -1;
+  bool image = false;              ///< a camera: names and values left out
+  std::vector<std::string> names;  ///< measurement names
+  std::vector<double> values;      ///< measurements (fewer than names before a delivery)
+};
+
 /// A sensor whose measurements are an image (CameraSensor): left out of logs and reports, which
 /// list it with its size only (`run --sensor-images` writes the images).
 bool IsImageSensor(const Sensor& sensor);
@@ -73,6 +82,11 @@ class RobotSensors {
   const Sensor& sensor(int i) const { return *sensors_.at(i); }
   /// Index of the sensor named `name`, or -1.
   int Find(const std::string& name) const;
+  /// Simulation time (s) of sensor i's next sample; it moves on by the sensor's period at
+  /// every sample (0 before the first).
+  double next_time(int i) const { return next_times_.at(i); }
+  /// Some sensor is an image sensor (a camera): the simulation needs a CameraRenderer.
+  bool has_images() const;
   /// The robot declares no sensors: these are the defaults q and dq.
   bool defaults() const { return defaults_; }
 
@@ -92,6 +106,11 @@ class RobotSensors {
   /// After an accepted physics step: its contacts on the robot, inputs of the next samples.
   void RecordContacts(std::vector<LinkContact> contacts) { contacts_ = std::move(contacts); }
   const std::vector<LinkContact>& last_contacts() const { return contacts_; }
+
+  /// Every sensor's readout, in order.
+  std::vector<SensorReadout> Readouts() const;
+  /// Every sensor drawn for links at `link_frames` (world).
+  SensorDrawing Drawing(const std::vector<Pose>& link_frames) const;
 
   /// Back to the start: every sensor reset, no sample taken.
   void Reset();

@@ -103,6 +103,29 @@ class SensorNoise {
 /// value + N(0, variance), then rounded to a multiple of resolution when resolution > 0.
 double Discretize(double value, double resolution, double variance, SensorNoise& noise);
 
+/// A sensor drawn in 3-D (world frame): what core/render turns into overlay lines and arrows.
+struct SensorDrawing {
+  enum class Kind {
+    kRayHit,      ///< a laser ray to what it hit
+    kRayMiss,     ///< a laser ray that hit nothing within its range (drawn to a fixed length)
+    kOutline,     ///< a camera's frustum, a contact patch's edge
+    kOutlineHot,  ///< a contact patch in contact
+  };
+  enum class Quantity { kForce, kTorque, kAcceleration };
+  struct Segment {
+    Vec3 from, to;
+    Kind kind;
+  };
+  struct Arrow {
+    Vec3 from;
+    Vec3 value;  ///< N, N·m or m/s², world axes (the overlay scales it)
+    Quantity quantity;
+  };
+  std::vector<Segment> segments;
+  std::vector<Vec3> hits;  ///< laser hit points
+  std::vector<Arrow> arrows;
+};
+
 /// A settings attribute of a sensor type: its name, default text and help.
 struct SensorSettingSpec {
   const char* name;
@@ -129,6 +152,12 @@ class Sensor {
   virtual int link() const { return -1; }
   /// Its frame in the link frame (or the world when link() is -1).
   virtual Pose frame() const { return Pose::Identity(); }
+  /// Appends its drawing for links at `link_frames` (world) from its current measurements;
+  /// sensors without a geometry (joint sensors, wrappers) draw nothing.
+  virtual void Draw(const std::vector<Pose>& link_frames, SensorDrawing* out) const {
+    (void)link_frames;
+    (void)out;
+  }
 
   const std::string& name() const { return name_; }
   void set_name(std::string name) { name_ = std::move(name); }

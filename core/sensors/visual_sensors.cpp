@@ -91,9 +91,11 @@ class LaserRangeSensor : public Sensor {
   }
   void Simulate(const SensorInputs& in) override {
     const Pose sensor = SensorPose(in, link_, tsensor_);
+    sample_time_ = time_;
+    sample_dt_ = last_dt_;
     measurements_.assign(count_, max_);
     for (int i = 0; i < count_; ++i) {
-      const Vec3 dir = sensor.linear() * RayDirection(i);
+      const Vec3 dir = sensor.linear() * RayDirection(i, time_, last_dt_);
       measurements_[i] = Reading(in, sensor.translation(), dir);
     }
   }
@@ -111,11 +113,25 @@ class LaserRangeSensor : public Sensor {
   void SetInternalState(const std::vector<double>& s) override {
     if (s.size() == 2) time_ = s[0], last_dt_ = s[1];
   }
-  /// The direction of ray i in the sensor frame for the current sample.
-  Vec3 RayDirection(int i) const {
-    const double tx = x_.Angle(i, count_, time_, last_dt_);
-    const double ty = y_.Angle(i, count_, time_, last_dt_);
+  /// The direction of ray i in the sensor frame for a sample at sensor time t after dt.
+  Vec3 RayDirection(int i, double t, double dt) const {
+    const double tx = x_.Angle(i, count_, t, dt);
+    const double ty = y_.Angle(i, count_, t, dt);
     return Vec3(std::sin(tx), std::cos(tx) * std::sin(ty), std::cos(tx) * std::cos(ty));
+  }
+  // rays to their readings (hits) or, missing, 2 m long at most
+  void Draw(const std::vector<Pose>& frames, SensorDrawing* out) const override {
+    const Pose sensor = link_ >= 0 ? Pose(frames[link_] * tsensor_) : tsensor_;
+    const Vec3 origin = sensor.translation();
+    for (int i = 0; i < count_ && i < static_cast<int>(measurements_.size()); ++i) {
+      const Vec3 dir = sensor.linear() * RayDirection(i, sample_time_, sample_dt_);
+      const double d = measurements_[i];
+      const bool hit = std::isfinite(d) && d > min_ && d < max_;
+      const Vec3 end = origin + dir * (hit ? d : std::min(std::isfinite(max_) ? max_ : 2.0, 2.0));
+      out->segments.push_back({origin, end, hit ? SensorDrawing::Kind::kRayHit
+                                                : SensorDrawing::Kind::kRayMiss});
+      if (hit) out->hits.push_back(end);
+    }
   }
 
  protected:
@@ -179,6 +195,7 @@ class LaserRangeSensor : public Sensor {
   double variance_linear_ = 0.0, variance_constant_ = 0.0;
   Sweep x_, y_;
   double time_ = 0.0, last_dt_ = 0.0;
+  double sample_time_ = 0.0, sample_dt_ = 0.0;  ///< of the last sample (for drawing)
 };
 
 class CameraSensor : public Sensor {
@@ -233,6 +250,18 @@ class CameraSensor : public Sensor {
   }
   int link() const override { return link_; }
   Pose frame() const override { return tsensor_; }
+  // its frustum to 0.5 m (or zmax when nearer)
+  void Draw(const std::vector<Pose>& frames, SensorDrawing* out) const override {
+    const Pose camera = link_ >= 0 ? Pose(frames[link_] * tsensor_) : tsensor_;
+    const double depth = std::min(zmax_, 0.5);
+    const double tx = std::tan(0.5 * xfov_) * depth, ty = tx * yres_ / xres_;
+    const Vec3 corners[4] = {camera * Vec3(-tx, -ty, depth), camera * Vec3(tx, -ty, depth),
+                             camera * Vec3(tx, ty, depth), camera * Vec3(-tx, ty, depth)};
+    for (int k = 0; k < 4; ++k) {
+      out->segments.push_back({camera.translation(), corners[k], SensorDrawing::Kind::kOutline});
+      out->segments.push_back({corners[k], corners[(k + 1) % 4], SensorDrawing::Kind::kOutline});
+    }
+  }
 
  protected:
   bool ApplySetting(const std::string& key, const std::string& text,

@@ -337,7 +337,7 @@ TEST(OverlayOptionsTest, ParsesListsAndNamesUnknownEntries) {
 
 // each toggle's name turns on its own flag and no other; "all" is every toggle and every flag
 TEST(OverlayOptionsTest, EveryToggleNamesItsOwnFlag) {
-  constexpr int kFlags = 8;  // the bool members of OverlayOptions
+  constexpr int kFlags = 9;  // the bool members of OverlayOptions
   ASSERT_EQ(std::size(core::kOverlayToggles), static_cast<size_t>(kFlags));
   std::string error;
   OverlayOptions all;

@@ -19,6 +19,7 @@ class SceneTarget {
   /// Copies (and averages the samples) into `framebuffer`, bound for drawing afterwards.
   void ResolveInto(unsigned framebuffer) const;
   int samples() const { return samples_; }
+  unsigned framebuffer() const { return framebuffer_; }
 
  private:
   void Free();

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/math_types.h"
 #include "core/render/camera.h"
@@ -168,12 +169,100 @@ Renderer::FrameParameters Renderer::PrepareFrame(const core::RenderScene& scene,
   const Eigen::Vector3f focus = (focused ? camera.target : center).cast<float>();
   const float across = static_cast<float>(focused ? view_radius : half_diagonal);
   const float along = static_cast<float>((center - focus.cast<double>()).norm() + half_diagonal);
-  frame.light_view_projection =
+  SetSun(focus, across, along, &frame);
+  return frame;
+}
+
+// the sun's orthographic view: `across` either side of `focus`, `along` back along the light
+void Renderer::SetSun(const Eigen::Vector3f& focus, float across, float along,
+                      FrameParameters* frame) const {
+  frame->light_view_projection =
       Orthographic(across, 0.0f, 2.0f * along) *
       core::LookAt((focus + along * kSunDirection).cast<double>(), focus.cast<double>())
           .cast<float>();
-  frame.shadow_normal_offset = 1.5f * (2.0f * across / settings_.shadow_map_size);
+  frame->shadow_normal_offset = 1.5f * (2.0f * across / settings_.shadow_map_size);
+}
+
+namespace {
+
+Eigen::Matrix4d CameraView(const core::CameraRequest& r) {
+  return core::CameraFrameViewMatrix(r.camera);
+}
+
+Eigen::Matrix4d CameraProjection(const core::CameraRequest& r) {
+  return core::HorizontalFovProjection(r.xfov, static_cast<double>(r.width) / r.height, r.znear,
+                                       r.zfar);
+}
+
+}  // namespace
+
+// a sensor camera's frame: its own pose and projection, the sun over the whole scene, no haze
+// before the far plane
+Renderer::FrameParameters Renderer::PrepareCameraFrame(const core::RenderScene& scene,
+                                                       const core::CameraRequest& request) const {
+  FrameParameters frame;
+  const Eigen::AlignedBox3d& box = scene.bounds;
+  const Eigen::Vector3d center = box.isEmpty() ? Eigen::Vector3d::Zero().eval() : box.center().eval();
+  const double half_diagonal = box.isEmpty() ? 1.0 : std::max(0.5 * box.diagonal().norm(), 1e-3);
+  frame.view_projection = (CameraProjection(request) * CameraView(request)).cast<float>();
+  frame.eye = request.camera.translation().cast<float>();
+  const Eigen::Vector3d forward = request.camera.linear().col(2);
+  frame.sky_shift = static_cast<float>(0.4 * std::asin(std::clamp(forward.z(), -1.0, 1.0)) /
+                                       (0.5 * core::kPi));
+  frame.haze_range = Eigen::Vector2f(static_cast<float>(request.zfar),
+                                     static_cast<float>(2.0 * request.zfar));
+  const double extent = box.isEmpty() ? 1.0 : std::max(box.sizes().x(), box.sizes().y());
+  frame.checker_size =
+      static_cast<float>(settings_.checker_size > 0.0 ? settings_.checker_size
+                                                      : NiceStep(std::max(extent, 1e-3) / 16));
+  frame.shadows = settings_.shadows && !box.isEmpty();
+  SetSun(center.cast<float>(), static_cast<float>(half_diagonal),
+         static_cast<float>(half_diagonal), &frame);
   return frame;
+}
+
+bool Renderer::RenderCamera(const core::RenderScene& scene, const core::CameraRequest& request,
+                            core::CameraImage* image) {
+  if (!resources_ || request.width <= 0 || request.height <= 0) return false;
+  const FrameParameters frame = PrepareCameraFrame(scene, request);
+  if (frame.shadows) DrawShadowPass(scene, frame);
+  resources_->target.Bind(request.width, request.height, 1);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  DrawBackground(frame);
+  BindMeshProgram(frame);
+  DrawOpaqueItems(scene);
+  DrawTranslucentItems(scene, frame);
+  glBindVertexArray(0);
+  resources_->meshes.EndFrame();
+  ReadCameraImage(request, image);
+  return true;
+}
+
+// the target's pixels, top row first: colour as 0xRRGGBB, depth along the optical axis
+void Renderer::ReadCameraImage(const core::CameraRequest& request, core::CameraImage* image) const {
+  const int w = request.width, h = request.height;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, resources_->target.framebuffer());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  std::vector<std::uint8_t> rgba(static_cast<size_t>(w) * h * 4);
+  std::vector<float> depth(static_cast<size_t>(w) * h);
+  if (request.rgb) glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  if (request.depth) glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  image->rgb.assign(request.rgb ? depth.size() : 0, 0);
+  image->depth.assign(request.depth ? depth.size() : 0, 0.0f);
+  const double n = request.znear, f = request.zfar;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t from = static_cast<size_t>(h - 1 - y) * w + x, to = static_cast<size_t>(y) * w + x;
+      if (request.rgb) {
+        const std::uint8_t* p = &rgba[4 * from];
+        image->rgb[to] = (std::uint32_t{p[0]} << 16) | (std::uint32_t{p[1]} << 8) | p[2];
+      }
+      if (!request.depth) continue;
+      const double d = depth[from];
+      image->depth[to] = d >= 1.0 ? std::numeric_limits<float>::infinity()
+                                  : static_cast<float>(2.0 * n * f / (f + n - (2.0 * d - 1.0) * (f - n)));
+    }
+  }
 }
 
 void Renderer::DrawShadowPass(const core::RenderScene& scene, const FrameParameters& frame) {

@@ -12,6 +12,7 @@
 
 #include "core/render/camera.h"
 #include "core/render/render_scene.h"
+#include "core/sensors/sensor.h"
 
 namespace lamina::ui {
 
@@ -49,6 +50,14 @@ class Renderer {
   void Render(const core::RenderScene& scene, const core::OrbitCamera& camera, int width,
               int height, unsigned framebuffer = 0);
 
+  /// Draws `scene` (without overlays) as a sensor camera sees it (request.camera: z forward,
+  /// x right, y down; horizontal field of view request.xfov, the vertical one from the aspect;
+  /// clip planes znear, zfar) into an off-screen target of one sample per pixel and reads back
+  /// its colour and its depth along the optical axis (m, +inf where nothing was drawn), top row
+  /// first. False without Initialize or with an empty size.
+  bool RenderCamera(const core::RenderScene& scene, const core::CameraRequest& request,
+                    core::CameraImage* image);
+
   /// The pixels of `framebuffer` as RGBA8, bottom row first (as OpenGL reads them).
   std::vector<std::uint8_t> ReadPixels(int width, int height, unsigned framebuffer = 0) const;
 
@@ -66,6 +75,11 @@ class Renderer {
 
   FrameParameters PrepareFrame(const core::RenderScene& scene, const core::OrbitCamera& camera,
                                int width, int height) const;
+  FrameParameters PrepareCameraFrame(const core::RenderScene& scene,
+                                     const core::CameraRequest& request) const;
+  void SetSun(const Eigen::Vector3f& focus, float across, float along,
+              FrameParameters* frame) const;
+  void ReadCameraImage(const core::CameraRequest& request, core::CameraImage* image) const;
   void DrawShadowPass(const core::RenderScene& scene, const FrameParameters& frame);
   void DrawBackground(const FrameParameters& frame);
   void BindMeshProgram(const FrameParameters& frame);

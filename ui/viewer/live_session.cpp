@@ -11,6 +11,7 @@
 
 #include "core/io/world_file.h"
 #include "core/model/access_path.h"
+#include "core/robot/kinematics.h"
 
 namespace lamina::ui {
 
@@ -55,6 +56,10 @@ RobotFrame RobotFrameOf(const core::Simulator& simulator, int robot) {
     frame.commanded = frame.sensed;
   }
   frame.torques = simulator.GetActuatorTorques(robot);
+  const core::RobotSensors& sensors = simulator.sensors(robot);
+  frame.sensors = sensors.Readouts();
+  frame.sensor_drawing =
+      sensors.Drawing(core::LinkTransforms(simulator.world().robots[robot], frame.sensed));
   return frame;
 }
 
@@ -510,6 +515,12 @@ void LiveSession::FillSample(const SessionFrame& frame, int sampled, SessionSamp
   sample->step = frame.smallest_step > 0.0 ? frame.smallest_step : frame.step;
   sample->real_time_factor = frame.real_time_factor;
   sample->body = sampled;
+  for (const RobotFrame& robot : frame.robots) {
+    sample->sensors.emplace_back();
+    for (const core::SensorReadout& sensor : robot.sensors) {
+      sample->sensors.back().push_back(sensor.values);
+    }
+  }
   if (sampled < 0 || !world_) return;
   sample->contact_force = world_->simulator().ContactForce(sampled).norm();
   for (const core::PairReadout& pair : frame.sampled_contacts) {

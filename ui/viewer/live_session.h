@@ -40,6 +40,7 @@
 #include "core/edit/live_world.h"
 #include "core/render/contact_markers.h"
 #include "core/render/world_poses.h"
+#include "core/sensors/robot_sensors.h"
 #include "core/sim/contact_readout.h"
 #include "ui/viewer/sim_clock.h"
 #include "ui/viewer/solver_choice.h"
@@ -51,6 +52,8 @@ namespace lamina::ui {
 struct RobotFrame {
   core::VecX sensed, commanded;
   core::VecX torques;  ///< per driver, clamped efforts (N·m or N)
+  std::vector<core::SensorReadout> sensors;  ///< every sensor's name, type and measurements
+  core::SensorDrawing sensor_drawing;        ///< the sensors in 3-D (the `sensors` overlay)
 };
 
 /// What one published frame shows. Immutable once published.
@@ -115,6 +118,8 @@ struct SessionSample {
   double contact_force = 0.0, overlap = 0.0;  ///< its total contact force (N), deepest overlap (m)
   int robot = -1;                             ///< the selected body's robot (-1: none)
   core::VecX sensed, commanded, torques;      ///< that robot's, as in RobotFrame
+  /// Every robot's sensor measurements (per robot, per sensor; cameras empty).
+  std::vector<std::vector<std::vector<double>>> sensors;
 };
 
 class LiveSession {

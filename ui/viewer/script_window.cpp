@@ -12,6 +12,7 @@
 #include "core/render/contact_markers.h"
 #include "core/render/scene_camera.h"
 #include "core/render/scene_extract.h"
+#include "core/render/sensor_overlay.h"
 #include "core/render/world_poses.h"
 #include "core/sim/simulator.h"
 #include "core/sim/step_observer.h"
@@ -71,6 +72,7 @@ bool ScriptWindow::Start(std::string* error) {
 void ScriptWindow::DrawView(const core::Simulator& simulator, int width, int height) {
   core::ExtractScene(simulator.world(), core::CurrentPoses(simulator), options_.overlays,
                      core::ContactMarkersFromSimulator(simulator), &meshes_, &scene_);
+  core::AddSensorOverlays(simulator, options_.overlays, &scene_);
   if (!camera_chosen_) {
     core::CameraForScene(options_.camera, scene_, static_cast<double>(width) / height, &camera_,
                          &camera_error_);

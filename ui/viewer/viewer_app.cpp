@@ -22,8 +22,10 @@
 #include "core/render/picking.h"
 #include "core/render/scene_camera.h"
 #include "core/render/scene_extract.h"
+#include "core/render/sensor_overlay.h"
 #include "ui/panels/panels.h"
 #include "ui/panels/plots_panel.h"
+#include "ui/panels/sensors_panel.h"
 #include "ui/platform/glfw_window.h"
 #include "ui/platform/image_file.h"
 #include "ui/render/renderer.h"
@@ -104,6 +106,7 @@ class Viewer {
   EditorActions actions_;
   MouseTools tools_;
   PlotPanel plots_;
+  SensorPanel sensor_panel_;
   std::shared_ptr<const SessionFrame> frame_ = std::make_shared<SessionFrame>();
   ViewerState state_;
   ViewMouse mouse_;
@@ -252,6 +255,9 @@ void Viewer::DrawView(int width, int height) {
   if (frame_->loaded) {
     core::ExtractScene(*frame_->world, frame_->poses, overlays, frame_->contacts, &meshes_,
                        &scene_);
+    for (const RobotFrame& robot : frame_->robots) {
+      if (overlays.sensors) core::AddSensorOverlay(robot.sensor_drawing, overlays, &scene_);
+    }
   } else {
     scene_ = core::RenderScene();
   }
@@ -329,6 +335,7 @@ void Viewer::DrawPanels() {
     if (panels.robot) DrawRobotPanel(context);
     if (panels.settings) DrawSettingsPanel(context);
     if (panels.plots) plots_.Draw(context);
+    if (panels.sensors) sensor_panel_.Draw(context);
     if (panels.overlays) DrawOverlaysPanel(&state_);
     if (panels.open) DrawOpenWorldPanel(&state_);
     DrawStatusLine(context);
@@ -360,7 +367,9 @@ void Viewer::RunFrame() {
   session_.SetSampledBody(state_.selected_id);
   if (!session_.threaded()) session_.Advance(kFrameStepSeconds);
   frame_ = session_.frame();
-  plots_.Add(session_.TakeSamples(), *frame_);
+  const std::vector<SessionSample> samples = session_.TakeSamples();
+  plots_.Add(samples, *frame_);
+  sensor_panel_.Add(samples, *frame_);
   UpdateTitle();
   if (width > 0 && height > 0) {
     DrawView(width, height);

@@ -19,7 +19,7 @@ namespace {
 constexpr double kClickSlop = 3.0;
 
 // key 1 + i toggles the i-th overlay of core::kOverlayToggles
-static_assert(std::size(core::kOverlayToggles) == 8, "keys 1 ... 8 toggle every overlay");
+static_assert(std::size(core::kOverlayToggles) == 9, "keys 1 ... 9 toggle every overlay");
 template <int kIndex>
 void Overlay(ViewerState* state, bool) {
   bool& flag = state->overlays.*core::kOverlayToggles[kIndex].flag;
@@ -88,7 +88,7 @@ const KeyBinding kKeys[] = {
      [](ViewerState* s, bool) { s->panels.help = !s->panels.help; }},
     {GLFW_KEY_ESCAPE, kNoMods, false, "Esc", "clear the selection",
      [](ViewerState* s, bool) { s->selected_id = -1; }},
-    {GLFW_KEY_1, kNoMods, false, "1 ... 8", kOverlayHelp.c_str(), Overlay<0>},
+    {GLFW_KEY_1, kNoMods, false, "1 ... 9", kOverlayHelp.c_str(), Overlay<0>},
     {GLFW_KEY_2, kNoMods, false, "", "", Overlay<1>},
     {GLFW_KEY_3, kNoMods, false, "", "", Overlay<2>},
     {GLFW_KEY_4, kNoMods, false, "", "", Overlay<3>},
@@ -96,6 +96,7 @@ const KeyBinding kKeys[] = {
     {GLFW_KEY_6, kNoMods, false, "", "", Overlay<5>},
     {GLFW_KEY_7, kNoMods, false, "", "", Overlay<6>},
     {GLFW_KEY_8, kNoMods, false, "", "", Overlay<7>},
+    {GLFW_KEY_9, kNoMods, false, "", "", Overlay<8>},
 };
 
 const MouseBinding kMouse[] = {

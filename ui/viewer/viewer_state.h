@@ -43,6 +43,7 @@ struct ViewerRequests {
 struct PanelVisibility {
   bool simulation = true, world_tree = true, inspector = true, robot = true;
   bool settings = false, overlays = false, plots = false, help = false, open = false;
+  bool sensors = false;
 };
 
 /// Every panel once: its name for `--panels`, its title in the View menu, its flag.
@@ -58,6 +59,7 @@ inline constexpr PanelEntry kPanels[] = {
     {"robot", "Robot", &PanelVisibility::robot},
     {"settings", "Simulation settings", &PanelVisibility::settings},
     {"plots", "Plots", &PanelVisibility::plots},
+    {"sensors", "Sensors", &PanelVisibility::sensors},
     {"overlays", "Overlays", &PanelVisibility::overlays},
     {"help", "Keys and mouse", &PanelVisibility::help},
     {"open", "Open world", &PanelVisibility::open},
