@@ -248,6 +248,13 @@ TEST(PanelGolden, SettingsOverlaysAndPlots) {
                           "--select 3 --panels simulation,settings,overlays,plots");
 }
 
+// the planar arm's seven sensors: the first two open with their values and strip charts, the
+// others closed; in the view the sensors overlay (laser fan, camera frustum, patch, arrows)
+TEST(PanelGolden, SensorsPanelAndOverlay) {
+  ExpectPanelsMatchGolden("panels_sensors", "sensor_arm.xml",
+                          "--panels simulation,sensors --overlay sensors" + kArmCamera);
+}
+
 TEST(PanelGolden, KeysAndMouseHelp) {
   ExpectPanelsMatchGolden("panels_help", "two_boxes.xml", "--panels help" + kBoxesCamera);
 }

@@ -12,6 +12,7 @@ namespace {
 
 constexpr size_t kShownAtFirst = 12;  // SimTest's fixed colours; the rest start hidden
 constexpr int kValueColumns = 3;
+constexpr size_t kOpenAtFirst = 2;  // sensors whose section starts open
 
 // a file name made of the sensor's safe characters
 std::string CsvName(const std::string& robot, const std::string& sensor) {
@@ -29,7 +30,7 @@ void DrawValues(const core::SensorReadout& readout) {
     ImGui::TextDisabled("%s", readout.names[i].c_str());
     ImGui::TableNextColumn();
     if (i < readout.values.size()) {
-      ImGui::Text("%.5g", readout.values[i]);
+      ImGui::Text("%.5g", readout.values[i] + 0.0);  // + 0: -0 shows as 0
     } else {
       ImGui::TextDisabled("-");
     }
@@ -95,9 +96,10 @@ int SensorPanel::Robot(const PanelContext& context) const {
   return id.kind == core::WorldId::Kind::kRobotLink ? id.index : 0;
 }
 
-void SensorPanel::DrawSensor(const core::SensorReadout& readout, Plot* plot, ViewerState* state) {
+void SensorPanel::DrawSensor(const core::SensorReadout& readout, Plot* plot, bool open,
+                             ViewerState* state) {
   const std::string header = readout.name + "  (" + readout.type + ")";
-  if (!ImGui::CollapsingHeader(header.c_str())) return;
+  if (!ImGui::CollapsingHeader(header.c_str(), open ? ImGuiTreeNodeFlags_DefaultOpen : 0)) return;
   ImGui::PushID(header.c_str());
   if (readout.link >= 0) ImGui::TextDisabled("on link %d", readout.link);
   if (readout.image) {
@@ -129,7 +131,7 @@ void SensorPanel::Draw(const PanelContext& context) {
       for (size_t i = 0; i < sensors.size(); ++i) {
         Plot* plot = r < static_cast<int>(plots_.size()) && i < plots_[r].size() ? &plots_[r][i]
                                                                                  : nullptr;
-        DrawSensor(sensors[i], plot, context.state);
+        DrawSensor(sensors[i], plot, i < kOpenAtFirst, context.state);
       }
     }
   }
