@@ -166,6 +166,21 @@ bool RobotSensors::needs_contacts() const {
   });
 }
 
+bool RobotSensors::needs_motion() const {
+  return std::any_of(sensors_.begin(), sensors_.end(), [](const auto& s) {
+    const std::string type = s->type();
+    return dynamic_cast<const WrapperSensor*>(s.get()) == nullptr &&
+           type != "JointPositionSensor" && type != "JointVelocitySensor" &&
+           type != "DriverTorqueSensor";
+  });
+}
+
+bool RobotSensors::needs_driver_torques() const {
+  return std::any_of(sensors_.begin(), sensors_.end(), [](const auto& s) {
+    return std::string(s->type()) == "DriverTorqueSensor";
+  });
+}
+
 bool RobotSensors::has_images() const {
   return std::any_of(sensors_.begin(), sensors_.end(),
                      [](const auto& s) { return IsImageSensor(*s); });

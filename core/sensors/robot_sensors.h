@@ -92,6 +92,11 @@ class RobotSensors {
 
   /// Some sensor reads contacts (contact and force/torque sensors).
   bool needs_contacts() const;
+  /// Some sensor reads link motion, rays or pictures (all but joint and driver sensors and
+  /// wrappers); some reads the drivers' efforts (DriverTorqueSensor). The simulation computes
+  /// only the inputs that are read.
+  bool needs_motion() const;
+  bool needs_driver_torques() const;
   /// Some enabled sensor is due in a step starting at `time` (s).
   bool AnyDue(double time) const;
   /// Samples every due sensor (see the schedule above) for a step of `step` s, and keeps the

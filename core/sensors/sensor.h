@@ -75,9 +75,11 @@ struct SensorInputs {
   const RobotDesc* robot = nullptr;
   double time = 0.0;               ///< s
   VecX q, dq, ddq;                 ///< link space; ddq the mean since the previous sample
-  LinkMotion motion;               ///< link frames, velocities and accelerations (world)
+  /// Link frames, velocities and accelerations (world); left empty by the simulation when no
+  /// sensor of the robot reads them (RobotSensors::needs_motion).
+  LinkMotion motion;
   Vec3 gravity = Vec3(0, 0, -9.8); ///< m/s²
-  VecX driver_torques;             ///< the drivers' clamped efforts, driver space
+  VecX driver_torques;  ///< the drivers' clamped efforts, driver space (when read)
   std::vector<LinkContact> contacts;  ///< the last physics step's contacts on the robot
   RayCaster ray;                   ///< may be empty (then lasers read +inf)
   CameraRenderer* camera = nullptr;  ///< may be null (then cameras measure nothing)

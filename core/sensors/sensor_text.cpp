@@ -122,8 +122,7 @@ bool ReadSensorIndices(const std::string& text, std::vector<int>* value, std::st
 bool ReadSensorPose(const std::string& text, Pose* value, std::string* error) {
   std::vector<double> v;
   if (!FixedNumbers(text, 12, &v, error)) return false;
-  Mat3 r;
-  r << v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8];
+  const Mat3 r = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v.data());
   if (!IsRotation(r, 1e-6)) return Fail(error, "the first 9 numbers are not a rotation");
   Pose pose = Pose::Identity();
   pose.linear() = r;
@@ -135,9 +134,7 @@ bool ReadSensorPose(const std::string& text, Pose* value, std::string* error) {
 bool ReadSensorMat3(const std::string& text, Mat3* value, std::string* error) {
   std::vector<double> v;
   if (!FixedNumbers(text, 9, &v, error)) return false;
-  Mat3 m;
-  m << v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8];
-  *value = m;
+  *value = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(v.data());
   return true;
 }
 

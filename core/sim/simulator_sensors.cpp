@@ -56,9 +56,11 @@ void Simulator::SampleSensors(int robot, double step) {
   in.q = GetRobotConfig(robot);
   in.dq = GetRobotVelocity(robot);
   in.ddq = sensors.MeanAcceleration(time_, in.dq);
-  in.motion = ComputeLinkMotion(desc, in.q, in.dq, in.ddq);
+  if (sensors.needs_motion()) in.motion = ComputeLinkMotion(desc, in.q, in.dq, in.ddq);
   in.gravity = world_.settings.gravity;
-  in.driver_torques = controllers_[robot].DriverEfforts(in.q, in.dq);
+  if (sensors.needs_driver_torques()) {
+    in.driver_torques = controllers_[robot].DriverEfforts(in.q, in.dq);
+  }
   in.contacts = sensors.last_contacts();
   const int first = world_.RobotLinkId(robot, 0);
   in.ray = [this, first](const Vec3& origin, const Vec3& direction, double max, int link) {
