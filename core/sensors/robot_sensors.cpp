@@ -216,6 +216,20 @@ void RobotSensors::Sample(const SensorInputs& inputs, double step, double contro
   }
 }
 
+bool RobotSensors::SensedJoints(bool velocity, VecX* out) const {
+  const std::string type = velocity ? "JointVelocitySensor" : "JointPositionSensor";
+  for (const auto& s : sensors_) {
+    if (!s->enabled() || s->type() != type) continue;
+    std::string indices;
+    s->GetSetting("indices", &indices);
+    if (!indices.empty() || !started_) continue;
+    const std::vector<double>& m = s->measurements();
+    *out = Eigen::Map<const VecX>(m.data(), static_cast<Eigen::Index>(m.size()));
+    return true;
+  }
+  return false;
+}
+
 std::vector<SensorReadout> RobotSensors::Readouts() const {
   std::vector<SensorReadout> out;
   for (const auto& s : sensors_) {

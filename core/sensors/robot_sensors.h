@@ -112,6 +112,12 @@ class RobotSensors {
   void RecordContacts(std::vector<LinkContact> contacts) { contacts_ = std::move(contacts); }
   const std::vector<LinkContact>& last_contacts() const { return contacts_; }
 
+  /// What the controller senses (Klamp't's controllers read their joint sensors): the
+  /// measurements of the first enabled JointPositionSensor (JointVelocitySensor with
+  /// `velocity`) that measures every link, written into `*out`; false (nothing written) when
+  /// there is none or it has not sampled yet.
+  bool SensedJoints(bool velocity, VecX* out) const;
+
   /// Every sensor's readout, in order.
   std::vector<SensorReadout> Readouts() const;
   /// Every sensor drawn for links at `link_frames` (world).

@@ -107,16 +107,25 @@ std::shared_ptr<const CollisionGeometry> Simulator::LinkCollisionGeometry(int ro
   return parts == 1 ? geometry_cache_.Get(geometry) : CollisionGeometry::Build(geometry);
 }
 
-// Klamp't's order within a sub-step: the controller runs when its next time falls within the
-// step, with the state at the start of the step as its sensor readings
+// Klamp't's order within a sub-step: the sensors sample the state at the start of the step,
+// then the controller runs when its next time falls within the step. A robot that declares
+// sensors is controlled from its joint sensors' readings (the first full-length
+// JointPositionSensor and JointVelocitySensor: their noise, resolution and hold between samples,
+// as Klamp't's controllers read them); one that declares none, or no such sensor, is sensed
+// exactly at the step's start (Klamp't's default q and dq are exact, and reading them here
+// would only add the hold: the controller runs in the step before a sensor's next time)
 void Simulator::RunControllers(double step) {
   for (int r = 0; r < robot_count(); ++r) {
     SampleSensors(r, step);
     RobotController& controller = controllers_[r];
     if (!controller.ControlDue(time_ + step)) continue;
     RobotScratch& scratch = robot_scratch_[r];
-    robots_[r]->GetConfig(&scratch.q);
-    robots_[r]->GetVelocity(&scratch.dq);
+    const RobotSensors& sensors = sensors_[r];
+    const bool declared = !sensors.defaults();
+    if (!declared || !sensors.SensedJoints(false, &scratch.q)) robots_[r]->GetConfig(&scratch.q);
+    if (!declared || !sensors.SensedJoints(true, &scratch.dq)) {
+      robots_[r]->GetVelocity(&scratch.dq);
+    }
     controller.Update(time_, scratch.q, scratch.dq);
   }
 }

@@ -211,6 +211,31 @@ TEST(SensorSceneTest, NoisyReadingsAreTheSameWhateverTheChunkingAndAfterARestore
   EXPECT_EQ(Read(once, "dq"), std::vector<double>{0.0});
 }
 
+// Klamp't's controllers read their joint sensors: with noisy encoders the controller's sensed
+// configuration is the encoders' reading, not the exact state; without declared sensors it is
+// the exact state at the step's start
+TEST(SensorSceneTest, TheControllerReadsItsDeclaredJointSensors) {
+  core::WorldDesc world = test::PendulumWorld("servoP 60\nservoI 0\nservoD 8\n", 0.4);
+  world.robots[0].properties["sensors"] =
+      "<sensors><JointPositionSensor name=\"encoders\" qvariance=\"0.0001\"/>"
+      "<JointVelocitySensor name=\"tach\" dqresolution=\"0.5\"/></sensors>";
+  core::Simulator noisy(world);
+  noisy.Simulate(0.3);
+  const core::RobotController& controller = noisy.controller(0);
+  EXPECT_EQ(controller.sensed_config()[0], Read(noisy, "encoders")[0]);
+  EXPECT_EQ(controller.sensed_velocity()[0], Read(noisy, "tach")[0]);
+  EXPECT_EQ(std::remainder(controller.sensed_velocity()[0], 0.5), 0.0);  // quantised
+  EXPECT_NE(controller.sensed_config()[0], noisy.GetRobotConfig(0)[0]);
+  // the same robot without declared sensors: the update due at 0.29 s runs in the step from
+  // 0.289 s (Klamp't's rule) and reads the exact state there
+  world.robots[0].properties.erase("sensors");
+  core::Simulator exact(world);
+  exact.Simulate(0.289);
+  const core::VecX q = exact.GetRobotConfig(0);
+  exact.Simulate(0.001);
+  EXPECT_EQ(exact.controller(0).sensed_config()[0], q[0]);
+}
+
 TEST(SensorSceneTest, ARobotWithoutSensorsMeasuresItsStateWithQAndDq) {
   core::Simulator sim(test::PendulumWorld("servoP 0\nservoI 0\nservoD 0\n", 0.4));
   sim.Simulate(0.2);
