@@ -12,8 +12,8 @@
 #include <CLI/CLI.hpp>
 
 #include "app/headless_batch.h"
-#include "app/headless_sensors.h"
 #include "app/headless_render_commands.h"
+#include "app/headless_sensors.h"
 #include "core/control/send_motion.h"
 #include "core/io/trajectory_file.h"
 #include "core/io/world_file.h"
@@ -293,7 +293,8 @@ int RunSimulation(const RunOptions& options) {
   lamina::core::RunTiming timing;
   if (!Advance(options, &simulator, &timing)) return 1;
   if (cameras.failures() > 0) {
-    std::cerr << "lamina-headless: " << cameras.failures() << " sensor images could not be written, "
+    std::cerr << "lamina-headless: " << cameras.failures()
+              << " sensor images could not be written, "
               << "the first " << cameras.first_failure() << "\n";
     return 1;
   }

@@ -136,22 +136,29 @@ void SensorCameras::State::Write(int robot, int index) {
   const size_t n = static_cast<size_t>(w) * h;
   char number[16];
   std::snprintf(number, sizeof(number), "_%04d", counts[robot][index]++);
-  const std::string stem = folder + "/" + simulator->world().robots[robot].name + "_" +
-                           sensor.name() + number;
+  const std::string stem =
+      folder + "/" + simulator->world().robots[robot].name + "_" + sensor.name() + number;
   const bool rgb = IntSetting(sensor, "rgb") != 0, depth = IntSetting(sensor, "depth") != 0;
   std::string zmax;
   sensor.GetSetting("zmax", &zmax);
   bool ok = m.size() >= n * ((rgb ? 1 : 0) + (depth ? 1 : 0));
   if (ok && rgb) ok = ui::WritePngBottomUp(stem + ".png", w, h, BottomUpRgba(m, w, h));
   if (ok && depth) {
-    ok = WriteDepthPgm(stem + "_depth.pgm", m.data() + (rgb ? n : 0), w, h, std::atof(zmax.c_str()));
+    ok =
+        WriteDepthPgm(stem + "_depth.pgm", m.data() + (rgb ? n : 0), w, h, std::atof(zmax.c_str()));
   }
   if (ok) return;
   if (failures++ == 0) first_failure = stem;
 }
 
-int SensorCameras::pictures() const { return state_->camera ? state_->camera->pictures() : 0; }
-int SensorCameras::failures() const { return state_->failures; }
-const std::string& SensorCameras::first_failure() const { return state_->first_failure; }
+int SensorCameras::pictures() const {
+  return state_->camera ? state_->camera->pictures() : 0;
+}
+int SensorCameras::failures() const {
+  return state_->failures;
+}
+const std::string& SensorCameras::first_failure() const {
+  return state_->first_failure;
+}
 
 }  // namespace lamina::app

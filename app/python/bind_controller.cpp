@@ -146,8 +146,7 @@ void BindController(py::module_& m) {
       .def("getRate", [](const PyController& c) { return C(c).control_period(); })
       .def("remainingTime", [](const PyController& c) { return C(c).RemainingTime(); })
       // sensors (bind_sensor.cpp): by index or name; IndexError / KeyError when missing
-      .def("numSensors",
-           [](const PyController& c) { return c.sim->get().sensors(c.robot).size(); })
+      .def("numSensors", [](const PyController& c) { return c.sim->get().sensors(c.robot).size(); })
       .def("sensor", [](const PyController& c, py::handle which) {
         const core::RobotSensors& sensors = c.sim->get().sensors(c.robot);
         return PySensor{c.sim, c.robot, SensorIndex(sensors, which)};

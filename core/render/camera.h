@@ -6,10 +6,10 @@
 
 #include <string>
 
-#include "core/math_types.h"
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+
+#include "core/math_types.h"
 
 namespace lamina::core {
 

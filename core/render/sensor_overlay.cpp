@@ -17,10 +17,14 @@ const Rgba kAccelerationColor(0.95f, 0.3f, 0.8f, 1.0f);
 
 Rgba SegmentColor(SensorDrawing::Kind kind) {
   switch (kind) {
-    case SensorDrawing::Kind::kRayHit: return kHitColor;
-    case SensorDrawing::Kind::kRayMiss: return kMissColor;
-    case SensorDrawing::Kind::kOutline: return kOutlineColor;
-    case SensorDrawing::Kind::kOutlineHot: return kHotColor;
+    case SensorDrawing::Kind::kRayHit:
+      return kHitColor;
+    case SensorDrawing::Kind::kRayMiss:
+      return kMissColor;
+    case SensorDrawing::Kind::kOutline:
+      return kOutlineColor;
+    case SensorDrawing::Kind::kOutlineHot:
+      return kHotColor;
   }
   return kOutlineColor;
 }
@@ -49,7 +53,8 @@ void AddSensorOverlay(const SensorDrawing& drawing, const OverlayOptions& option
   for (const SensorDrawing::Segment& s : drawing.segments) {
     scene->lines.push_back({s.from.cast<float>(), s.to.cast<float>(), SegmentColor(s.kind)});
   }
-  for (const Vec3& hit : drawing.hits) scene->points.push_back({hit.cast<float>(), 0.01f, kHitColor});
+  for (const Vec3& hit : drawing.hits)
+    scene->points.push_back({hit.cast<float>(), 0.01f, kHitColor});
   for (const SensorDrawing::Arrow& a : drawing.arrows) AddArrow(a, options, scene);
 }
 

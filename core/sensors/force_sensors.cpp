@@ -90,8 +90,9 @@ class ContactSensor : public Sensor {
                        sensor * Vec3(patch_max_.x(), patch_max_.y(), 0),
                        sensor * Vec3(patch_min_.x(), patch_max_.y(), 0)};
     for (int k = 0; k < 4; ++k) {
-      out->segments.push_back({c[k], c[(k + 1) % 4], hot ? SensorDrawing::Kind::kOutlineHot
-                                                         : SensorDrawing::Kind::kOutline});
+      out->segments.push_back(
+          {c[k], c[(k + 1) % 4],
+           hot ? SensorDrawing::Kind::kOutlineHot : SensorDrawing::Kind::kOutline});
     }
     Vec3 f = Vec3::Zero();
     for (int i = 0, m = 1; i < 3; ++i) {
@@ -103,20 +104,30 @@ class ContactSensor : public Sensor {
   }
 
  protected:
-  bool ApplySetting(const std::string& key, const std::string& text,
-                    std::string* error) override {
+  bool ApplySetting(const std::string& key, const std::string& text, std::string* error) override {
     bool ok = false;
-    if (key == "link") ok = ReadSensorLink(text, robot_, false, &link_, error);
-    else if (key == "Tsensor") ok = ReadSensorPose(text, &tsensor_, error);
-    else if (key == "patchMin") ok = ReadSensorVec2(text, &patch_min_, error);
-    else if (key == "patchMax") ok = ReadSensorVec2(text, &patch_max_, error);
-    else if (key == "patchTolerance") ok = ReadSensorDouble(text, &tolerance_, error);
-    else if (key == "hasForce") ok = ReadSensorBool3(text, &has_force_, error);
-    else if (key == "fResolution") ok = ReadSensorVec3(text, &resolution_, error);
-    else if (key == "fVariance") ok = ReadSensorVec3(text, &variance_, error);
-    else if (key == "fSensitivity") ok = ReadSensorDouble(text, &sensitivity_, error);
-    else if (key == "fSaturation") ok = ReadSensorVec3(text, &saturation_, error);
-    else ok = ReadSensorDouble(text, &falloff_, error);
+    if (key == "link")
+      ok = ReadSensorLink(text, robot_, false, &link_, error);
+    else if (key == "Tsensor")
+      ok = ReadSensorPose(text, &tsensor_, error);
+    else if (key == "patchMin")
+      ok = ReadSensorVec2(text, &patch_min_, error);
+    else if (key == "patchMax")
+      ok = ReadSensorVec2(text, &patch_max_, error);
+    else if (key == "patchTolerance")
+      ok = ReadSensorDouble(text, &tolerance_, error);
+    else if (key == "hasForce")
+      ok = ReadSensorBool3(text, &has_force_, error);
+    else if (key == "fResolution")
+      ok = ReadSensorVec3(text, &resolution_, error);
+    else if (key == "fVariance")
+      ok = ReadSensorVec3(text, &variance_, error);
+    else if (key == "fSensitivity")
+      ok = ReadSensorDouble(text, &sensitivity_, error);
+    else if (key == "fSaturation")
+      ok = ReadSensorVec3(text, &saturation_, error);
+    else
+      ok = ReadSensorDouble(text, &falloff_, error);
     if (ok) Reset();
     return ok;
   }
@@ -172,7 +183,9 @@ void SubtreeWrench(const SensorInputs& in, int root, const Vec3& o, Vec3* force,
 
 class ForceTorqueSensor : public Sensor {
  public:
-  explicit ForceTorqueSensor(const RobotDesc& robot) : robot_(robot) { measurements_.assign(6, 0.0); }
+  explicit ForceTorqueSensor(const RobotDesc& robot) : robot_(robot) {
+    measurements_.assign(6, 0.0);
+  }
   const char* type() const override { return "ForceTorqueSensor"; }
   std::vector<SensorSettingSpec> SettingSpecs() const override {
     return {{"link", "0", "the link whose joint it measures (name or index)"},
@@ -204,15 +217,14 @@ class ForceTorqueSensor : public Sensor {
     const Pose& frame = frames[link_];
     const Vec3 f(measurements_[0], measurements_[1], measurements_[2]);
     const Vec3 t(measurements_[3], measurements_[4], measurements_[5]);
-    out->arrows.push_back({frame.translation(), frame.linear() * f,
-                           SensorDrawing::Quantity::kForce});
-    out->arrows.push_back({frame.translation(), frame.linear() * t,
-                           SensorDrawing::Quantity::kTorque});
+    out->arrows.push_back(
+        {frame.translation(), frame.linear() * f, SensorDrawing::Quantity::kForce});
+    out->arrows.push_back(
+        {frame.translation(), frame.linear() * t, SensorDrawing::Quantity::kTorque});
   }
 
  protected:
-  bool ApplySetting(const std::string& key, const std::string& text,
-                    std::string* error) override {
+  bool ApplySetting(const std::string& key, const std::string& text, std::string* error) override {
     if (key == "link") return ReadSensorLink(text, robot_, false, &link_, error);
     if (key == "hasForce") return ReadSensorBool3(text, &has_force_, error);
     if (key == "hasTorque") return ReadSensorBool3(text, &has_torque_, error);

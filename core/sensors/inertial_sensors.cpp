@@ -45,7 +45,9 @@ Vec3 Noisy(const Vec3& v, const Vec3& variance, SensorNoise& noise) {
   return out;
 }
 
-void Append(std::vector<double>* out, const Vec3& v) { out->insert(out->end(), v.data(), v.data() + 3); }
+void Append(std::vector<double>* out, const Vec3& v) {
+  out->insert(out->end(), v.data(), v.data() + 3);
+}
 
 void AppendRotation(std::vector<double>* out, const Mat3& r) {
   for (int i = 0; i < 3; ++i) {
@@ -87,8 +89,8 @@ class GyroPart {
 
   Vec3 AngularVelocity(const SensorInputs& in, SensorNoise& noise) const {
     const Mat3 r = in.motion.frames[link].linear();
-    return Noisy(r.transpose() * in.motion.angular_velocity[link],
-                 velocity_variance.diagonal(), noise);
+    return Noisy(r.transpose() * in.motion.angular_velocity[link], velocity_variance.diagonal(),
+                 noise);
   }
   Vec3 AngularAcceleration(const SensorInputs& in, SensorNoise& noise) const {
     const Mat3 r = in.motion.frames[link].linear();
@@ -140,13 +142,12 @@ class Accelerometer : public Sensor {
     if (measurements_.size() != 3) return;
     const Pose sensor = frames[part_.link] * part_.tsensor;
     const Vec3 f(measurements_[0], measurements_[1], measurements_[2]);
-    out->arrows.push_back({sensor.translation(), sensor.linear() * f,
-                           SensorDrawing::Quantity::kAcceleration});
+    out->arrows.push_back(
+        {sensor.translation(), sensor.linear() * f, SensorDrawing::Quantity::kAcceleration});
   }
 
  protected:
-  bool ApplySetting(const std::string& key, const std::string& text,
-                    std::string* error) override {
+  bool ApplySetting(const std::string& key, const std::string& text, std::string* error) override {
     return part_.Apply(key, text, robot_, error);
   }
 
@@ -193,8 +194,7 @@ class TiltSensor : public Sensor {
   }
 
  protected:
-  bool ApplySetting(const std::string& key, const std::string& text,
-                    std::string* error) override {
+  bool ApplySetting(const std::string& key, const std::string& text, std::string* error) override {
     if (key == "link") return ReadSensorLink(text, robot_, false, &link_, error);
     if (key == "referenceDir") return ReadDirection(text, error);
     if (key == "Rsensor") return ReadSensorMat3(text, &rsensor_, error);
@@ -250,11 +250,13 @@ class GyroSensor : public Sensor {
     measurements_.resize(15, 0.0);
   }
   int link() const override { return part_.link; }
-  void SetInternalState(const std::vector<double>& state) override { (void)state; Unpack(); }
+  void SetInternalState(const std::vector<double>& state) override {
+    (void)state;
+    Unpack();
+  }
 
  protected:
-  bool ApplySetting(const std::string& key, const std::string& text,
-                    std::string* error) override {
+  bool ApplySetting(const std::string& key, const std::string& text, std::string* error) override {
     return part_.Apply(key, text, robot_, error);
   }
 
@@ -298,8 +300,9 @@ class ImuSensor : public Sensor {
     if (gyro_.has_accel) angular_accel_ = gyro_.AngularAcceleration(in, noise_);
     angular_velocity_ = gyro_.has_velocity ? gyro_.AngularVelocity(in, noise_)
                                            : Vec3(angular_velocity_ + angular_accel_ * last_dt_);
-    rotation_ = gyro_.has_rotation ? Mat3(in.motion.frames[gyro_.link].linear())
-                                   : Mat3(rotation_ * RotationFromMoment(angular_velocity_ * last_dt_));
+    rotation_ = gyro_.has_rotation
+                    ? Mat3(in.motion.frames[gyro_.link].linear())
+                    : Mat3(rotation_ * RotationFromMoment(angular_velocity_ * last_dt_));
     Pack();
   }
   void Advance(double dt) override { last_dt_ = dt; }
@@ -318,8 +321,7 @@ class ImuSensor : public Sensor {
   }
 
  protected:
-  bool ApplySetting(const std::string& key, const std::string& text,
-                    std::string* error) override {
+  bool ApplySetting(const std::string& key, const std::string& text, std::string* error) override {
     if (key == "link") {
       return accel_.Apply(key, text, robot_, error) && gyro_.Apply(key, text, robot_, error);
     }

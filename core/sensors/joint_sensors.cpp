@@ -40,7 +40,8 @@ class JointSensor : public Sensor {
   }
   std::vector<std::string> MeasurementNames() const override {
     std::vector<std::string> names;
-    for (int i = 0; i < count(); ++i) names.push_back(prefix_ + "[" + std::to_string(Index(i)) + "]");
+    for (int i = 0; i < count(); ++i)
+      names.push_back(prefix_ + "[" + std::to_string(Index(i)) + "]");
     return names;
   }
   void Simulate(const SensorInputs& inputs) override {
@@ -49,15 +50,14 @@ class JointSensor : public Sensor {
     for (int i = 0; i < count(); ++i) {
       const int k = Index(i);
       const double v = k < values.size() ? values[k] : 0.0;
-      measurements_[i] = Discretize(v, Entry(resolution_, k, i, full_),
-                                    Entry(variance_, k, i, full_), noise_);
+      measurements_[i] =
+          Discretize(v, Entry(resolution_, k, i, full_), Entry(variance_, k, i, full_), noise_);
     }
   }
   void Reset() override { measurements_.assign(count(), 0.0); }
 
  protected:
-  bool ApplySetting(const std::string& key, const std::string& text,
-                    std::string* error) override {
+  bool ApplySetting(const std::string& key, const std::string& text, std::string* error) override {
     if (key == "indices") return ApplyIndices(text, error);
     return ReadSensorList(text, key == variance_key_ ? &variance_ : &resolution_, error);
   }

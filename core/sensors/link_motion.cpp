@@ -61,8 +61,8 @@ LinkMotion ComputeLinkMotion(const RobotDesc& robot, const VecX& q, const VecX& 
   LinkMotion m;
   m.frames = LinkTransforms(robot, q);
   const size_t n = robot.links.size();
-  for (auto* v : {&m.angular_velocity, &m.linear_velocity, &m.angular_acceleration,
-                  &m.linear_acceleration}) {
+  for (auto* v :
+       {&m.angular_velocity, &m.linear_velocity, &m.angular_acceleration, &m.linear_acceleration}) {
     v->assign(n, Vec3::Zero());
   }
   for (size_t i = 0; i < n; ++i) {

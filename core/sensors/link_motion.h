@@ -16,9 +16,9 @@
 namespace lamina::core {
 
 struct LinkMotion {
-  std::vector<Pose> frames;             ///< link frames in the world
-  std::vector<Vec3> angular_velocity;   ///< rad/s
-  std::vector<Vec3> linear_velocity;    ///< of the frame origin, m/s
+  std::vector<Pose> frames;                ///< link frames in the world
+  std::vector<Vec3> angular_velocity;      ///< rad/s
+  std::vector<Vec3> linear_velocity;       ///< of the frame origin, m/s
   std::vector<Vec3> angular_acceleration;  ///< rad/s²
   std::vector<Vec3> linear_acceleration;   ///< of the frame origin, m/s²
 

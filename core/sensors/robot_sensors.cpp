@@ -54,8 +54,8 @@ std::unique_ptr<Sensor> ParseOne(const tinyxml2::XMLElement& e, const RobotDesc&
   std::unique_ptr<Sensor> sensor = MakeSensor(e.Name(), robot);
   if (!sensor) {
     if (diagnostics) {
-      diagnostics->Error(at, std::string("unknown sensor type '") + e.Name() +
-                                 "'; the sensor is left out");
+      diagnostics->Error(
+          at, std::string("unknown sensor type '") + e.Name() + "'; the sensor is left out");
     }
     return nullptr;
   }
@@ -89,16 +89,15 @@ std::vector<std::unique_ptr<Sensor>> ParseSensorsElement(const tinyxml2::XMLElem
     std::unique_ptr<Sensor> sensor = ParseOne(*e, robot, out, at, diagnostics);
     if (!sensor) continue;
     if (NameTaken(out, sensor->name()) && diagnostics) {
-      diagnostics->Warning(at, "a second sensor named '" + sensor->name() +
-                                   "': lookups by name find the first");
+      diagnostics->Warning(
+          at, "a second sensor named '" + sensor->name() + "': lookups by name find the first");
     }
     out.push_back(std::move(sensor));
   }
   return out;
 }
 
-std::vector<std::unique_ptr<Sensor>> ParseSensorsXml(const std::string& xml,
-                                                     const RobotDesc& robot,
+std::vector<std::unique_ptr<Sensor>> ParseSensorsXml(const std::string& xml, const RobotDesc& robot,
                                                      const SourceLocation& first_line,
                                                      Diagnostics* diagnostics) {
   tinyxml2::XMLDocument doc;
@@ -176,9 +175,8 @@ bool RobotSensors::needs_motion() const {
 }
 
 bool RobotSensors::needs_driver_torques() const {
-  return std::any_of(sensors_.begin(), sensors_.end(), [](const auto& s) {
-    return std::string(s->type()) == "DriverTorqueSensor";
-  });
+  return std::any_of(sensors_.begin(), sensors_.end(),
+                     [](const auto& s) { return std::string(s->type()) == "DriverTorqueSensor"; });
 }
 
 bool RobotSensors::has_images() const {

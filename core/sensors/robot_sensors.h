@@ -34,8 +34,8 @@ struct RobotSensorsState {
   std::vector<double> next_times;  ///< s, per sensor
   std::vector<std::vector<double>> measurements, internal;
   std::vector<std::uint64_t> noise_counts;
-  double sample_time = 0.0;            ///< s, of the last sample (when started)
-  VecX sample_dq;                      ///< the joint rates then
+  double sample_time = 0.0;           ///< s, of the last sample (when started)
+  VecX sample_dq;                     ///< the joint rates then
   std::vector<LinkContact> contacts;  ///< the last physics step's contacts on the robot
 };
 
@@ -49,8 +49,7 @@ std::vector<std::unique_ptr<Sensor>> ParseSensorsElement(const tinyxml2::XMLElem
                                                          const std::string& file, int line_offset,
                                                          Diagnostics* diagnostics);
 /// The same from XML text whose first line is `first_line` (line 0: lines of the text).
-std::vector<std::unique_ptr<Sensor>> ParseSensorsXml(const std::string& xml,
-                                                     const RobotDesc& robot,
+std::vector<std::unique_ptr<Sensor>> ParseSensorsXml(const std::string& xml, const RobotDesc& robot,
                                                      const SourceLocation& first_line,
                                                      Diagnostics* diagnostics);
 

@@ -22,9 +22,13 @@ constexpr double kTwoPi = 6.283185307179586;
 
 }  // namespace
 
-std::uint64_t SensorNoise::Next() { return Mix(Mix(seed_) ^ count_++); }
+std::uint64_t SensorNoise::Next() {
+  return Mix(Mix(seed_) ^ count_++);
+}
 
-double SensorNoise::Uniform() { return static_cast<double>(Next() >> 11) * 0x1.0p-53; }
+double SensorNoise::Uniform() {
+  return static_cast<double>(Next() >> 11) * 0x1.0p-53;
+}
 
 // Box–Muller from two uniforms (the first kept away from 0)
 double SensorNoise::Normal() {
@@ -39,7 +43,9 @@ double Discretize(double value, double resolution, double variance, SensorNoise&
   return value;
 }
 
-void Sensor::Reset() { std::fill(measurements_.begin(), measurements_.end(), 0.0); }
+void Sensor::Reset() {
+  std::fill(measurements_.begin(), measurements_.end(), 0.0);
+}
 
 bool Sensor::SetSetting(const std::string& key, const std::string& text, std::string* error) {
   bool ok = false;

@@ -46,8 +46,8 @@ struct LinkContact {
 
 /// Distance (m) from `origin` along unit `direction` to the first surface of the world, not
 /// counting the robot link `ignore_link` (-1: none); +inf when nothing is hit within `max`.
-using RayCaster = std::function<double(const Vec3& origin, const Vec3& direction, double max,
-                                       int ignore_link)>;
+using RayCaster =
+    std::function<double(const Vec3& origin, const Vec3& direction, double max, int ignore_link)>;
 
 /// What a camera sensor asks of a renderer (core stays free of GL: `ui` implements it).
 struct CameraRequest {
@@ -73,16 +73,16 @@ class CameraRenderer {
 /// The robot's state at the start of a physics step, as every sensor sees it.
 struct SensorInputs {
   const RobotDesc* robot = nullptr;
-  double time = 0.0;               ///< s
-  VecX q, dq, ddq;                 ///< link space; ddq the mean since the previous sample
+  double time = 0.0;  ///< s
+  VecX q, dq, ddq;    ///< link space; ddq the mean since the previous sample
   /// Link frames, velocities and accelerations (world); left empty by the simulation when no
   /// sensor of the robot reads them (RobotSensors::needs_motion).
   LinkMotion motion;
-  Vec3 gravity = Vec3(0, 0, -9.8); ///< m/s²
-  VecX driver_torques;  ///< the drivers' clamped efforts, driver space (when read)
+  Vec3 gravity = Vec3(0, 0, -9.8);    ///< m/s²
+  VecX driver_torques;                ///< the drivers' clamped efforts, driver space (when read)
   std::vector<LinkContact> contacts;  ///< the last physics step's contacts on the robot
-  RayCaster ray;                   ///< may be empty (then lasers read +inf)
-  CameraRenderer* camera = nullptr;  ///< may be null (then cameras measure nothing)
+  RayCaster ray;                      ///< may be empty (then lasers read +inf)
+  CameraRenderer* camera = nullptr;   ///< may be null (then cameras measure nothing)
 };
 
 /// Seeded, counter-based normal and uniform noise: a draw depends only on (seed, count), so a

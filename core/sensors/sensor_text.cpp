@@ -41,8 +41,8 @@ bool FixedNumbers(const std::string& text, size_t count, std::vector<double>* ou
                   std::string* error) {
   if (!Numbers(text, true, out, error)) return false;
   if (out->size() == count) return true;
-  return Fail(error, "expected " + std::to_string(count) + " numbers, got " +
-                         std::to_string(out->size()));
+  return Fail(error,
+              "expected " + std::to_string(count) + " numbers, got " + std::to_string(out->size()));
 }
 
 }  // namespace
@@ -65,9 +65,12 @@ bool ReadSensorInt(const std::string& text, int* value, std::string* error) {
 bool ReadSensorBool(const std::string& text, bool* value, std::string* error) {
   const std::vector<std::string> words = Words(text);
   const std::string word = words.size() == 1 ? ToLower(words[0]) : "";
-  if (word == "1" || word == "true") *value = true;
-  else if (word == "0" || word == "false") *value = false;
-  else return Fail(error, "'" + text + "' is not a boolean (0 or 1)");
+  if (word == "1" || word == "true")
+    *value = true;
+  else if (word == "0" || word == "false")
+    *value = false;
+  else
+    return Fail(error, "'" + text + "' is not a boolean (0 or 1)");
   return true;
 }
 

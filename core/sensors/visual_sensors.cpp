@@ -31,7 +31,9 @@ namespace {
 
 constexpr double kPi = 3.141592653589793;
 
-double Frac(double u) { return u - std::floor(u); }
+double Frac(double u) {
+  return u - std::floor(u);
+}
 
 double Waveform(int type, double u, bool last_of_fan) {
   if (type == 0) return std::sin(2.0 * kPi * u);
@@ -128,15 +130,14 @@ class LaserRangeSensor : public Sensor {
       const double d = measurements_[i];
       const bool hit = std::isfinite(d) && d > min_ && d < max_;
       const Vec3 end = origin + dir * (hit ? d : std::min(std::isfinite(max_) ? max_ : 2.0, 2.0));
-      out->segments.push_back({origin, end, hit ? SensorDrawing::Kind::kRayHit
-                                                : SensorDrawing::Kind::kRayMiss});
+      out->segments.push_back(
+          {origin, end, hit ? SensorDrawing::Kind::kRayHit : SensorDrawing::Kind::kRayMiss});
       if (hit) out->hits.push_back(end);
     }
   }
 
  protected:
-  bool ApplySetting(const std::string& key, const std::string& text,
-                    std::string* error) override {
+  bool ApplySetting(const std::string& key, const std::string& text, std::string* error) override {
     if (key == "link") return ReadSensorLink(text, robot_, true, &link_, error);
     if (key == "Tsensor") return ReadSensorPose(text, &tsensor_, error);
     if (key == "measurementCount") return ReadCount(text, error);
@@ -161,11 +162,11 @@ class LaserRangeSensor : public Sensor {
     return d <= min_ || d >= max_ ? max_ : d;
   }
   bool ApplyDepth(const std::string& key, const std::string& text, std::string* error) {
-    double* target = key == "depthResolution"         ? &resolution_
-                     : key == "depthMinimum"          ? &min_
-                     : key == "depthMaximum"          ? &max_
-                     : key == "depthVarianceLinear"   ? &variance_linear_
-                                                      : &variance_constant_;
+    double* target = key == "depthResolution"       ? &resolution_
+                     : key == "depthMinimum"        ? &min_
+                     : key == "depthMaximum"        ? &max_
+                     : key == "depthVarianceLinear" ? &variance_linear_
+                                                    : &variance_constant_;
     double v = 0.0;
     if (!ReadSensorDouble(text, &v, error)) return false;
     if (v < 0.0) return *error = key + " must be >= 0", false;
@@ -223,8 +224,8 @@ class CameraSensor : public Sensor {
       if ((channel[0] == 'r' && !rgb_) || (channel[0] == 'd' && !depth_)) continue;
       for (int y = 0; y < yres_; ++y) {
         for (int x = 0; x < xres_; ++x) {
-          names.push_back(std::string(channel) + "[" + std::to_string(x) + "," +
-                          std::to_string(y) + "]");
+          names.push_back(std::string(channel) + "[" + std::to_string(x) + "," + std::to_string(y) +
+                          "]");
         }
       }
     }
@@ -236,10 +237,12 @@ class CameraSensor : public Sensor {
     measurements_.clear();
     const size_t n = static_cast<size_t>(xres_) * yres_;
     if (rgb_) {
-      for (size_t i = 0; i < n; ++i) measurements_.push_back(i < image.rgb.size() ? image.rgb[i] : 0);
+      for (size_t i = 0; i < n; ++i)
+        measurements_.push_back(i < image.rgb.size() ? image.rgb[i] : 0);
     }
     if (depth_) {
-      for (size_t i = 0; i < n; ++i) measurements_.push_back(Depth(i < image.depth.size() ? image.depth[i] : kInf));
+      for (size_t i = 0; i < n; ++i)
+        measurements_.push_back(Depth(i < image.depth.size() ? image.depth[i] : kInf));
     }
     rendered_ = true;
   }
@@ -264,15 +267,20 @@ class CameraSensor : public Sensor {
   }
 
  protected:
-  bool ApplySetting(const std::string& key, const std::string& text,
-                    std::string* error) override {
+  bool ApplySetting(const std::string& key, const std::string& text, std::string* error) override {
     bool ok = false;
-    if (key == "link") ok = ReadSensorLink(text, robot_, true, &link_, error);
-    else if (key == "Tsensor") ok = ReadSensorPose(text, &tsensor_, error);
-    else if (key == "rgb") ok = ReadSensorBool(text, &rgb_, error);
-    else if (key == "depth") ok = ReadSensorBool(text, &depth_, error);
-    else if (key == "xres" || key == "yres") ok = ReadResolution(text, key == "xres" ? &xres_ : &yres_, error);
-    else ok = ApplyNumber(key, text, error);
+    if (key == "link")
+      ok = ReadSensorLink(text, robot_, true, &link_, error);
+    else if (key == "Tsensor")
+      ok = ReadSensorPose(text, &tsensor_, error);
+    else if (key == "rgb")
+      ok = ReadSensorBool(text, &rgb_, error);
+    else if (key == "depth")
+      ok = ReadSensorBool(text, &depth_, error);
+    else if (key == "xres" || key == "yres")
+      ok = ReadResolution(text, key == "xres" ? &xres_ : &yres_, error);
+    else
+      ok = ApplyNumber(key, text, error);
     if (ok) Reset();
     return ok;
   }

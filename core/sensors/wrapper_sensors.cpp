@@ -61,11 +61,10 @@ class TransformedSensor : public WrapperSensor {
   }
 
  protected:
-  bool ApplySetting(const std::string& key, const std::string& text,
-                    std::string* error) override {
+  bool ApplySetting(const std::string& key, const std::string& text, std::string* error) override {
     if (key == "sensor") return ApplyWrappedName(text, error);
-    std::vector<double>* target = key == "scale"   ? &scale_
-                                  : key == "bias"  ? &bias_
+    std::vector<double>* target = key == "scale"     ? &scale_
+                                  : key == "bias"    ? &bias_
                                   : key == "minimum" ? &minimum_
                                                      : &maximum_;
     return ReadSensorList(text, target, error);
@@ -94,8 +93,7 @@ class CorruptedSensor : public WrapperSensor {
   }
 
  protected:
-  bool ApplySetting(const std::string& key, const std::string& text,
-                    std::string* error) override {
+  bool ApplySetting(const std::string& key, const std::string& text, std::string* error) override {
     if (key == "sensor") return ApplyWrappedName(text, error);
     return ReadSensorList(text, key == "variance" ? &variance_ : &resolution_, error);
   }
@@ -120,8 +118,7 @@ class FilteredSensor : public WrapperSensor {
   }
 
  protected:
-  bool ApplySetting(const std::string& key, const std::string& text,
-                    std::string* error) override {
+  bool ApplySetting(const std::string& key, const std::string& text, std::string* error) override {
     if (key == "sensor") return ApplyWrappedName(text, error);
     double s = 0.0;
     if (!ReadSensorDouble(text, &s, error)) return false;
@@ -180,8 +177,7 @@ class TimeDelayedSensor : public WrapperSensor {
   }
 
  protected:
-  bool ApplySetting(const std::string& key, const std::string& text,
-                    std::string* error) override {
+  bool ApplySetting(const std::string& key, const std::string& text, std::string* error) override {
     if (key == "sensor") return ApplyWrappedName(text, error);
     double v = 0.0;
     if (!ReadSensorDouble(text, &v, error)) return false;

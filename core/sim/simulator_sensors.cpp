@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The Simulator's robot sensors: built once with the controllers, sampled at the start of every
 // physics step before the controllers (Klamp't's order), fed after every accepted step with the
-// contacts on the links of robots with contact or force/torque sensors (from the contact feedback those sensors register), and a ray caster over the
-// bodies for laser range sensors.
+// contacts on the links of robots with contact or force/torque sensors (from the contact feedback
+// those sensors register), and a ray caster over the bodies for laser range sensors.
 #include <cmath>
 
 #include "core/contact/ray_cast.h"
@@ -11,9 +11,13 @@
 
 namespace lamina::core {
 
-RobotSensors& Simulator::sensors(int robot) { return sensors_[RequireRobot(robot)]; }
+RobotSensors& Simulator::sensors(int robot) {
+  return sensors_[RequireRobot(robot)];
+}
 
-const RobotSensors& Simulator::sensors(int robot) const { return sensors_[RequireRobot(robot)]; }
+const RobotSensors& Simulator::sensors(int robot) const {
+  return sensors_[RequireRobot(robot)];
+}
 
 // the sensors of every robot, and the contact feedback of the links of robots whose sensors
 // read contacts (each link against everything it may touch)
@@ -79,7 +83,8 @@ std::vector<LinkContact> Simulator::RobotContacts(int robot) const {
     for (const int id : {r.first, r.second}) {
       if (id < first || id >= end) continue;
       const double sign = id == r.first ? 1.0 : -1.0;
-      for (const FeedbackContact& c : r.contacts) out.push_back({id - first, c.position, sign * c.force});
+      for (const FeedbackContact& c : r.contacts)
+        out.push_back({id - first, c.position, sign * c.force});
     }
   }
   return out;

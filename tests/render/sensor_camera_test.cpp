@@ -4,6 +4,8 @@
 // axis, so a plane square to it reads one depth) and 1.0 m on top of a 0.5 m box below it; the
 // colour image shows the box where the depth does; a simulation without a renderer leaves its
 // camera's measurements at zero.
+#include "ui/render/sensor_camera.h"
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -17,7 +19,6 @@
 #include "tests/common/scene_builders.h"
 #include "ui/platform/osmesa_context.h"
 #include "ui/render/renderer.h"
-#include "ui/render/sensor_camera.h"
 
 namespace lamina {
 namespace {

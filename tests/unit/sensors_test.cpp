@@ -49,8 +49,9 @@ core::SensorInputs InputsAt(const core::RobotDesc& robot, const VecX& q, const V
   return in;
 }
 
-std::unique_ptr<core::Sensor> Make(const std::string& type, const core::RobotDesc& robot,
-                                   const std::vector<std::pair<std::string, std::string>>& settings) {
+std::unique_ptr<core::Sensor> Make(
+    const std::string& type, const core::RobotDesc& robot,
+    const std::vector<std::pair<std::string, std::string>>& settings) {
   std::unique_ptr<core::Sensor> sensor = core::MakeSensor(type, robot);
   EXPECT_NE(sensor, nullptr) << type;
   for (const auto& [key, text] : settings) {
@@ -82,8 +83,8 @@ TEST(LinkMotionTest, VelocitiesAndAccelerationsMatchFiniteDifferencesOfKinematic
     EXPECT_LT((m.linear_acceleration[link] - acc).norm(), 1e-5);
     // ω from Ṙ Rᵀ, α from the difference of ω
     const auto omega = [&](double t) {
-      const core::Mat3 w = (rotation(t + h, link) - rotation(t - h, link)) / (2 * h) *
-                           rotation(t, link).transpose();
+      const core::Mat3 w =
+          (rotation(t + h, link) - rotation(t - h, link)) / (2 * h) * rotation(t, link).transpose();
       return Vec3(w(2, 1), w(0, 2), w(1, 0));
     };
     EXPECT_LT((m.angular_velocity[link] - omega(0)).norm(), 1e-6);
@@ -155,14 +156,15 @@ TEST(SensorTest, AnAccelerometerReadsSpecificForceInItsOwnAxes) {
   accel->Simulate(InputsAt(robot, q, dq, VecX::Zero(3)));
   EXPECT_NEAR(accel->measurements()[2], 9.8, 1e-12);
   // on the turning link 0.5 m out along x, turning at 2 rad/s: 4 · 0.5 = 2 m/s² inwards
-  accel = Make("Accelerometer", robot, {{"link", "turn"}, {"Tsensor", "1 0 0 0 1 0 0 0 1 0.5 0 0"}});
+  accel =
+      Make("Accelerometer", robot, {{"link", "turn"}, {"Tsensor", "1 0 0 0 1 0 0 0 1 0.5 0 0"}});
   dq[1] = 2.0;
   accel->Simulate(InputsAt(robot, q, dq, VecX::Zero(3)));
   EXPECT_NEAR(accel->measurements()[0], -2.0, 1e-12);
   EXPECT_NEAR(accel->measurements()[2], 9.8, 1e-12);
   // a sensor turned upside down about x reads −9.8 along its own z
-  accel = Make("Accelerometer", robot, {{"link", "0"}, {"Tsensor", "1 0 0 0 -1 0 0 0 -1 0 0 0"},
-                                        {"hasAxis", "0 1 1"}});
+  accel = Make("Accelerometer", robot,
+               {{"link", "0"}, {"Tsensor", "1 0 0 0 -1 0 0 0 -1 0 0 0"}, {"hasAxis", "0 1 1"}});
   accel->Simulate(InputsAt(robot, q, VecX::Zero(3), VecX::Zero(3)));
   EXPECT_THAT(accel->measurements(), ElementsAre(0.0, 0.0, -9.8));
 }
@@ -196,7 +198,7 @@ TEST(SensorTest, ForceTorqueReadsTheStaticLoadOfItsSubtreeOnTheParent) {
   const double weight = 5 * 9.8;
   const std::vector<double>& m = ft->measurements();
   EXPECT_NEAR(m[2], -weight, 1e-9);
-  EXPECT_NEAR(m[3], -3 * 9.8 * 0.1, 1e-9);            // (r × F)_x = r_y F_z
+  EXPECT_NEAR(m[3], -3 * 9.8 * 0.1, 1e-9);             // (r × F)_x = r_y F_z
   EXPECT_NEAR(m[4], (2 * 0.1 + 3 * 0.6) * 9.8, 1e-9);  // (r × F)_y = −r_x F_z
   // a contact pushing the tilt link up by its own weight takes it off the joint
   in.contacts.push_back({2, in.motion.frames[2] * Vec3(0.2, 0, 0), Vec3(0, 0, 3 * 9.8)});
@@ -208,8 +210,11 @@ TEST(SensorTest, ForceTorqueReadsTheStaticLoadOfItsSubtreeOnTheParent) {
 TEST(SensorTest, AContactSensorSumsTheForcesInsideItsPatch) {
   core::RobotDesc robot = Chain();
   auto patch = Make("ContactSensor", robot,
-                    {{"link", "1"}, {"Tsensor", "1 0 0 0 1 0 0 0 1 0 0 0.05"},
-                     {"patchMin", "-0.1 -0.1"}, {"patchMax", "0.1 0.1"}, {"hasForce", "0 0 1"},
+                    {{"link", "1"},
+                     {"Tsensor", "1 0 0 0 1 0 0 0 1 0 0 0.05"},
+                     {"patchMin", "-0.1 -0.1"},
+                     {"patchMax", "0.1 0.1"},
+                     {"hasForce", "0 0 1"},
                      {"fSensitivity", "0.5"}});
   EXPECT_THAT(patch->MeasurementNames(), ElementsAre("contact", "force_z"));
   core::SensorInputs in = InputsAt(robot, VecX::Zero(3), VecX::Zero(3), VecX::Zero(3));
@@ -228,8 +233,10 @@ TEST(SensorTest, AContactSensorSumsTheForcesInsideItsPatch) {
 TEST(SensorTest, ALaserReadsItsRaysDistancesWithinResolutionAndMaxForMisses) {
   const core::RobotDesc robot = Chain();
   auto laser = Make("LaserRangeSensor", robot,
-                    {{"measurementCount", "3"}, {"xSweepMagnitude", "0.5"},
-                     {"depthResolution", "0.01"}, {"depthMaximum", "10"}});
+                    {{"measurementCount", "3"},
+                     {"xSweepMagnitude", "0.5"},
+                     {"depthResolution", "0.01"},
+                     {"depthMaximum", "10"}});
   core::SensorInputs in = InputsAt(robot, VecX::Zero(3), VecX::Zero(3), VecX::Zero(3));
   // a wall at z = 2 in the world (the sensor at the origin looking along z)
   in.ray = [](const Vec3& origin, const Vec3& dir, double max, int) {
@@ -271,7 +278,8 @@ TEST(SensorTest, WrappersTransformFilterAndDelayTheSensorTheyWrap) {
   // last sample q0 = 0.4: 2·0.4 + 1 = 1.8, clamped to 1.5; the others 1
   EXPECT_THAT(sensors.sensor(1).measurements(), ElementsAre(1.5, 1.0, 1.0));
   // smoothing 0.5 over 0, 0.1, 0.2, 0.3, 0.4
-  EXPECT_NEAR(sensors.sensor(2).measurements()[0], 0.5 * 0.4 + 0.25 * 0.3 + 0.125 * 0.2 + 0.0625 * 0.1, 1e-12);
+  EXPECT_NEAR(sensors.sensor(2).measurements()[0],
+              0.5 * 0.4 + 0.25 * 0.3 + 0.125 * 0.2 + 0.0625 * 0.1, 1e-12);
   EXPECT_TRUE(delayed[0].empty());  // nothing delivered yet
   EXPECT_TRUE(delayed[1].empty());
   EXPECT_NEAR(delayed[2][0], 0.0, 1e-12);  // two samples late

@@ -129,8 +129,8 @@ void SensorPanel::Draw(const PanelContext& context) {
                   sensors.size());
       ImGui::TextDisabled("select a link of another robot to see its sensors");
       for (size_t i = 0; i < sensors.size(); ++i) {
-        Plot* plot = r < static_cast<int>(plots_.size()) && i < plots_[r].size() ? &plots_[r][i]
-                                                                                 : nullptr;
+        Plot* plot =
+            r < static_cast<int>(plots_.size()) && i < plots_[r].size() ? &plots_[r][i] : nullptr;
         DrawSensor(sensors[i], plot, i < kOpenAtFirst, context.state);
       }
     }

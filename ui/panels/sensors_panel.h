@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Sensors panel: the sensors of the selected robot (the robot of the selected link, else the
 // first robot), Klamp't SimTest's sensor plot: per sensor (the first two open at first) its
-// type, link and current measurements, and a strip chart of the last seconds of every measurement (the legend shows
-// and hides each; the first twelve are shown at first, as SimTest's fixed colours), with a CSV
-// export. Samples of every robot are kept whether the panel is shown or not, so switching
-// robots shows their history. Cameras show their size: their pictures come from
+// type, link and current measurements, and a strip chart of the last seconds of every measurement
+// (the legend shows and hides each; the first twelve are shown at first, as SimTest's fixed
+// colours), with a CSV export. Samples of every robot are kept whether the panel is shown or not,
+// so switching robots shows their history. Cameras show their size: their pictures come from
 // `lamina-headless run --sensor-images` (the editor gives its simulation no camera renderer).
 #pragma once
 

@@ -202,22 +202,23 @@ Renderer::FrameParameters Renderer::PrepareCameraFrame(const core::RenderScene& 
                                                        const core::CameraRequest& request) const {
   FrameParameters frame;
   const Eigen::AlignedBox3d& box = scene.bounds;
-  const Eigen::Vector3d center = box.isEmpty() ? Eigen::Vector3d::Zero().eval() : box.center().eval();
+  const Eigen::Vector3d center =
+      box.isEmpty() ? Eigen::Vector3d::Zero().eval() : box.center().eval();
   const double half_diagonal = box.isEmpty() ? 1.0 : std::max(0.5 * box.diagonal().norm(), 1e-3);
   frame.view_projection = (CameraProjection(request) * CameraView(request)).cast<float>();
   frame.eye = request.camera.translation().cast<float>();
   const Eigen::Vector3d forward = request.camera.linear().col(2);
-  frame.sky_shift = static_cast<float>(0.4 * std::asin(std::clamp(forward.z(), -1.0, 1.0)) /
-                                       (0.5 * core::kPi));
-  frame.haze_range = Eigen::Vector2f(static_cast<float>(request.zfar),
-                                     static_cast<float>(2.0 * request.zfar));
+  frame.sky_shift =
+      static_cast<float>(0.4 * std::asin(std::clamp(forward.z(), -1.0, 1.0)) / (0.5 * core::kPi));
+  frame.haze_range =
+      Eigen::Vector2f(static_cast<float>(request.zfar), static_cast<float>(2.0 * request.zfar));
   const double extent = box.isEmpty() ? 1.0 : std::max(box.sizes().x(), box.sizes().y());
   frame.checker_size =
       static_cast<float>(settings_.checker_size > 0.0 ? settings_.checker_size
                                                       : NiceStep(std::max(extent, 1e-3) / 16));
   frame.shadows = settings_.shadows && !box.isEmpty();
-  SetSun(center.cast<float>(), static_cast<float>(half_diagonal),
-         static_cast<float>(half_diagonal), &frame);
+  SetSun(center.cast<float>(), static_cast<float>(half_diagonal), static_cast<float>(half_diagonal),
+         &frame);
   return frame;
 }
 
@@ -252,15 +253,17 @@ void Renderer::ReadCameraImage(const core::CameraRequest& request, core::CameraI
   const double n = request.znear, f = request.zfar;
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      const size_t from = static_cast<size_t>(h - 1 - y) * w + x, to = static_cast<size_t>(y) * w + x;
+      const size_t from = static_cast<size_t>(h - 1 - y) * w + x,
+                   to = static_cast<size_t>(y) * w + x;
       if (request.rgb) {
         const std::uint8_t* p = &rgba[4 * from];
         image->rgb[to] = (std::uint32_t{p[0]} << 16) | (std::uint32_t{p[1]} << 8) | p[2];
       }
       if (!request.depth) continue;
       const double d = depth[from];
-      image->depth[to] = d >= 1.0 ? std::numeric_limits<float>::infinity()
-                                  : static_cast<float>(2.0 * n * f / (f + n - (2.0 * d - 1.0) * (f - n)));
+      image->depth[to] =
+          d >= 1.0 ? std::numeric_limits<float>::infinity()
+                   : static_cast<float>(2.0 * n * f / (f + n - (2.0 * d - 1.0) * (f - n)));
     }
   }
 }

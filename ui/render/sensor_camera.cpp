@@ -5,8 +5,7 @@
 
 namespace lamina::ui {
 
-SceneCamera::SceneCamera(Renderer* renderer, SceneSource source,
-                         std::function<void()> make_current)
+SceneCamera::SceneCamera(Renderer* renderer, SceneSource source, std::function<void()> make_current)
     : renderer_(renderer), source_(std::move(source)), make_current_(std::move(make_current)) {}
 
 bool SceneCamera::Render(const core::CameraRequest& request, core::CameraImage* image) {

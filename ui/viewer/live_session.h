@@ -51,7 +51,7 @@ namespace lamina::ui {
 /// PID targets, or the sensed value where a driver is not in PID mode) and the driver efforts.
 struct RobotFrame {
   core::VecX sensed, commanded;
-  core::VecX torques;  ///< per driver, clamped efforts (N·m or N)
+  core::VecX torques;                        ///< per driver, clamped efforts (N·m or N)
   std::vector<core::SensorReadout> sensors;  ///< every sensor's name, type and measurements
   core::SensorDrawing sensor_drawing;        ///< the sensors in 3-D (the `sensors` overlay)
 };
