@@ -138,6 +138,7 @@ RobotSensors::RobotSensors(const RobotDesc& robot, Diagnostics* diagnostics) {
     sensors_.back()->set_name("dq");
   }
   Seed(robot.name);
+  FindNeeds();
   Reset();
 }
 
@@ -158,30 +159,18 @@ int RobotSensors::Find(const std::string& name) const {
   return -1;
 }
 
-bool RobotSensors::needs_contacts() const {
-  return std::any_of(sensors_.begin(), sensors_.end(), [](const auto& s) {
-    return std::string(s->type()) == "ContactSensor" ||
-           std::string(s->type()) == "ForceTorqueSensor";
-  });
-}
-
-bool RobotSensors::needs_motion() const {
-  return std::any_of(sensors_.begin(), sensors_.end(), [](const auto& s) {
+// what the simulation must compute for these sensors: fixed with the list, so asked once
+// (RecordSensorStep asks at every physics step)
+void RobotSensors::FindNeeds() {
+  for (const auto& s : sensors_) {
     const std::string type = s->type();
-    return dynamic_cast<const WrapperSensor*>(s.get()) == nullptr &&
-           type != "JointPositionSensor" && type != "JointVelocitySensor" &&
-           type != "DriverTorqueSensor";
-  });
-}
-
-bool RobotSensors::needs_driver_torques() const {
-  return std::any_of(sensors_.begin(), sensors_.end(),
-                     [](const auto& s) { return std::string(s->type()) == "DriverTorqueSensor"; });
-}
-
-bool RobotSensors::has_images() const {
-  return std::any_of(sensors_.begin(), sensors_.end(),
-                     [](const auto& s) { return IsImageSensor(*s); });
+    const bool joint = type == "JointPositionSensor" || type == "JointVelocitySensor" ||
+                       type == "DriverTorqueSensor";
+    needs_contacts_ |= type == "ContactSensor" || type == "ForceTorqueSensor";
+    needs_motion_ |= !joint && dynamic_cast<const WrapperSensor*>(s.get()) == nullptr;
+    needs_driver_torques_ |= type == "DriverTorqueSensor";
+    has_images_ |= IsImageSensor(*s);
+  }
 }
 
 bool RobotSensors::AnyDue(double time) const {

@@ -85,17 +85,17 @@ class RobotSensors {
   /// every sample (0 before the first).
   double next_time(int i) const { return next_times_.at(i); }
   /// Some sensor is an image sensor (a camera): the simulation needs a CameraRenderer.
-  bool has_images() const;
+  bool has_images() const { return has_images_; }
   /// The robot declares no sensors: these are the defaults q and dq.
   bool defaults() const { return defaults_; }
 
   /// Some sensor reads contacts (contact and force/torque sensors).
-  bool needs_contacts() const;
+  bool needs_contacts() const { return needs_contacts_; }
   /// Some sensor reads link motion, rays or pictures (all but joint and driver sensors and
   /// wrappers); some reads the drivers' efforts (DriverTorqueSensor). The simulation computes
   /// only the inputs that are read.
-  bool needs_motion() const;
-  bool needs_driver_torques() const;
+  bool needs_motion() const { return needs_motion_; }
+  bool needs_driver_torques() const { return needs_driver_torques_; }
   /// Some enabled sensor is due in a step starting at `time` (s).
   bool AnyDue(double time) const;
   /// Samples every due sensor (see the schedule above) for a step of `step` s, and keeps the
@@ -130,10 +130,13 @@ class RobotSensors {
 
  private:
   void Seed(const std::string& robot_name);
+  void FindNeeds();
   std::vector<std::unique_ptr<Sensor>> sensors_;
   std::vector<double> next_times_;
   bool started_ = false;
   bool defaults_ = false;
+  bool needs_contacts_ = false, needs_motion_ = false, needs_driver_torques_ = false;
+  bool has_images_ = false;
   double sample_time_ = 0.0;
   VecX sample_dq_;
   std::vector<LinkContact> contacts_;
