@@ -22,6 +22,8 @@ BlendedSurface BlendSurfaces(const SurfaceDesc& a, const SurfaceDesc& b) {
   blended.restitution = 0.5 * (a.restitution + b.restitution);
   // The harmonic mean is twice the series combination: 2 / (1/μa + 1/μb).
   blended.friction = 2.0 * SeriesCombination(a.friction, b.friction);
+  blended.rolling = 2.0 * SeriesCombination(a.rolling_friction, b.rolling_friction);
+  blended.spinning = 2.0 * SeriesCombination(a.spinning_friction, b.spinning_friction);
   blended.stiffness = SeriesCombination(a.stiffness, b.stiffness);
   blended.damping = SeriesCombination(a.damping, b.damping);
   return blended;

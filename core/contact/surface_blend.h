@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The contact law of a pair of bodies: blending the two bodies' surfaces (restitution, friction,
-// boundary-layer stiffness and damping) into one, and turning a stiffness and damping into the
-// ERP/CFM of an ODE soft contact for a given step. docs/contact-model.md ("Blending two
-// surfaces") states the rules and where they differ from Klamp't.
+// rolling and spinning friction, boundary-layer stiffness and damping) into one, and turning a
+// stiffness and damping into the ERP/CFM of an ODE soft contact for a given step.
+// docs/contact-model.md ("Blending two surfaces") states the rules and where they differ from
+// Klamp't.
 #pragma once
 
 #include "core/model/world_desc.h"
@@ -11,10 +12,12 @@ namespace lamina::core {
 
 /// The contact law of one pair of surfaces.
 struct BlendedSurface {
-  double restitution;  ///< coefficient of restitution
-  double friction;     ///< Coulomb coefficient of the friction cone
-  double stiffness;    ///< N/m; inf = rigid contact
-  double damping;      ///< N·s/m; inf = rigid contact
+  double restitution;     ///< coefficient of restitution
+  double friction;        ///< Coulomb coefficient of the friction cone
+  double stiffness;       ///< N/m; inf = rigid contact
+  double damping;         ///< N·s/m; inf = rigid contact
+  double rolling = 0.0;   ///< rolling friction, m (torque ≤ rolling · N in the contact plane)
+  double spinning = 0.0;  ///< spinning friction, m (torque ≤ spinning · N about the normal)
 };
 
 /// Blends two surfaces whose values are >= 0 (inf allowed except for restitution):
@@ -23,7 +26,10 @@ struct BlendedSurface {
 ///   (the limit); inf when both are. No 0.707 factor: the friction cone keeps its μ;
 /// - stiffness and damping: the two boundary layers act in series, k = 1 / (1/ka + 1/kb): an
 ///   infinite side drops out (exactly), two equal layers give k / 2, either side 0 gives 0, both
-///   inf give inf. The same rule for the damping c.
+///   inf give inf. The same rule for the damping c;
+/// - rolling and spinning friction (Lamina's; finite): the harmonic mean like friction, 0 if
+///   either side is 0, so one body without rolling resistance (every body by default) turns it
+///   off for the pair.
 /// Symmetric: BlendSurfaces(a, b) and BlendSurfaces(b, a) are bitwise equal.
 BlendedSurface BlendSurfaces(const SurfaceDesc& a, const SurfaceDesc& b);
 

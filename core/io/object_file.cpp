@@ -32,11 +32,16 @@ constexpr double kDefaultSurfaceFraction = 1.0;
 // reading this much is plenty and keeps large Wavefront files cheap to sniff.
 constexpr size_t kSniffBytes = 64 * 1024;
 
-// keys in Klamp't's spelling (matched case-insensitively, reported as spelled here)
-const std::vector<std::string> kObjectKeys = {
-    "mesh",      "geomscale",       "geomtranslate", "T",        "position",
-    "velocity",  "angularVelocity", "mass",          "com",      "inertia",
-    "kFriction", "kRestitution",    "kStiffness",    "kDamping", "autoMass"};
+// keys in Klamp't's spelling (matched case-insensitively, reported as spelled here), then
+// Lamina's kRollingFriction and kSpinningFriction (docs/file-formats.md)
+const std::vector<std::string> kObjectKeys = [] {
+  std::vector<std::string> keys = {"mesh",       "geomscale", "geomtranslate",   "T",
+                                   "position",   "velocity",  "angularVelocity", "mass",
+                                   "com",        "inertia",   "kFriction",       "kRestitution",
+                                   "kStiffness", "kDamping",  "autoMass"};
+  keys.insert(keys.end(), {"kRollingFriction", "kSpinningFriction"});
+  return keys;
+}();
 // `friction` is what Klamp't's TerrainModel::Save writes (its Load ignores it); we read it.
 const std::vector<std::string> kTerrainKeys = {"mesh", "kFriction", "friction"};
 const std::vector<std::string> kWavefrontKeys = {
@@ -311,8 +316,9 @@ bool ApplyMassKeys(const KeyValueFile& file, RigidObjectDesc* out) {
   return com.has_value();
 }
 
-// `kFriction`, `kRestitution`, `kStiffness`, `kDamping`: the table's surface rows, set through
-// them on the object lent to a world of its own (the rows address elements of a world).
+// `kFriction`, `kRestitution`, `kStiffness`, `kDamping` (and Lamina's `kRollingFriction`,
+// `kSpinningFriction`): the table's surface rows, set through them on the object lent to a world
+// of its own (the rows address elements of a world).
 void ApplySurfaceKeys(const KeyValueFile& file, RigidObjectDesc* out) {
   WorldDesc lent;
   lent.objects.push_back(std::move(*out));

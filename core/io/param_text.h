@@ -18,7 +18,8 @@
 namespace lamina::core {
 
 /// The rows of a body's contact surface as the files name them: kRestitution, kFriction,
-/// kStiffness, kDamping (`<physics>`, `.obj` keys).
+/// kRollingFriction, kSpinningFriction, kStiffness, kDamping (`<physics>`, `.obj` keys; the
+/// writer leaves Lamina's rolling and spinning friction out while they are 0).
 std::vector<const ParamSpec*> SurfaceRows();
 /// The rows of `<simulation>`'s `<geometry>`: padding, preshrink and the surface rows.
 std::vector<const ParamSpec*> BodyGeometryRows();

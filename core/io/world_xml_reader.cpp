@@ -40,6 +40,16 @@ void ReadObjectParams(const XmlElementReader& reader, const std::vector<const Pa
   *object = std::move(lent.objects.front());
 }
 
+// the surface rows a `<terrain>` element may carry: Klamp't's kFriction and Lamina's rolling and
+// spinning friction (the other rows live in `<simulation><terrain><geometry>` only)
+std::vector<const ParamSpec*> TerrainSurfaceRows() {
+  std::vector<const ParamSpec*> rows;
+  for (const char* key : {"kFriction", "kRollingFriction", "kSpinningFriction"}) {
+    rows.push_back(FindParam(key, ElementKind::kTerrain));
+  }
+  return rows;
+}
+
 DisplayAttributes ReadDisplay(const XMLElement& element) {
   DisplayAttributes display;
   for (const tinyxml2::XMLAttribute* a = element.FirstAttribute(); a; a = a->Next()) {
@@ -264,8 +274,10 @@ void WorldReader::ReadObjectGeometry(const XMLElement& element, RigidObjectDesc*
 
 void WorldReader::ReadObjectPhysics(const XMLElement& element, RigidObjectDesc* object) {
   const XmlElementReader reader = Reader(element);
-  reader.WarnUnknownAttributes({"mass", "com", "inertia", "automass", "automassSurfaceFraction",
-                                "kRestitution", "kFriction", "kStiffness", "kDamping"});
+  std::vector<std::string> known = {"mass", "com", "inertia", "automass",
+                                    "automassSurfaceFraction"};
+  for (const ParamSpec* spec : SurfaceRows()) known.emplace_back(spec->key);
+  reader.WarnUnknownAttributes(known);
   std::vector<const ParamSpec*> mass_rows;
   for (const char* key : {"mass", "com", "inertia"}) {
     mass_rows.push_back(FindParam(key, ElementKind::kObject));
@@ -294,9 +306,12 @@ void WorldReader::ReadObjectPhysics(const XMLElement& element, RigidObjectDesc* 
 
 void WorldReader::ReadTerrain(const XMLElement& element) {
   const XmlElementReader reader = Reader(element);
-  reader.WarnUnknownAttributes({"name", "file", "kFriction", "margin", "scale", "translation",
-                                "position", "rotateRPY", "rotateMoment", "rotateX", "rotateY",
-                                "rotateZ"});
+  const std::vector<const ParamSpec*> surface_rows = TerrainSurfaceRows();
+  std::vector<std::string> known = {"name",        "file",     "margin",    "scale",
+                                    "translation", "position", "rotateRPY", "rotateMoment",
+                                    "rotateX",     "rotateY",  "rotateZ"};
+  for (const ParamSpec* spec : surface_rows) known.emplace_back(spec->key);
+  reader.WarnUnknownAttributes(known);
   const auto file = reader.String("file");
   if (!file) {
     reader.Error("missing attribute 'file'");
@@ -310,8 +325,7 @@ void WorldReader::ReadTerrain(const XMLElement& element) {
   if (const auto margin = reader.Number("margin", false)) terrain.geometry.margin = *margin;
   WorldDesc lent;  // the terrain in a world of its own, where the table's rows address it
   lent.terrains.push_back(std::move(terrain));
-  ReadParamAttributes(reader, {FindParam("kFriction", ElementKind::kTerrain)}, &lent,
-                      ElementIndex::Terrain(0));
+  ReadParamAttributes(reader, surface_rows, &lent, ElementIndex::Terrain(0));
   terrain = std::move(lent.terrains.front());
   for (const XMLElement* e = element.FirstChildElement(); e; e = e->NextSiblingElement()) {
     if (std::string(e->Name()) == "display") {

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <filesystem>
 #include <set>
+#include <vector>
 
 #include <tinyxml2.h>
 
@@ -65,6 +66,9 @@ class WorldWriter {
   Attributes RowAttributes(const std::vector<const ParamSpec*>& rows,
                            const ElementIndex& element) const;
   Attributes GlobalsAttributes() const;
+  // a body's rows without Lamina's that are off (rolling and spinning friction at 0)
+  std::vector<const ParamSpec*> BodyRows(std::vector<const ParamSpec*> rows,
+                                         const ElementIndex& element) const;
 
   const WorldDesc& world_;
   std::string dir_;
@@ -131,6 +135,16 @@ Attributes WorldWriter::GlobalsAttributes() const {
   return RowAttributes(rows, ElementIndex::Settings());
 }
 
+// Klamp't's rows always; Lamina's body rows (kRollingFriction, kSpinningFriction) only when on,
+// so that a world without them is written exactly as before and stays a Klamp't world
+std::vector<const ParamSpec*> WorldWriter::BodyRows(std::vector<const ParamSpec*> rows,
+                                                    const ElementIndex& element) const {
+  std::erase_if(rows, [&](const ParamSpec* spec) {
+    return !spec->klampt && spec->get(world_, element) == ParamValue{0.0};
+  });
+  return rows;
+}
+
 void WorldWriter::WriteTerrain(const TerrainDesc& terrain) {
   Attributes attributes{{"name", terrain.name}};
   const Attributes geometry = GeometryAttributes("file", terrain.geometry);
@@ -156,7 +170,8 @@ void WorldWriter::WriteObject(const RigidObjectDesc& object, int index) {
     rows.push_back(FindParam(key, ElementKind::kObject));
   }
   for (const ParamSpec* spec : SurfaceRows()) rows.push_back(spec);
-  Element("physics", RowAttributes(rows, ElementIndex::Object(index)));
+  const ElementIndex element = ElementIndex::Object(index);
+  Element("physics", RowAttributes(BodyRows(rows, element), element));
   WriteDisplay(object.display);
   printer_.CloseElement();
 }
@@ -210,7 +225,7 @@ void WorldWriter::WriteBodyParams(const char* kind, const ElementIndex& element,
   Attributes reference{{"index", std::to_string(element.index)}};
   if (!body.empty()) reference.emplace_back("body", body);
   Element(kind, reference, false);
-  Element("geometry", RowAttributes(BodyGeometryRows(), element));
+  Element("geometry", RowAttributes(BodyRows(BodyGeometryRows(), element), element));
 }
 
 // `<joint>` with the bodies it holds as references by index, as the reader reads them back

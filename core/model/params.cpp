@@ -373,6 +373,18 @@ const ParamSpec kParams[] = {
     {"kFriction", "friction", "", kBodies, T::kReal, 0, kNoMax, false, true, false, A::kLive, true,
      "Coulomb friction coefficient (pairs take the harmonic mean; inf: no sliding)", kNoChoices,
      GetSurface<&SurfaceDesc::friction>, SetSurface<&SurfaceDesc::friction>},
+    {"kRollingFriction", "rolling friction", "m", kBodies, T::kReal, 0, kNoMax, false, false,
+     false, A::kLive, false,
+     "rolling resistance: torque about the contact plane's axes up to this times the normal force "
+     "(pairs take the harmonic mean; 0: off, a ball rolls forever)",
+     kNoChoices, GetSurface<&SurfaceDesc::rolling_friction>,
+     SetSurface<&SurfaceDesc::rolling_friction>},
+    {"kSpinningFriction", "spinning friction", "m", kBodies, T::kReal, 0, kNoMax, false, false,
+     false, A::kLive, false,
+     "spinning resistance: torque about the contact normal up to this times the normal force "
+     "(pairs take the harmonic mean; 0: off)",
+     kNoChoices, GetSurface<&SurfaceDesc::spinning_friction>,
+     SetSurface<&SurfaceDesc::spinning_friction>},
     {"kStiffness", "stiffness", "N/m", kBodies, T::kReal, 0, kNoMax, true, true, true, A::kLive,
      true, "boundary-layer spring (pairs in series; inf: hard contact)", kNoChoices,
      GetSurface<&SurfaceDesc::stiffness>, SetSurface<&SurfaceDesc::stiffness>},
@@ -724,9 +736,12 @@ SurfaceRow SurfaceRowOf() {
 }  // namespace
 
 std::span<const SurfaceRow> SurfaceMembers() {
-  static const SurfaceRow kRows[] = {
-      SurfaceRowOf<&SurfaceDesc::restitution>(), SurfaceRowOf<&SurfaceDesc::friction>(),
-      SurfaceRowOf<&SurfaceDesc::stiffness>(), SurfaceRowOf<&SurfaceDesc::damping>()};
+  static const SurfaceRow kRows[] = {SurfaceRowOf<&SurfaceDesc::restitution>(),
+                                     SurfaceRowOf<&SurfaceDesc::friction>(),
+                                     SurfaceRowOf<&SurfaceDesc::rolling_friction>(),
+                                     SurfaceRowOf<&SurfaceDesc::spinning_friction>(),
+                                     SurfaceRowOf<&SurfaceDesc::stiffness>(),
+                                     SurfaceRowOf<&SurfaceDesc::damping>()};
   return kRows;
 }
 

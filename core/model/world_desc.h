@@ -17,11 +17,22 @@
 namespace lamina::core {
 
 /// Contact surface of one body; two bodies' surfaces are blended per contact pair.
+///
+/// Rolling and spinning friction are Lamina's (Klamp't has no such setting; ODE's
+/// dContactRolling implements them) and off by default, which adds no solver rows, so a world
+/// without them simulates exactly as before. Both are lengths (m): the lever arm of the contact
+/// patch. Each contact resists the relative rotation of the two bodies about the two axes in its
+/// contact plane with a torque of at most rolling_friction · N, and about its normal with at most
+/// spinning_friction · N (N its normal force, N); the torque always opposes the relative angular
+/// velocity, like Coulomb friction opposes sliding. A sphere of radius r rolling on a plane then
+/// decelerates at ρ g / (1.4 r) (docs/contact-model.md, "Rolling and spinning friction").
 struct SurfaceDesc {
-  double restitution = 0.5;  ///< kRestitution, coefficient of restitution in [0, 1]
-  double friction = 0.5;     ///< kFriction, Coulomb coefficient >= 0
-  double stiffness = kInf;   ///< kStiffness, N/m; inf = rigid contact
-  double damping = kInf;     ///< kDamping, N·s/m; inf = rigid contact
+  double restitution = 0.5;        ///< kRestitution, coefficient of restitution in [0, 1]
+  double friction = 0.5;           ///< kFriction, Coulomb coefficient >= 0
+  double stiffness = kInf;         ///< kStiffness, N/m; inf = rigid contact
+  double damping = kInf;           ///< kDamping, N·s/m; inf = rigid contact
+  double rolling_friction = 0.0;   ///< kRollingFriction, m, finite >= 0; 0 = off
+  double spinning_friction = 0.0;  ///< kSpinningFriction, m, finite >= 0; 0 = off
 
   bool operator==(const SurfaceDesc&) const = default;
 };

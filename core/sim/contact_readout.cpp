@@ -79,6 +79,11 @@ void ReadSurface(const Simulator& sim, int body_id, int partner, PairReadout* ou
                          DescribeLayer("k", own.stiffness, other.stiffness, me, them));
   out->damping = Blend(blend.damping, own.damping, other.damping,
                        DescribeLayer("c", own.damping, other.damping, me, them));
+  out->rolling = Blend(blend.rolling, own.rolling_friction, other.rolling_friction,
+                       DescribeResistance(own.rolling_friction, other.rolling_friction, me, them));
+  out->spinning =
+      Blend(blend.spinning, own.spinning_friction, other.spinning_friction,
+            DescribeResistance(own.spinning_friction, other.spinning_friction, me, them));
 }
 
 PairReadout ReadPair(const Simulator& sim, const ContactPair& pair, int body_id, int partner) {
@@ -121,6 +126,15 @@ std::string DescribeFriction(double own, double partner, const std::string& own_
   }
   if (own == 0.0 || partner == 0.0) {
     return "one side frictionless (" + (own == 0.0 ? own_name : partner_name) + "): 0";
+  }
+  return "harmonic mean of " + Named(own, own_name) + " and " + Named(partner, partner_name);
+}
+
+std::string DescribeResistance(double own, double partner, const std::string& own_name,
+                               const std::string& partner_name) {
+  if (own == 0.0 && partner == 0.0) return "off on both sides: 0";
+  if (own == 0.0 || partner == 0.0) {
+    return "off on one side (" + (own == 0.0 ? own_name : partner_name) + "): 0";
   }
   return "harmonic mean of " + Named(own, own_name) + " and " + Named(partner, partner_name);
 }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // "Its contacts now": what an inspector shows of one body's contacts at the current state, one
 // entry per partner body it touches: the blended surface of the pair exactly as the contact rows
-// use it, the rule that produced each of the four values (naming the inputs and whose they are),
+// use it, the rule that produced each value (naming the inputs and whose they are),
 // the contact count, overlap and padding sum, the normal force of the last sub-step and the
 // pair's soft-contact ERP/CFM.
 //
@@ -10,7 +10,8 @@
 // cannot drift from what ODE is given. The rule texts come from the pure Describe* functions
 // below, which follow BlendSurfaces' branches (surface_blend.h) one for one.
 //
-// Units: friction and restitution are dimensionless, stiffness N/m, damping N·s/m, lengths m,
+// Units: friction and restitution are dimensionless, rolling and spinning friction m, stiffness
+// N/m, damping N·s/m, lengths m,
 // forces N, ERP dimensionless, CFM m/(N·s) (ODE's units for a contact row).
 // Sign convention: the normal force is on `body_id` from the partner, measured along the contact
 // normals pointing into `body_id` (contact_feedback.h), so a partner that pushes gives > 0.
@@ -42,6 +43,8 @@ struct PairReadout {
   BlendReadout restitution;  ///< coefficient of restitution (hard contacts only bounce)
   BlendReadout stiffness;    ///< N/m; inf = rigid
   BlendReadout damping;      ///< N·s/m; inf = rigid
+  BlendReadout rolling;      ///< rolling friction, m (0: off)
+  BlendReadout spinning;     ///< spinning friction, m (0: off)
   int contact_count = 0;     ///< after merging and clustering
   double max_depth = 0.0;    ///< deepest boundary-layer overlap (m)
   double padding_sum = 0.0;  ///< the pair's padding sum (m); the layers overlap by max_depth of it
@@ -68,6 +71,9 @@ std::string DescribeRestitution(double own, double partner, const std::string& o
                                 const std::string& partner_name);
 std::string DescribeFriction(double own, double partner, const std::string& own_name,
                              const std::string& partner_name);
+/// Rolling or spinning friction (finite): the harmonic mean, off when either side is 0.
+std::string DescribeResistance(double own, double partner, const std::string& own_name,
+                               const std::string& partner_name);
 /// Stiffness (symbol "k") or damping ("c"): layers in series.
 std::string DescribeLayer(const char* symbol, double own, double partner,
                           const std::string& own_name, const std::string& partner_name);

@@ -32,13 +32,34 @@ void SetNormalRow(const Contact& contact, const PairLaw& law, double normal_spee
   row->cfm = std::min(settings.cfm, kHardContactCfm);
 }
 
+// The first friction direction t1 whose second axis n × t1 is the rolling axis: ODE bounds the
+// rolling torque about each friction axis separately, so only when one axis carries the rolling
+// is the resistance ρ N in every direction (at 45° to the axes both would: √2 ρ N). Zero when
+// rolling friction is off.
+Vec3 RollingDirection(const Vec3& relative_angular, const Vec3& normal, double rolling) {
+  if (!(rolling > 0.0)) return Vec3::Zero();
+  const Vec3 axis = relative_angular - relative_angular.dot(normal) * normal;
+  return axis.cross(normal);  // |axis × n| = |axis|, the rolling rate
+}
+
+// Whether the rolling takes the friction axes: it rolls, and it does not slide or its rolling
+// friction dissipates more than its Coulomb friction (ρ |ω_t| > μ |v_t|). A ball rolling without
+// slipping rolls; one that skids along its rolling direction has the same axes either way.
+bool RollingTakesTheAxes(const Vec3& rolling, const Vec3& sliding, const ContactRow& row) {
+  if (!(rolling.norm() > kRollingRateThreshold)) return false;
+  const double slide = sliding.norm();
+  return !(slide > kSlidingSpeedThreshold) || row.rolling * rolling.norm() > row.mu * slide;
+}
+
 // the friction directions and the anchor's correction along them
 void SetFrictionRows(const Contact& contact, const Vec3& relative, double normal_speed,
-                     const Vec3& anchor_velocity, ContactRow* row) {
+                     const Vec3& anchor_velocity, const Vec3& relative_angular, ContactRow* row) {
   const Vec3 sliding = relative - normal_speed * contact.normal - anchor_velocity;
+  const Vec3 rolling = RollingDirection(relative_angular, contact.normal, row->rolling);
   Vec3 t1 = Vec3::Zero(), t2 = Vec3::Zero();
-  if (sliding.norm() > kSlidingSpeedThreshold) {
-    t1 = sliding.normalized();
+  const bool rolls = RollingTakesTheAxes(rolling, sliding, *row);
+  if (rolls || sliding.norm() > kSlidingSpeedThreshold) {
+    t1 = rolls ? rolling.normalized() : sliding.normalized();
     t2 = contact.normal.cross(t1);  // as ODE makes it
     row->has_direction = true;
     row->fdir1 = t1;
@@ -53,6 +74,18 @@ void SetFrictionRows(const Contact& contact, const Vec3& relative, double normal
   row->has_motion = true;
   row->motion1 = anchor_velocity.dot(t1);
   row->motion2 = anchor_velocity.dot(t2);
+}
+
+// ODE's rolling rows: about t1 and t2 bounded by rolling · N, about the normal by spinning · N
+// (dContactApprox1 includes dContactApprox1_N, which makes the bounds proportional to N); an
+// axis that is off is -1, which ODE clamps to 0 and gives no row
+void SetRollingRows(const ContactRow& row, dSurfaceParameters* surface) {
+  if (!(row.rolling > 0.0) && !(row.spinning > 0.0)) return;
+  surface->mode |= dContactRolling | dContactAxisDep;
+  surface->mu2 = surface->mu;
+  surface->rho = row.rolling > 0.0 ? row.rolling : -1.0;
+  surface->rho2 = surface->rho;
+  surface->rhoN = row.spinning > 0.0 ? row.spinning : -1.0;
 }
 
 }  // namespace
@@ -81,12 +114,16 @@ PairLaw MakePairLaw(const ContactPair& pair, const BlendedSurface& surface, doub
 }
 
 ContactRow MakeContactRow(const Contact& contact, const PairLaw& law, const Vec3& relative_velocity,
-                          const Vec3& anchor_velocity, double step, const RowSettings& settings) {
+                          const Vec3& anchor_velocity, double step, const RowSettings& settings,
+                          const Vec3& relative_angular_velocity) {
   ContactRow row;
   row.mu = law.surface.friction;
+  row.rolling = law.surface.rolling;
+  row.spinning = law.surface.spinning;
   const double normal_speed = relative_velocity.dot(contact.normal);
   SetNormalRow(contact, law, normal_speed, step, settings, &row);
-  SetFrictionRows(contact, relative_velocity, normal_speed, anchor_velocity, &row);
+  SetFrictionRows(contact, relative_velocity, normal_speed, anchor_velocity,
+                  relative_angular_velocity, &row);
   if (row.core) {
     row.core_depth = contact.depth - law.tolerance;
     row.core_erp = HardContactErp(row.core_depth, step, settings);
@@ -117,6 +154,7 @@ dContact ToOdeContact(const ContactRow& row, const Contact& contact, bool core) 
     joint.surface.motion1 = row.motion1;
     joint.surface.motion2 = row.motion2;
   }
+  SetRollingRows(row, &joint.surface);
   const Vec3& p = contact.position;
   joint.geom.pos[0] = p.x();
   joint.geom.pos[1] = p.y();

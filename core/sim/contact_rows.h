@@ -18,6 +18,16 @@
 //   anchor's correction is asked on ODE's own axes through motion1/motion2.
 // - A soft layer pressed through rests on the rigid geometry under it: a hard "core" row at the
 //   core's own depth (depth minus the padding sum) keeps the cores from passing through.
+// - Rolling and spinning friction (Lamina's, off by default; Klamp't has none): when the pair's
+//   blend is > 0, ODE's dContactRolling rows, angular rows about the two friction axes (bound
+//   rolling · N) and the normal (bound spinning · N), N the row's own normal force
+//   (dContactApprox1_N). dContactAxisDep keeps the two values apart (with mu2 = mu); an axis
+//   that is off gets -1, which ODE 0.16's getInfo1 clamps to 0 without counting a row (0 itself
+//   would count a row that getInfo2 never fills). ODE bounds each rolling axis separately, so
+//   while the contact rolls rather than slides the friction axes follow the rolling (n × t1 the
+//   rolling axis), as they follow the sliding otherwise: the resistance is then ρ N in every
+//   direction. Without rolling and spinning the joint is exactly what it was before they
+//   existed.
 // Units: m, m/s, N/m, N·s/m; normals point from body b into body a; velocities are a minus b.
 #pragma once
 
@@ -33,6 +43,8 @@ namespace lamina::core {
 inline constexpr double kHardContactCfm = 1e-9;
 /// Sliding slower than this keeps ODE's default friction directions (m/s).
 inline constexpr double kSlidingSpeedThreshold = 1e-6;
+/// Rolling slower than this does not choose the friction directions (rad/s).
+inline constexpr double kRollingRateThreshold = 1e-6;
 
 /// The settings the rows read (SimSettings fields).
 struct RowSettings {
@@ -67,6 +79,8 @@ struct ContactRow {
   double motion1 = 0.0, motion2 = 0.0;
   bool core = false;  ///< a hard core row at core_depth under this soft contact
   double core_depth = 0.0, core_erp = 0.0, core_cfm = 0.0;
+  double rolling = 0.0;   ///< rolling friction, m (0: no rolling rows)
+  double spinning = 0.0;  ///< spinning friction, m (0: no spinning row)
 };
 
 /// The depth that weighs a contact's share: never quite zero, so every contact keeps a finite law.
@@ -76,9 +90,12 @@ double ContactWeightDepth(double depth, double tolerance);
 double HardContactErp(double depth, double step, const RowSettings& settings);
 PairLaw MakePairLaw(const ContactPair& pair, const BlendedSurface& surface, double step);
 /// The row of `contact` of a pair with law `law`; `relative_velocity` is a's velocity less b's at
-/// the contact point, `anchor_velocity` the friction anchor's correction (friction_anchors.h).
+/// the contact point, `anchor_velocity` the friction anchor's correction (friction_anchors.h),
+/// `relative_angular_velocity` a's angular velocity less b's (rad/s; read only with rolling
+/// friction).
 ContactRow MakeContactRow(const Contact& contact, const PairLaw& law, const Vec3& relative_velocity,
-                          const Vec3& anchor_velocity, double step, const RowSettings& settings);
+                          const Vec3& anchor_velocity, double step, const RowSettings& settings,
+                          const Vec3& relative_angular_velocity = Vec3::Zero());
 /// The ODE contact joint of a row (and, with `core`, of its core row).
 dContact ToOdeContact(const ContactRow& row, const Contact& contact, bool core = false);
 

@@ -72,8 +72,9 @@ class SimBody {
   void SetVelocity(const Twist& velocity);
 
   SurfaceDesc GetSurface() const;
-  /// All four rows (kRestitution in [0, 1], kFriction >= 0, kStiffness > 0, kDamping >= 0; inf
-  /// allowed but for restitution) are checked before any is written.
+  /// Every surface row (kRestitution in [0, 1], kFriction >= 0, kRollingFriction and
+  /// kSpinningFriction finite >= 0, kStiffness > 0, kDamping >= 0; inf allowed for friction,
+  /// stiffness and damping) is checked before any is written.
   void SetSurface(const SurfaceDesc& surface);
   double GetPadding() const;
   /// Boundary-layer thickness (m, >= 0); a preshrunk geometry is shrunk again to match.

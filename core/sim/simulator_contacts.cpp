@@ -22,6 +22,14 @@ Vec3 RelativeVelocity(dBodyID a, dBodyID b, const Vec3& p) {
   return ToVec3(velocity_a) - ToVec3(velocity_b);
 }
 
+// a's angular velocity less b's (rad/s)
+Vec3 RelativeAngularVelocity(dBodyID a, dBodyID b) {
+  Vec3 relative = Vec3::Zero();
+  if (a) relative += ToVec3(dBodyGetAngularVel(a));
+  if (b) relative -= ToVec3(dBodyGetAngularVel(b));
+  return relative;
+}
+
 RowSettings ContactRowSettings(const SimSettings& s) {
   return {s.erp, s.cfm, s.max_correction_speed, s.bounce_velocity_threshold};
 }
@@ -48,11 +56,14 @@ void Simulator::AddContactJoints(const ContactPair& pair, const Vec3* anchor_vel
   const ContactFeedbackRecord* record =
       feedback_.empty() ? nullptr : feedback_.Find(pair.a, pair.b);
   const RowSettings settings = ContactRowSettings(world_.settings);
+  // the same for every contact of the pair; read only with rolling friction
+  const Vec3 angular =
+      law.surface.rolling > 0.0 ? RelativeAngularVelocity(body_a, body_b) : Vec3::Zero();
   for (const Contact& contact : pair.contacts) {
     const Vec3& anchor_velocity = *anchor_velocities++;
     const ContactRow row =
         MakeContactRow(contact, law, RelativeVelocity(body_a, body_b, contact.position),
-                       anchor_velocity, step, settings);
+                       anchor_velocity, step, settings, angular);
     const dContact joint = ToOdeContact(row, contact);
     dJointID id = dJointCreateContact(ode_world_.get(), contact_group_.get(), &joint);
     dJointAttach(id, body_a, body_b);

@@ -6,6 +6,7 @@
 
 #include <ode/ode.h>
 
+#include "core/model/surface_rows.h"
 #include "core/sim/body_change.h"
 #include "core/sim/ode_robot.h"
 #include "core/sim/simulator.h"
@@ -149,17 +150,15 @@ void Simulator::SetBodyPadding(int id, double padding) {
 void Simulator::SetBodySurface(int id, const SurfaceDesc& surface) {
   RequireBody(id);
   const std::optional<ElementIndex> element = ElementOfWorldId(world_, id);
-  const std::pair<std::string_view, double> rows[] = {{"kRestitution", surface.restitution},
-                                                      {"kFriction", surface.friction},
-                                                      {"kStiffness", surface.stiffness},
-                                                      {"kDamping", surface.damping}};
-  // all four checked before any is written
-  for (const auto& [key, value] : rows) {
-    if (auto error = CheckParam(*FindParam(key, element->kind), {value}, 1)) {
+  // every surface row checked before any is written
+  for (const SurfaceRow& row : SurfaceMembers()) {
+    if (auto error = CheckParam(*row.spec, {surface.*row.member}, 1)) {
       throw std::invalid_argument(ElementPath(*element) + "." + *error);
     }
   }
-  for (const auto& [key, value] : rows) SetOrThrow(this, *element, key, {value});
+  for (const SurfaceRow& row : SurfaceMembers()) {
+    SetOrThrow(this, *element, row.spec->key, {surface.*row.member});
+  }
 }
 
 void Simulator::SetJointLimits(int robot, int link, double q_min, double q_max) {

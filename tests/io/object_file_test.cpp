@@ -207,6 +207,27 @@ TEST(RigidObjectFileTest, TwelveAndSixteenNumberTransformsAgree) {
   }
 }
 
+// Lamina's rolling and spinning friction (m) are keys like the other surface rows, checked by the
+// table with the same file:line diagnostics
+TEST(RigidObjectFileTest, RollingAndSpinningFrictionKeys) {
+  const std::string mesh = "mesh \"" + WorldsPath("klampt/objects/cube.off") + "\"\n";
+  const ObjectLoad good(WriteScratchFile(
+      "rolling.obj", mesh + "kFriction 0.6\nkRollingFriction 0.004\nkSpinningFriction 0.001\n"));
+  ASSERT_TRUE(good.ok) << good.diagnostics.FormatAll();
+  EXPECT_EQ(good.diagnostics.entries().size(), 0u) << good.diagnostics.FormatAll();
+  EXPECT_EQ(good.object.sim.surface.friction, 0.6);
+  EXPECT_EQ(good.object.sim.surface.rolling_friction, 0.004);
+  EXPECT_EQ(good.object.sim.surface.spinning_friction, 0.001);
+  const std::string bad_path =
+      WriteScratchFile("bad_rolling.obj", mesh + "kRollingFriction -0.5\nkSpinningFriction inf\n");
+  const ObjectLoad bad(bad_path);
+  EXPECT_FALSE(bad.ok);
+  EXPECT_THAT(bad.Errors(),
+              ElementsAre(bad_path + ":2: error: 'kRollingFriction' must be >= 0, got '-0.5'",
+                          bad_path + ":3: error: 'kSpinningFriction' must be >= 0, got 'inf'"));
+  EXPECT_EQ(bad.object.sim.surface, DefaultObjectSimParams().surface);
+}
+
 TEST(RigidObjectFileTest, DefaultsAreKlamptsWithIdentityInertia) {
   const ObjectLoad load(DataPath("objects/no_automass.obj"));
   ASSERT_TRUE(load.ok) << load.diagnostics.FormatAll();

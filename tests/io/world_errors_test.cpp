@@ -91,6 +91,23 @@ INSTANTIATE_TEST_SUITE_P(
             "negative_friction",
             ObjectWith("", "<physics kFriction=\"-0.1\"/>"),
             {"4: error: <physics>: attribute 'kFriction' must be >= 0 (inf allowed), got '-0.1'"}},
+        // Lamina's rolling and spinning friction: finite, >= 0, wherever kFriction is read
+        BadWorld{"negative_rolling_friction",
+                 ObjectWith("", "<physics kRollingFriction=\"-0.01\"/>"),
+                 {"4: error: <physics>: attribute 'kRollingFriction' must be >= 0, got '-0.01'"}},
+        BadWorld{"infinite_spinning_friction",
+                 ObjectWith("", "<physics kSpinningFriction=\"inf\"/>"),
+                 {"4: error: <physics>: attribute 'kSpinningFriction' must be >= 0, got 'inf'"}},
+        BadWorld{"terrain_rolling_friction",
+                 "<world>\n  <terrain file=\"" + WorldsPath("klampt/terrains/cube.off") +
+                     "\"\n           kRollingFriction=\"abc\"/>\n</world>\n",
+                 {"2: error: <terrain>: attribute 'kRollingFriction' has 'abc', which is not a "
+                  "number"}},
+        BadWorld{"sim_spinning_friction",
+                 "<world>\n  <terrain file=\"" + WorldsPath("klampt/terrains/cube.off") +
+                     "\"/>\n  <simulation>\n    <terrain index=\"0\">\n      <geometry "
+                     "kSpinningFriction=\"-1\"/>\n    </terrain>\n  </simulation>\n</world>\n",
+                 {"5: error: <geometry>: attribute 'kSpinningFriction' must be >= 0, got '-1'"}},
         BadWorld{"zero_scale",
                  "<world>\n  <terrain file=\"" + WorldsPath("klampt/terrains/cube.off") +
                      "\" scale=\"0\"/>\n</world>\n",

@@ -59,7 +59,60 @@ INSTANTIATE_TEST_SUITE_P(AllExamples, RoundTripTest,
                                            "klampt/simulation_test_worlds/slideblock.xml",
                                            "klampt/simulation_test_worlds/stacktest.xml",
                                            "klampt/simulation_test_worlds/stiffness_test.xml",
-                                           "examples/point_clouds.xml"));
+                                           "examples/point_clouds.xml",
+                                           "examples/rolling_friction.xml"));
+
+// Lamina's kRollingFriction and kSpinningFriction are written where the body's other surface
+// rows are (an object's <physics> and every body's <simulation> <geometry>) only while they are
+// on, so a world without them is written as before and stays a Klamp't world
+TEST(WorldSaveTest, RollingAndSpinningFrictionAreWrittenOnlyWhenOn) {
+  LoadedWorld original;
+  test::LoadWorld(test::WorldsPath("klampt/block.xml"), &original);
+  ASSERT_TRUE(original.ok) << original.diagnostics.FormatAll();
+  const std::string path = test::ScratchDir() + "/rolling.xml";
+  const std::string plain = core::WriteWorld(original.world, path).world_xml;
+  EXPECT_THAT(plain, ::testing::Not(::testing::HasSubstr("Rolling")));
+  EXPECT_THAT(plain, ::testing::Not(::testing::HasSubstr("Spinning")));
+
+  core::WorldDesc edited = original.world;
+  edited.objects[0].sim.surface.rolling_friction = 0.004;
+  edited.terrains[0].sim.surface.spinning_friction = 0.0015;
+  edited.robots[0].links[1].sim.surface.rolling_friction = 0.25;
+  const std::string xml = core::WriteWorld(edited, path).world_xml;
+  EXPECT_THAT(xml, ::testing::HasSubstr("kFriction=\"0.5\" kRollingFriction=\"0.004\" "
+                                        "kStiffness=\"10000\""));
+  EXPECT_THAT(xml, ::testing::HasSubstr("kSpinningFriction=\"0.0015\""));
+  EXPECT_THAT(xml, ::testing::HasSubstr("kRollingFriction=\"0.25\""));
+  LoadedWorld reloaded;
+  SaveAndReload(edited, path, &reloaded);
+  EXPECT_THAT(core::CompareWorlds(edited, reloaded.world, kRoundTripTolerance), IsEmpty());
+  EXPECT_EQ(reloaded.world.objects[0].sim.surface.rolling_friction, 0.004);
+  EXPECT_EQ(reloaded.world.terrains[0].sim.surface.spinning_friction, 0.0015);
+  EXPECT_EQ(reloaded.world.robots[0].links[1].sim.surface.rolling_friction, 0.25);
+  EXPECT_EQ(reloaded.world.robots[0].links[0].sim.surface.rolling_friction, 0.0);
+  // switched off again, the text is the plain world's, byte for byte
+  edited.objects[0].sim.surface.rolling_friction = 0.0;
+  edited.terrains[0].sim.surface.spinning_friction = 0.0;
+  edited.robots[0].links[1].sim.surface.rolling_friction = 0.0;
+  EXPECT_EQ(core::WriteWorld(edited, path).world_xml, plain);
+}
+
+// a <terrain> element takes them beside kFriction, as a .obj object file takes them as keys
+TEST(WorldSaveTest, RollingAndSpinningFrictionAreReadOnTerrainElements) {
+  const std::string path = test::WriteScratchFile(
+      "terrain_rolling.xml", "<world>\n  <terrain file=\"" +
+                                 test::WorldsPath("klampt/terrains/plane.off") +
+                                 "\" kFriction=\"0.7\" kRollingFriction=\"0.002\" "
+                                 "kSpinningFriction=\"0.001\"/>\n</world>\n");
+  LoadedWorld loaded;
+  test::LoadWorld(path, &loaded);
+  ASSERT_TRUE(loaded.ok) << loaded.diagnostics.FormatAll();
+  EXPECT_EQ(loaded.diagnostics.warning_count(), 0) << loaded.diagnostics.FormatAll();
+  const core::SurfaceDesc& surface = loaded.world.terrains[0].sim.surface;
+  EXPECT_EQ(surface.friction, 0.7);
+  EXPECT_EQ(surface.rolling_friction, 0.002);
+  EXPECT_EQ(surface.spinning_friction, 0.001);
+}
 
 TEST(WorldSaveTest, EditsSurviveSaving) {
   LoadedWorld original;

@@ -102,6 +102,22 @@ def test_surface_parameters_are_the_tables_rows():
     assert surface.kStiffness == float("inf")
 
 
+def test_rolling_and_spinning_friction_are_surface_parameters(resting_block):
+    surface = lamina.SurfaceParameters()
+    assert (surface.kRollingFriction, surface.kSpinningFriction) == (0.0, 0.0)  # off by default
+    surface.kRollingFriction = 0.005  # m
+    surface.kSpinningFriction = 0.002
+    with pytest.raises(ValueError, match="kRollingFriction: "):
+        surface.kRollingFriction = float("inf")  # finite only
+    with pytest.raises(ValueError, match="kSpinningFriction: "):
+        surface.kSpinningFriction = -0.001
+    sim = lamina.Simulator(resting_block)
+    body = sim.body(resting_block.rigidObject(0))
+    body.setSurface(surface)
+    assert body.getSurface().kRollingFriction == 0.005
+    assert body.getSurface().kSpinningFriction == 0.002
+
+
 def test_kinematic_body_moves_at_its_velocity_and_pushes(tmp_path):
     world = lamina.WorldModel(
         blocks_world(tmp_path / "two.xml", [(0, 0, 0.0525), (0.3, 0, 0.0525)]))

@@ -165,6 +165,27 @@ TEST(ContactReadoutTest, AFrictionEditReachesTheReadoutAndTheJointsAtTheNextStep
   EXPECT_EQ(joint_friction(), ReadContacts(sim, kBox)[0].friction.value);
 }
 
+// rolling and spinning friction read as the contact rows use them: off while either side is 0
+TEST(ContactReadoutTest, RollingAndSpinningFrictionReadTheirBlendAndRule) {
+  WorldDesc world = SoftBoxOnGround();
+  world.objects[0].sim.surface.rolling_friction = 0.002;
+  world.terrains[0].sim.surface.rolling_friction = 0.006;
+  world.terrains[0].sim.surface.spinning_friction = 0.001;
+  Simulator sim(world);
+  sim.Simulate(0.1);
+  const std::vector<PairReadout> readouts = ReadContacts(sim, kBox);
+  ASSERT_EQ(readouts.size(), 1u);
+  EXPECT_DOUBLE_EQ(readouts[0].rolling.value, Harmonic(0.002, 0.006));  // 0.003
+  EXPECT_EQ(readouts[0].rolling.own, 0.002);
+  EXPECT_EQ(readouts[0].rolling.partner, 0.006);
+  EXPECT_EQ(readouts[0].rolling.rule, "harmonic mean of 0.002 (box) and 0.006 (ground)");
+  EXPECT_EQ(readouts[0].spinning.value, 0.0);
+  EXPECT_EQ(readouts[0].spinning.rule, "off on one side (box): 0");
+  EXPECT_EQ(readouts[0].rolling.value, sim.PairSurface(kBox, kGround).rolling);
+  EXPECT_EQ(DescribeResistance(0.0, 0.0, "box", "ground"), "off on both sides: 0");
+  EXPECT_EQ(DescribeResistance(0.01, 0.0, "box", "ground"), "off on one side (ground): 0");
+}
+
 TEST(BlendRuleTextTest, EachBranchOfTheBlendIsNamed) {
   EXPECT_EQ(DescribeFriction(kInf, 0.5, "box", "floor"),
             "one side infinite (box): twice 0.5 (floor)");

@@ -112,5 +112,73 @@ TEST(ContactRowsTest, APressedThroughSoftLayerGetsAHardCoreRowAtTheCoresDepth) {
   EXPECT_EQ(soft.surface.soft_erp, row.erp);
 }
 
+// Rolling and spinning friction become ODE's rolling rows: dContactRolling with dContactAxisDep
+// (mu2 = mu, so the sliding friction is unchanged), rho = rho2 = rolling, rhoN = spinning, and -1
+// for an axis that is off (ODE clamps it to 0 and counts no row for it). Off, the joint is
+// exactly the joint without them.
+TEST(ContactRowsTest, RollingAndSpinningFrictionBecomeOdesRollingRows) {
+  const ContactPair pair = PairOf({At(Vec3::Zero(), 0.001)}, 0.01);
+  auto joint = [&](double rolling, double spinning) {
+    BlendedSurface surface{0.0, 0.5, kInf, kInf, rolling, spinning};
+    const PairLaw law = MakePairLaw(pair, surface, kStep);
+    const ContactRow row =
+        MakeContactRow(pair.contacts[0], law, Vec3(0.3, 0, 0), Vec3::Zero(), kStep, {});
+    EXPECT_EQ(row.rolling, rolling);
+    EXPECT_EQ(row.spinning, spinning);
+    return ToOdeContact(row, pair.contacts[0]);
+  };
+  const dContact off = joint(0.0, 0.0);
+  EXPECT_EQ(off.surface.mode, dContactApprox1 | dContactSoftERP | dContactSoftCFM | dContactFDir1);
+  EXPECT_EQ(off.surface.rho, 0.0);
+  EXPECT_EQ(off.surface.rhoN, 0.0);
+
+  const dContact both = joint(0.004, 0.002);
+  EXPECT_EQ(both.surface.mode, off.surface.mode | dContactRolling | dContactAxisDep);
+  EXPECT_EQ(both.surface.mu, 0.5);
+  EXPECT_EQ(both.surface.mu2, 0.5);
+  EXPECT_EQ(both.surface.rho, 0.004);
+  EXPECT_EQ(both.surface.rho2, 0.004);
+  EXPECT_EQ(both.surface.rhoN, 0.002);
+  // the bounds are proportional to the normal force on all three axes
+  EXPECT_EQ(both.surface.mode & dContactApprox1_N, dContactApprox1_N);
+
+  const dContact rolling_only = joint(0.004, 0.0);
+  EXPECT_EQ(rolling_only.surface.rho, 0.004);
+  EXPECT_EQ(rolling_only.surface.rhoN, -1.0);
+  const dContact spinning_only = joint(0.0, 0.002);
+  EXPECT_EQ(spinning_only.surface.rho, -1.0);
+  EXPECT_EQ(spinning_only.surface.rho2, -1.0);
+  EXPECT_EQ(spinning_only.surface.rhoN, 0.002);
+  // the hard core row under a pressed-through soft layer resists rolling too (its own N)
+  const ContactPair pressed = PairOf({At(Vec3::Zero(), 0.012)}, 0.01);
+  const PairLaw soft = MakePairLaw(pressed, {0.0, 0.5, 1e3, 10.0, 0.004, 0.0}, kStep);
+  const ContactRow row =
+      MakeContactRow(pressed.contacts[0], soft, Vec3::Zero(), Vec3::Zero(), kStep, {});
+  ASSERT_TRUE(row.core);
+  EXPECT_EQ(ToOdeContact(row, pressed.contacts[0], true).surface.rho, 0.004);
+}
+
+// ODE bounds each rolling axis separately, so the friction axes follow the rolling while the
+// contact rolls rather than slides: n × fdir1 is the rolling axis and only that row resists it
+TEST(ContactRowsTest, TheFrictionAxesFollowTheRollingWhileTheContactRolls) {
+  const ContactPair pair = PairOf({At(Vec3::Zero(), 0.001)}, 0.01);
+  const Vec3 spin(3.0, 4.0, 2.0);  // rad/s; the normal part (2) is spinning, not rolling
+  auto row = [&](double rolling, const Vec3& sliding) {
+    const PairLaw law = MakePairLaw(pair, {0.0, 0.5, kInf, kInf, rolling, 0.0}, kStep);
+    return MakeContactRow(pair.contacts[0], law, sliding, Vec3::Zero(), kStep, {}, spin);
+  };
+  // rolling without slipping: t1 = axis × n, so that n × t1 is the rolling axis (0.6, 0.8, 0)
+  const ContactRow rolls = row(0.005, Vec3::Zero());
+  ASSERT_TRUE(rolls.has_direction);
+  EXPECT_NEAR((rolls.fdir1 - Vec3(0.8, -0.6, 0)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((Vec3::UnitZ().cross(rolls.fdir1) - Vec3(0.6, 0.8, 0)).norm(), 0.0, 1e-15);
+  // a slow slide too: ρ |ω_t| = 0.025 dissipates more than μ |v| = 0.005
+  EXPECT_NEAR((row(0.005, Vec3(0, 0.01, 0)).fdir1 - Vec3(0.8, -0.6, 0)).norm(), 0.0, 1e-15);
+  // a real slide keeps the axes on the sliding (μ |v| = 0.25 > 0.025)
+  EXPECT_NEAR((row(0.005, Vec3(0, 0.5, 0)).fdir1 - Vec3::UnitY()).norm(), 0.0, 1e-15);
+  // without rolling friction the rotation is not read: ODE's own axes, as before
+  EXPECT_FALSE(row(0.0, Vec3::Zero()).has_direction);
+}
+
 }  // namespace
 }  // namespace lamina::core

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "core/model/element.h"
+#include "core/model/surface_rows.h"
 #include "tests/common/test_support.h"
 
 namespace lamina {
@@ -204,6 +205,51 @@ TEST(ParamTableTest, TextNamesBoolsChoicesAndInfinities) {
             (ParamValue{1, 0, 0, 0, 2, 0, 0, 0, 3}));
   EXPECT_FALSE(core::ParseParamValue(Row("kFriction", ElementKind::kObject), "0.5x", &error));
   EXPECT_EQ(error, "'0.5x' is not a value of kFriction, which must be >= 0 (inf allowed)");
+}
+
+// Lamina's rolling and spinning friction: one row each for every body, next to kFriction, in m,
+// finite and >= 0, live, and left out of saved files while off (not Klamp't's)
+TEST(ParamTableTest, RollingAndSpinningFrictionAreBodySurfaceRows) {
+  for (std::string_view key : {"kRollingFriction", "kSpinningFriction"}) {
+    for (ElementKind kind : {ElementKind::kTerrain, ElementKind::kObject, ElementKind::kLink}) {
+      const ParamSpec& spec = Row(key, kind);
+      EXPECT_EQ(spec.unit, "m");
+      EXPECT_EQ(spec.type, ParamType::kReal);
+      EXPECT_EQ(spec.apply, core::ParamApply::kLive);
+      EXPECT_FALSE(spec.klampt);
+      EXPECT_TRUE(core::IsBodyParam(spec));
+      EXPECT_EQ(core::ParamRule(spec), "must be >= 0");
+      EXPECT_TRUE(Accepts(key, kind, {0.0}));
+      EXPECT_TRUE(Accepts(key, kind, {0.005}));
+      EXPECT_FALSE(Accepts(key, kind, {std::nextafter(0.0, -1.0)}));
+      EXPECT_FALSE(Accepts(key, kind, {kInf}));
+    }
+    EXPECT_EQ(core::FindParam(key, ElementKind::kRobot), nullptr);
+    EXPECT_EQ(core::FindParam(key, ElementKind::kSettings), nullptr);
+  }
+  // in table order right after kFriction, and among the surface rows every consumer lists
+  const ParamSpec& friction = Row("kFriction", ElementKind::kObject);
+  EXPECT_EQ(&Row("kRollingFriction", ElementKind::kObject), &friction + 1);
+  EXPECT_EQ(&Row("kSpinningFriction", ElementKind::kObject), &friction + 2);
+  std::vector<std::string_view> surface;
+  for (const core::SurfaceRow& row : core::SurfaceMembers()) surface.push_back(row.spec->key);
+  EXPECT_THAT(surface, ::testing::ElementsAre("kRestitution", "kFriction", "kRollingFriction",
+                                              "kSpinningFriction", "kStiffness", "kDamping"));
+  // get and set reach the SurfaceDesc fields of terrains, objects and links
+  core::WorldDesc world = Fixture();
+  std::string error;
+  ASSERT_TRUE(core::SetParam(&world, ElementIndex::Link(0, 1),
+                             Row("kRollingFriction", ElementKind::kLink), {0.003}, &error));
+  EXPECT_EQ(world.robots[0].links[1].sim.surface.rolling_friction, 0.003);
+  ASSERT_TRUE(core::SetParam(&world, ElementIndex::Terrain(0),
+                             Row("kSpinningFriction", ElementKind::kTerrain), {0.002}, &error));
+  EXPECT_EQ(world.terrains[0].sim.surface.spinning_friction, 0.002);
+  EXPECT_FALSE(core::SetParam(&world, ElementIndex::Object(1),
+                              Row("kRollingFriction", ElementKind::kObject), {-0.01}, &error));
+  EXPECT_EQ(error, "objects[1].kRollingFriction must be >= 0, got -0.01");
+  EXPECT_EQ(*core::GetParam(world, ElementIndex::Object(1),
+                            Row("kRollingFriction", ElementKind::kObject)),
+            ParamValue{0.0});
 }
 
 // ---- CheckParam at the boundaries --------------------------------------------------------------

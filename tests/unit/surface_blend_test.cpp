@@ -82,6 +82,48 @@ TEST(SurfaceBlendTest, StiffnessAndDampingActInSeries) {
   EXPECT_EQ(zero_on_rigid.damping, 0.0);
 }
 
+// Lamina's rolling and spinning friction (m): off (0) by default, the harmonic mean like kFriction
+TEST(SurfaceBlendTest, RollingAndSpinningFrictionAreHarmonicMeans) {
+  auto resistance = [](double rolling_a, double spinning_a, double rolling_b, double spinning_b) {
+    SurfaceDesc a, b;
+    a.rolling_friction = rolling_a;
+    a.spinning_friction = spinning_a;
+    b.rolling_friction = rolling_b;
+    b.spinning_friction = spinning_b;
+    return BlendSurfaces(a, b);
+  };
+  const SurfaceDesc defaults;
+  EXPECT_EQ(defaults.rolling_friction, 0.0);
+  EXPECT_EQ(defaults.spinning_friction, 0.0);
+  const BlendedSurface off = BlendSurfaces(kRobotLink, kDefaultTerrain);
+  EXPECT_EQ(off.rolling, 0.0);
+  EXPECT_EQ(off.spinning, 0.0);
+  // 2 · 0.01 · 0.03 / 0.04 = 0.015; 2 · 0.002 · 0.006 / 0.008 = 0.003 (two roundings: 1e-15)
+  const BlendedSurface mixed = resistance(0.01, 0.002, 0.03, 0.006);
+  EXPECT_NEAR(mixed.rolling, 0.015, 0.015 * 1e-15);
+  EXPECT_NEAR(mixed.spinning, 0.003, 0.003 * 1e-15);
+  // equal sides keep their value (to the rounding of 1/x)
+  EXPECT_NEAR(resistance(0.005, 0.005, 0.005, 0.005).rolling, 0.005, 0.005 * 1e-15);
+  // one side without it turns it off for the pair, whatever the other side has
+  EXPECT_EQ(resistance(0.0, 0.0, 0.02, 0.02).rolling, 0.0);
+  EXPECT_EQ(resistance(0.02, 0.02, 0.0, 0.0).spinning, 0.0);
+  EXPECT_EQ(resistance(0.02, 0.0, 0.02, 0.01).spinning, 0.0);
+  // the two are blended independently
+  const BlendedSurface rolling_only = resistance(0.004, 0.0, 0.004, 0.003);
+  EXPECT_NEAR(rolling_only.rolling, 0.004, 0.004 * 1e-15);
+  EXPECT_EQ(rolling_only.spinning, 0.0);
+  // symmetric, bitwise
+  for (double x : {0.0, 1e-4, 0.003, 0.01, 1.0 / 3.0}) {
+    for (double y : {0.0, 2e-4, 0.007, 0.05, 2.0 / 3.0}) {
+      const BlendedSurface ab = resistance(x, y, y, x);
+      const BlendedSurface ba = resistance(y, x, x, y);
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(ab.rolling), std::bit_cast<std::uint64_t>(ba.rolling));
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(ab.spinning),
+                std::bit_cast<std::uint64_t>(ba.spinning));
+    }
+  }
+}
+
 std::uint64_t Bits(double value) {
   return std::bit_cast<std::uint64_t>(value);
 }

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The inspector's "contacts now": one entry per partner the selected body touches — the pair's
-// blended friction, restitution, stiffness and damping exactly as the contact rows use them with
-// the rule that produced each (hover a value for it), the contact count, the deepest overlap
-// against the padding sum, the normal force and the soft contact's ERP/CFM (core::ReadContacts).
+// blended friction, restitution, stiffness and damping (and rolling and spinning friction when
+// either body has them) exactly as the contact rows use them with the rule that produced each
+// (hover a value for it), the contact count, the deepest overlap against the padding sum, the
+// normal force and the soft contact's ERP/CFM (core::ReadContacts).
 #include <cstdio>
 
 #include <imgui.h>
@@ -34,6 +35,13 @@ void DrawPair(const core::PairReadout& pair) {
     BlendRow("restitution", pair.restitution, "");
     BlendRow("stiffness", pair.stiffness, " N/m");
     BlendRow("damping", pair.damping, " N·s/m");
+    // Lamina's rolling resistance, shown where either body has it
+    if (pair.rolling.own != 0.0 || pair.rolling.partner != 0.0) {
+      BlendRow("rolling", pair.rolling, " m");
+    }
+    if (pair.spinning.own != 0.0 || pair.spinning.partner != 0.0) {
+      BlendRow("spinning", pair.spinning, " m");
+    }
     ImGui::EndTable();
   }
   ImGui::Text("%d contact%s, overlap %.3g mm of %.3g mm padding", pair.contact_count,
