@@ -17,11 +17,11 @@
 namespace lamina::test {
 
 std::string DataPath(const std::string& relative) {
-  return std::string(LAMINA_TEST_DATA_DIR) + "/" + relative;
+  return LAMINA_TEST_DATA_DIR "/" + relative;
 }
 
 std::string WorldsPath(const std::string& relative) {
-  return std::string(LAMINA_WORLDS_DIR) + "/" + relative;
+  return LAMINA_WORLDS_DIR "/" + relative;
 }
 
 std::string ScratchDir() {
@@ -69,8 +69,7 @@ std::vector<int> Parents(const core::RobotDesc& robot) {
 
 CommandResult RunHeadless(const std::string& arguments) {
   const std::string err_path = ScratchDir() + "/stderr.txt";
-  const std::string command =
-      std::string(LAMINA_BIN_DIR) + "/lamina-headless " + arguments + " 2>" + err_path;
+  const std::string command = LAMINA_BIN_DIR "/lamina-headless " + arguments + " 2>" + err_path;
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;

@@ -154,7 +154,7 @@ bool Viewer::Start() {
   session_.SetPlaying(false);  // --time first, then play as asked
   session_.SetAutoSolver(options_.solver_choice);
   std::vector<std::string> sets = options_.sets;
-  if (options_.sleep) sets.push_back("settings.sleeping=true");
+  if (options_.sleep) sets.emplace_back("settings.sleeping=true");
   OpenWorld(options_.world_path, sets);
   first_world_failed_ = !frame_->loaded;
   if (frame_->loaded && options_.selected_id < frame_->world->IdCount()) {
