@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/worlds_dir.h"
 #include "core/render/view_options.h"
 #include "ui/viewer/viewer_app.h"
 
@@ -23,25 +24,12 @@ bool CheckViewOptions(const std::string& size, const std::string& overlay,
   return true;
 }
 
-// the worlds folder: <prefix>/share/lamina/worlds beside an installed `lamina` (make install),
-// else the source tree's
-std::string WorldsDir() {
-  std::error_code error;
-  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (!error) {
-    const std::filesystem::path installed =
-        exe.parent_path().parent_path() / "share" / "lamina" / "worlds";
-    if (std::filesystem::is_directory(installed, error)) return installed.string();
-  }
-  return LAMINA_WORLDS_DIR;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"lamina: the Lamina world viewer and editor"};
   lamina::ui::ViewerOptions options;
-  options.worlds_dir = WorldsDir();
+  options.worlds_dir = lamina::app::WorldsDir();
   options.world_path = options.worlds_dir + "/" + LAMINA_DEFAULT_WORLD;
   std::string size = "1280x720", overlay;
   bool no_ui = false;

@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/headless_accuracy.h"
 #include "app/headless_batch.h"
 #include "app/headless_render_commands.h"
 #include "app/headless_sensors.h"
@@ -353,11 +354,13 @@ int main(int argc, char** argv) {
   const lamina::app::Subcommand shot = lamina::app::AddShotCommand(app);
   const lamina::app::Subcommand record = lamina::app::AddRecordCommand(app);
   const lamina::app::Subcommand batch = lamina::app::AddBatchCommand(app);
+  const lamina::app::Subcommand accuracy = lamina::app::AddAccuracyCommand(app);
 
   CLI11_PARSE(app, argc, argv);
   if (shot.command->parsed()) return shot.run();
   if (record.command->parsed()) return record.run();
   if (batch.command->parsed()) return batch.run();
+  if (accuracy.command->parsed()) return accuracy.run();
   if (info->parsed()) return RunInfo(info_world, info_json, info_sets);
   if (run->parsed()) return RunSimulation(run_options);
   return 2;

@@ -34,12 +34,13 @@ declare -A allowed=(
   [core/render]="core core/geometry core/model core/contact core/control core/robot core/sensors core/sim"
   [core/edit]="core core/geometry core/model core/io core/contact core/control core/robot core/sensors core/sim"
   [core/batch]="core core/geometry core/model core/io core/contact core/control core/robot core/sensors core/sim"
+  [core/accuracy]="core core/geometry core/model core/io core/contact core/control core/robot core/sensors core/sim"
   [ui/platform]="core"
   [ui/render]="core core/geometry core/model core/render core/sensors ui/platform"
   [ui/widgets]=""
   [ui/panels]="core core/geometry core/model core/io core/contact core/control core/robot core/sensors core/sim core/render core/edit ui/viewer ui/widgets"
   [ui/viewer]="core core/geometry core/model core/io core/contact core/control core/robot core/sensors core/sim core/render core/edit ui/platform ui/render ui/panels ui/widgets"
-  [app]="core core/geometry core/model core/io core/contact core/control core/robot core/sensors core/sim core/render core/edit core/batch ui/platform ui/render ui/viewer ui/widgets"
+  [app]="core core/geometry core/model core/io core/contact core/control core/robot core/sensors core/sim core/render core/edit core/batch core/accuracy ui/platform ui/render ui/viewer ui/widgets"
 )
 
 # the folder of a project path: core/x/y.h -> core/x, core/y.h -> core, app/z.cpp -> app (and

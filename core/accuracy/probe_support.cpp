@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+#include "core/accuracy/probe_support.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/sim/simulator.h"
+
+namespace lamina::core {
+
+Vec3 ObjectCom(const Simulator& simulator, int object) {
+  return simulator.GetObjectPose(object) * simulator.world().objects.at(object).com;
+}
+
+Vec3 ObjectComVelocity(const Simulator& simulator, int object) {
+  const Pose pose = simulator.GetObjectPose(object);
+  const Twist twist = simulator.GetObjectVelocity(object);
+  const Vec3 arm = pose.linear() * simulator.world().objects.at(object).com;
+  return twist.linear + twist.angular.cross(arm);
+}
+
+Vec3 ObjectAngularMomentum(const Simulator& simulator, int object) {
+  const Mat3 rotation = simulator.GetObjectPose(object).linear();
+  const Mat3 inertia = simulator.world().objects.at(object).inertia;
+  return rotation * inertia * rotation.transpose() * simulator.GetObjectVelocity(object).angular;
+}
+
+double RunMetric(const AccuracyRun& run, const std::string& name) {
+  for (const ProbeMetric& metric : run.result.metrics) {
+    if (metric.name == name) return metric.value;
+  }
+  return std::nan("");
+}
+
+double OrderBetween(const AccuracyRun* coarse, const AccuracyRun* fine) {
+  if (coarse == nullptr || fine == nullptr) return std::nan("");
+  const double e1 = coarse->result.error, e0 = fine->result.error;
+  if (!(e1 > 0.0) || !(e0 > 0.0)) return std::nan("");
+  return std::log(e1 / e0) / std::log(coarse->step / fine->step);
+}
+
+std::string Measured(double value, const std::string& unit) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return unit.empty() ? std::string(text) : std::string(text) + " " + unit;
+}
+
+bool RunsUsable(const std::vector<const AccuracyRun*>& runs, BarCheck* check) {
+  for (const AccuracyRun* run : runs) {
+    if (run == nullptr) {
+      *check = {false, "not run"};
+      return false;
+    }
+    if (!run->failure.empty()) {
+      *check = {false, "failed: " + run->failure};
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace lamina::core

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// What the accuracy probes read off a simulation: an object's centre of mass, its velocity and
+// its angular momentum, in world coordinates; and how a bar compares two runs.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/accuracy/accuracy_scene.h"
+#include "core/math_types.h"
+
+namespace lamina::core {
+
+class Simulator;
+
+/// Centre of mass of rigid object `object` (m, world).
+Vec3 ObjectCom(const Simulator& simulator, int object);
+/// Velocity of that centre of mass (m/s, world).
+Vec3 ObjectComVelocity(const Simulator& simulator, int object);
+/// Angular momentum about the centre of mass (kg·m²/s, world): R I Rᵀ ω.
+Vec3 ObjectAngularMomentum(const Simulator& simulator, int object);
+
+/// The value of metric `name` of a run; NaN when the run has none.
+double RunMetric(const AccuracyRun& run, const std::string& name);
+/// The slope of log(error) against log(step) through two runs (NaN when either error is 0 or a
+/// run is missing).
+double OrderBetween(const AccuracyRun* coarse, const AccuracyRun* fine);
+/// "0.0123" style text with 3 significant digits, and the unit.
+std::string Measured(double value, const std::string& unit);
+
+/// The bar verdict for runs that are missing or failed: not passed, saying which.
+bool RunsUsable(const std::vector<const AccuracyRun*>& runs, BarCheck* check);
+
+}  // namespace lamina::core

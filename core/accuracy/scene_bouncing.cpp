@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+// Bouncing ball (numerics §6 scene 6): a 0.1 m, 1 kg sphere dropped from rest onto a rigid floor
+// with restitution 0.5 on both sides (the pair's is their mean, 0.5). Heights count from the
+// contact level, where the padded surfaces touch (floor top z = 0, plus the radius and both
+// paddings): the ball falls H and rises e²·H after the first bounce.
+#include <algorithm>
+#include <cmath>
+
+#include "core/accuracy/probe_support.h"
+#include "core/accuracy/scenes.h"
+#include "core/contact/surface_blend.h"
+#include "core/sim/simulator.h"
+
+namespace lamina::core {
+namespace {
+
+constexpr double kDuration = 0.8;
+
+// The centre height at which the padded ball touches the padded floor (floor top at z = 0).
+double ContactLevel(const WorldDesc& world) {
+  const RigidObjectDesc& ball = world.objects.at(0);
+  const double radius = ball.geometry.primitive.radius * ball.geometry.scale.x();
+  return radius + ball.sim.padding + world.terrains.at(0).sim.padding;
+}
+
+class BouncingProbe : public AccuracyProbe {
+ public:
+  explicit BouncingProbe(const WorldDesc& world)
+      : level_(ContactLevel(world)),
+        restitution_(
+            BlendSurfaces(world.objects.at(0).sim.surface, world.terrains.at(0).sim.surface)
+                .restitution) {}
+  void Begin(const Simulator& simulator) override { drop_ = ObjectCom(simulator, 0).z() - level_; }
+  void Observe(const StepEvent& event) override {
+    const double vz = ObjectComVelocity(event.simulator, 0).z();
+    const double z = ObjectCom(event.simulator, 0).z() - level_;
+    if (phase_ == Phase::kFalling && vz > 0.0) phase_ = Phase::kRising;
+    if (phase_ == Phase::kRising) {
+      apex_ = std::max(apex_, z);
+      if (vz <= 0.0) phase_ = Phase::kDone;
+    }
+  }
+  ProbeResult Finish(const Simulator&) override {
+    const double expected = restitution_ * restitution_ * drop_;
+    ProbeResult result{std::abs(apex_ - expected), {}, ""};
+    result.metrics = {{"rebound m", apex_},
+                      {"expected m", expected},
+                      {"relative", std::abs(apex_ - expected) / expected}};
+    if (phase_ != Phase::kDone) result.note = "no complete first rebound";
+    return result;
+  }
+
+ private:
+  enum class Phase { kFalling, kRising, kDone };
+  double level_, restitution_;
+  double drop_ = 0.0, apex_ = 0.0;
+  Phase phase_ = Phase::kFalling;
+};
+
+BarCheck ReboundWithin(const std::vector<const AccuracyRun*>& runs) {
+  BarCheck check;
+  if (!RunsUsable(runs, &check)) return check;
+  const double relative = RunMetric(*runs[0], "relative");
+  return {relative <= 0.01, Measured(100.0 * relative, "%") + " of e²H"};
+}
+
+}  // namespace
+
+AccuracyScene BouncingBallScene() {
+  AccuracyScene scene;
+  scene.name = "bouncing_ball";
+  scene.world = "bouncing_ball.xml";
+  scene.title = "Bouncing ball, restitution 0.5";
+  scene.setup =
+      "0.1 m, 1 kg sphere dropped 1 m (from the contact level) onto a rigid floor, "
+      "restitution 0.5 on both, 2.5 mm padding on the ball; 0.8 s";
+  scene.metric = "height of the first rebound against e²·H";
+  scene.unit = "m";
+  scene.answer = "e²·H = 0.25 m above the contact level";
+  scene.duration = kDuration;
+  scene.min_step = 1e-5;
+  scene.probe = [](const WorldDesc& world) { return std::make_unique<BouncingProbe>(world); };
+  scene.bars = {{"rebound height within 1 % of e²H at 1 ms", {1e-3}, ReboundWithin}};
+  return scene;
+}
+
+}  // namespace lamina::core

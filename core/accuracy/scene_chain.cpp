@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: MIT
+// Long chain (numerics §6 scene 9, the stretched chain): 40 links of 1 m, 1 kg, joined end to end
+// by world-level hinges and hung from the world by one end (worlds/accuracy/chain.xml), laid out
+// straight and level and released from rest: it swings down and its free end whips (at about
+// 2.8 s, when the end passes the bottom); 3.5 s. A rigid joint keeps its anchor points together, so
+// the answer is a zero gap at every hinge. The probe takes each hinge's anchor on each of its
+// bodies from the world's initial poses (the joint's point) and measures the distance between the
+// two anchors after every step (for the hinge to the world: from the point itself); the error is
+// the largest gap over the run relative to the link length (the distance between the first two
+// hinge points). The energy's largest rise and its drift, relative to the energy the chain releases
+// hanging down (M·g·ℓ_total/2), are reported beside it.
+//
+// Bars (numerics §6 scene 9): "joint gap < 1e-4 of the link length with dWorldStep + ERP", at
+// 1 ms. Measured: 8.2e-4 (0.82 mm on 1 m links, at the whip), so it is kept and marked a known
+// failure. The gap is second order in h (0.0126 at 4 ms, 8.2e-4 at 1 ms, 1.3e-4 at 0.4 ms): ODE
+// moves each link's centre of mass along a straight line over a step while the link turns, so a
+// hinge's anchors part by about ½(ωh)²·ℓ per step before the ERP closes the gap in the next one;
+// at the whip the end links turn fast. The global CFM is not the cause (the same gap with CFM
+// 1e-10). The bar would hold at about 0.35 ms. Held instead: the gap's second order (slope 2 ±
+// 0.2 from 1 to 4 ms), and no blow-up at 1 ms and 10 ms (0.1 m links, which whip √10 times
+// faster, do blow up at 10 ms: 957 instability corrections). Not a bar: the energy, which ends
+// 1.4e-4 of M·g·ℓ_total/2 above its start at 1 ms (0.11 J, gained at the whip).
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/accuracy/probe_support.h"
+#include "core/accuracy/scene_bars.h"
+#include "core/accuracy/scenes.h"
+#include "core/sim/simulator.h"
+
+namespace lamina::core {
+namespace {
+
+constexpr double kDuration = 3.5;  // s
+
+// One hinge's anchor on each body: object index (-1: the world) and the point in its frame.
+struct Anchor {
+  int object = -1;
+  Vec3 local = Vec3::Zero();
+};
+
+Anchor AnchorOn(const WorldDesc& world, const WorldJointBody& body, const Vec3& point) {
+  if (body.kind != WorldId::Kind::kRigidObject) return {-1, point};
+  return {body.index, world.objects.at(body.index).pose.inverse() * point};
+}
+
+std::vector<std::pair<Anchor, Anchor>> ReadAnchors(const WorldDesc& world) {
+  std::vector<std::pair<Anchor, Anchor>> anchors;
+  for (const WorldJointDesc& joint : world.joints) {
+    const Anchor first = AnchorOn(world, joint.bodies.at(0), joint.point);
+    const Anchor second = joint.bodies.size() > 1 ? AnchorOn(world, joint.bodies[1], joint.point)
+                                                  : Anchor{-1, joint.point};
+    anchors.emplace_back(first, second);
+  }
+  return anchors;
+}
+
+Vec3 AnchorPoint(const Simulator& simulator, const Anchor& anchor) {
+  return anchor.object < 0 ? anchor.local : simulator.GetObjectPose(anchor.object) * anchor.local;
+}
+
+// The energy the chain releases from level to hanging straight down: M·g·(total length)/2, J.
+double EnergyScale(const WorldDesc& world, double link) {
+  double mass = 0.0;
+  for (const RigidObjectDesc& object : world.objects) mass += object.mass;
+  const double length = link * static_cast<double>(world.objects.size());
+  return mass * world.settings.gravity.norm() * 0.5 * length;
+}
+
+double Energy(const Simulator& simulator) {
+  return simulator.KineticEnergy() + simulator.PotentialEnergy();
+}
+
+class ChainProbe : public AccuracyProbe {
+ public:
+  explicit ChainProbe(const WorldDesc& world)
+      : anchors_(ReadAnchors(world)),
+        link_((world.joints.at(1).point - world.joints.at(0).point).norm()),
+        energy_scale_(EnergyScale(world, link_)) {}
+  void Begin(const Simulator& simulator) override { e0_ = Energy(simulator); }
+  void Observe(const StepEvent& event) override {
+    for (const auto& [a, b] : anchors_) {
+      const double gap = (AnchorPoint(event.simulator, a) - AnchorPoint(event.simulator, b)).norm();
+      gap_ = std::max(gap_, gap);
+    }
+    growth_ = std::max(growth_, Energy(event.simulator) - e0_);
+  }
+  ProbeResult Finish(const Simulator& simulator) override {
+    ProbeResult result{gap_ / link_, {}, ""};
+    result.metrics = {{"largest gap m", gap_},
+                      {"energy growth", growth_ / energy_scale_},
+                      {"energy drift", (Energy(simulator) - e0_) / energy_scale_}};
+    return result;
+  }
+
+ private:
+  std::vector<std::pair<Anchor, Anchor>> anchors_;
+  double link_, energy_scale_;
+  double e0_ = 0.0, gap_ = 0.0, growth_ = 0.0;
+};
+
+BarCheck SecondOrder(const std::vector<const AccuracyRun*>& runs) {
+  BarCheck check;
+  if (!RunsUsable(runs, &check)) return check;
+  const double order = OrderBetween(runs[0], runs[1]);
+  return {std::abs(order - 2.0) <= 0.2, "slope " + Measured(order, "")};
+}
+
+}  // namespace
+
+AccuracyScene ChainScene() {
+  AccuracyScene scene;
+  scene.name = "chain";
+  scene.world = "chain.xml";
+  scene.title = "Chain of 40 hinged links swinging down";
+  scene.setup =
+      "40 links of 1 m, 1 kg on world hinges, hung by one end, released level from "
+      "rest; no contact; 3.5 s";
+  scene.metric = "largest hinge gap relative to the link length";
+  scene.unit = "";
+  scene.answer = "0: every hinge keeps its anchors together; E = E₀";
+  scene.duration = kDuration;
+  scene.min_step = 4e-4;
+  scene.probe = [](const WorldDesc& world) { return std::make_unique<ChainProbe>(world); };
+  scene.bars = {
+      {"largest hinge gap < 1e-4 of the link length at 1 ms",
+       {1e-3},
+       [](const auto& runs) {
+         return AtMost(runs, {"", "of ℓ"}, 1e-4);
+       },
+       true},
+      {"gap second order in h: slope 2 ± 0.2 from 1 to 4 ms", {4e-3, 1e-3}, SecondOrder},
+      {"no blow-up: no corrections or non-finite states at 1 ms and 10 ms", {1e-3, 1e-2}, Stable},
+  };
+  return scene;
+}
+
+}  // namespace lamina::core

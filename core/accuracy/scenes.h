@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: MIT
+// The scenes of the accuracy suite, one factory each (accuracy_scene.cpp lists them in the
+// report's order). Each file states its scene's setup, answer and bars in its own comment.
+#pragma once
+
+#include "core/accuracy/accuracy_scene.h"
+
+namespace lamina::core {
+
+AccuracyScene BallisticBoxScene();
+/// The block sliding to rest at `degrees` from the contact frame's first axis (0, 22.5, 45).
+AccuracyScene SlidingBlockScene(double degrees);
+AccuracyScene BouncingBallScene();
+AccuracyScene PendulumScene();
+AccuracyScene InclineScene();
+AccuracyScene SlideToRollScene();
+AccuracyScene BoxStackScene();
+/// The heavy box (`ratio` kg: 100 or 1000) on the 1 kg box.
+AccuracyScene HeavyOnLightScene(int ratio);
+AccuracyScene ChainScene();
+AccuracyScene StiffnessScene();
+AccuracyScene HighSpeedScene();
+AccuracyScene MeshJitterScene();
+
+}  // namespace lamina::core

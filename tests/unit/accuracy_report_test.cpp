@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: MIT
+// The accuracy report's pure pieces: the log–log slope fit, decade ticks, the SVG plot, solver
+// labels, CSV quoting and the bar verdicts on hand-made runs.
+#include "core/accuracy/accuracy_report.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "core/accuracy/accuracy_run.h"
+#include "core/accuracy/probe_support.h"
+#include "core/accuracy/svg_plot.h"
+
+namespace lamina::core {
+namespace {
+
+using ::testing::HasSubstr;
+
+int Count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST(AccuracyReportTest, SlopeOfAPowerLawIsItsExponent) {
+  const std::vector<double> x = {1e-5, 1e-4, 1e-3, 1e-2};
+  std::vector<double> y;
+  for (double v : x) y.push_back(3.0 * v * v);
+  EXPECT_NEAR(LogLogSlope(x, y), 2.0, 1e-12);
+}
+
+TEST(AccuracyReportTest, SlopeLeavesOutZerosAndNeedsTwoPoints) {
+  EXPECT_NEAR(LogLogSlope({1, 2, 4, 8}, {0.0, 2.0, 4.0, 8.0}), 1.0, 1e-12);
+  EXPECT_TRUE(std::isnan(LogLogSlope({1, 2}, {0.0, 1.0})));
+  EXPECT_TRUE(std::isnan(LogLogSlope({2, 2}, {1.0, 3.0})));
+}
+
+TEST(AccuracyReportTest, DecadesCoverTheRange) {
+  EXPECT_EQ(DecadeTicks(2e-5, 3e-3), (std::vector<double>{1e-5, 1e-4, 1e-3, 1e-2}));
+  EXPECT_EQ(DecadeTicks(1e-3, 1e-3).size(), 2u);
+}
+
+TEST(AccuracyReportTest, SvgDrawsEveryPlottablePointAndCountsTheRest) {
+  LogLogPlot plot;
+  plot.title = "t<1>";
+  plot.series = {{"a", {1e-3, 1e-2, 1e-1}, {1.0, 0.0, 2.0}}, {"b", {1e-3}, {5.0}}};
+  const std::string svg = LogLogSvg(plot);
+  EXPECT_EQ(Count(svg, "<circle"), 3);
+  EXPECT_EQ(Count(svg, "<polyline"), 2);
+  EXPECT_THAT(svg, HasSubstr("a (1 at 0)"));
+  EXPECT_THAT(svg, HasSubstr("t&lt;1&gt;"));
+  EXPECT_THAT(svg, HasSubstr(">1e-3<"));
+  EXPECT_EQ(svg.rfind("</svg>\n"), svg.size() - 7);
+}
+
+TEST(AccuracyReportTest, SolverLabelsRoundTrip) {
+  for (const char* label : {"exact", "exact-fixed", "quick20", "quick100-fixed"}) {
+    const auto solver = ParseAccuracySolver(label);
+    ASSERT_TRUE(solver) << label;
+    EXPECT_EQ(solver->Label(), label);
+  }
+  for (const char* bad : {"", "quick", "quick0", "quickx", "exact-", "fixed", "quick20-fixe"}) {
+    EXPECT_FALSE(ParseAccuracySolver(bad)) << bad;
+  }
+}
+
+AccuracyRun MakeRun(const std::string& scene, double step, double error) {
+  AccuracyRun run;
+  run.scene = scene;
+  run.step = step;
+  run.result.error = error;
+  run.status = "normal";
+  return run;
+}
+
+TEST(AccuracyReportTest, BarsJudgeTheDefaultSolversRuns) {
+  // ballistic_box's first bar: error <= ½·g·h·T·1.01 at 1 ms = 0.01485 m
+  std::vector<AccuracyRun> runs = {MakeRun("ballistic_box", 1e-3, 0.0147),
+                                   MakeRun("ballistic_box", 1e-4, 0.00147)};
+  runs[0].result.metrics = {{"L drift", 1e-3}};
+  const std::vector<BarVerdict> bars = JudgeAccuracyBars(runs);
+  ASSERT_EQ(bars.size(), 3u);
+  EXPECT_TRUE(bars[0].check.pass) << bars[0].check.measured;
+  EXPECT_TRUE(bars[1].check.pass) << bars[1].check.measured;  // slope 1
+  EXPECT_TRUE(bars[2].check.pass) << bars[2].check.measured;
+  runs[0].result.error = 0.0150;
+  EXPECT_FALSE(JudgeAccuracyBars(runs)[0].check.pass);
+  runs[0].failure = "boom";
+  EXPECT_EQ(JudgeAccuracyBars(runs)[0].check.measured, "failed: boom");
+}
+
+TEST(AccuracyReportTest, CsvQuotesAndJsonHasNullForInfinity) {
+  AccuracyRun run = MakeRun("bouncing_ball", 1e-3, 0.01);
+  run.failure = "a, \"b\"";
+  run.result.metrics = {{"creep m/s", std::numeric_limits<double>::infinity()}};
+  const std::string csv = AccuracyCsv({run});
+  EXPECT_THAT(csv, HasSubstr(",\"a, \"\"b\"\"\","));
+  const nlohmann::json json = nlohmann::json::parse(AccuracyJson({run}, {}));
+  EXPECT_TRUE(json["runs"][0]["metrics"]["creep m/s"].is_null());
+  EXPECT_EQ(json["runs"][0]["solver"], "exact");
+}
+
+TEST(AccuracyReportTest, MarkdownLinksBothPlotsOfEachSceneRun) {
+  const std::vector<AccuracyRun> runs = {MakeRun("bouncing_ball", 1e-3, 0.01)};
+  const std::string md = AccuracyMarkdown(runs, JudgeAccuracyBars(runs), {"acc", "cmd", "m", "d"});
+  EXPECT_THAT(md, HasSubstr("(acc/bouncing_ball-time.svg)"));
+  EXPECT_THAT(md, HasSubstr("(acc/bouncing_ball-step.svg)"));
+  EXPECT_EQ(Count(md, "### "), 1);
+}
+
+TEST(AccuracyReportTest, BarGridRunsEachScenesBarStepsOnly) {
+  const AccuracyGrid grid = BarAccuracyGrid();
+  EXPECT_TRUE(grid.bars_only);
+  ASSERT_EQ(grid.solvers.size(), 1u);
+  EXPECT_EQ(grid.solvers[0], DefaultAccuracySolver());
+  EXPECT_EQ(grid.scenes.size(), AccuracyScenes().size());
+}
+
+}  // namespace
+}  // namespace lamina::core
