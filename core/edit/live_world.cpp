@@ -31,6 +31,7 @@ bool LiveWorld::Load(const std::string& path, Diagnostics& diagnostics) {
   WorldDocument loaded;
   if (!loaded.Load(path, diagnostics)) return false;
   auto simulator = std::make_unique<Simulator>(loaded.desc());
+  simulator->SetErrorMeter(simulator_->error_meter());
   document_ = std::move(loaded);
   AttachObservers(simulator.get());
   simulator_ = std::move(simulator);
@@ -158,6 +159,7 @@ void LiveWorld::RebuildSimulator(const WorldLayout& old_layout) {
   const std::vector<int> id_map = MapWorldIds(old_layout, layout);
   fresh->SetSolver(old.solver());
   fresh->SetSleeping(old.sleeping());
+  fresh->SetErrorMeter(old.error_meter());
   CarryBodyFlags(&old, id_map, fresh.get());
   for (const auto& [a, b] : CarryPairs(id_map, old.ContactFeedbackPairs())) {
     fresh->EnableContactFeedback(a, b);

@@ -61,6 +61,9 @@ class FeedbackRecorder {
   const ContactFeedbackRecord* Find(int a, int b) const;
   /// Every record forgets the last Simulate call.
   void BeginCall();
+  /// Puts back records saved from records() (the accuracy meter's probe steps record nothing);
+  /// the pairs must be the same.
+  void RestoreRecords(std::vector<ContactFeedbackRecord> records) { records_ = std::move(records); }
 
   FeedbackRecorder();
   ~FeedbackRecorder();

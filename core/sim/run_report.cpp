@@ -58,6 +58,16 @@ ordered_json SensorsJson(const RobotSensors& sensors) {
   return out;
 }
 
+// the live accuracy meter's reading (error_meter.h), when it is on
+ordered_json ErrorMeterJson(const Simulator& simulator) {
+  const ErrorMeterReading r = simulator.error_meter_reading();
+  return {{"error_rate", r.valid ? ordered_json(r.rate) : ordered_json(nullptr)},
+          {"local_error", r.valid ? ordered_json(r.local_error) : ordered_json(nullptr)},
+          {"sampled_at", r.time},
+          {"samples", r.samples},
+          {"overhead", r.overhead}};
+}
+
 }  // namespace
 
 std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
@@ -78,6 +88,7 @@ std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
       {"time_split", TimeSplit(stats.time_split)},
       {"sleeping_objects", simulator.SleepingObjectCount()}};
   if (!stats.error.empty()) out["error"] = stats.error;
+  if (simulator.error_meter()) out["error_meter"] = ErrorMeterJson(simulator);
   // every settings row in force, the internal constants included (core/model/params.h)
   out["settings"] = ordered_json::parse(ParamsJson(simulator.world(), ElementIndex::Settings()));
   ordered_json objects = ordered_json::array();
@@ -143,6 +154,14 @@ std::string RunReportText(const Simulator& simulator, const RunTiming& timing) {
                 Percent(split.other, total));
   out << line;
   if (!stats.error.empty()) out << "error: " << stats.error << "\n";
+  const ErrorMeterReading meter = simulator.error_meter_reading();
+  if (simulator.error_meter() && meter.valid) {
+    std::snprintf(line, sizeof(line),
+                  "error meter: position error growing about %.3g m per simulated s (%.3g m per "
+                  "step; %ld samples, %.1f%% extra time)\n",
+                  meter.rate, meter.local_error, meter.samples, 100.0 * meter.overhead);
+    out << line;
+  }
   for (int i = 0; i < simulator.object_count(); ++i) {
     const Vec3 p = simulator.GetObjectPose(i).translation();
     const Vec3 v = simulator.GetObjectVelocity(i).linear;

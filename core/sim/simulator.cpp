@@ -181,6 +181,7 @@ void Simulator::Reset() {
   if (halted_) BuildKeepingFlags();
   time_ = 0.0;
   statistics_ = SimStatistics();
+  meter_.Reset();
   ClearInteraction();
   bodies_.ClearCallForces();
   feedback_.BeginCall();
@@ -276,7 +277,10 @@ StepStatus Simulator::Simulate(double dt) {
   while (remaining > 0.0) {
     // steps on the grid of whole steps, whatever the chunking of the calls
     const double step = remaining < largest * (1 - kStepGridTolerance) ? remaining : largest;
+    if (meter_on_ && meter_.Due()) SampleStepError(step);
+    Stopwatch stepping;
     worst = std::max(worst, Step(step));
+    if (meter_on_) meter_.AddSteppingTime(stepping.Lap());
     if (worst == StepStatus::kError) break;
     remaining -= step;
     if (remaining < largest * kStepGridTolerance) remaining = 0.0;
@@ -457,7 +461,7 @@ StepStatus Simulator::AcceptStep(double step, StepProgress* progress) {
                         contacts_.pairs(),
                         feedback_};
   AccumulateStep(event, &statistics_);
-  if (!observers_.empty()) DispatchStep(event);
+  if (!observers_.empty() && !probing_) DispatchStep(event);
   *progress = StepProgress{};
   return StatusOfStep(event.flags);
 }

@@ -29,6 +29,7 @@
 #include "core/sim/body_table.h"
 #include "core/sim/contact_feedback.h"
 #include "core/sim/contact_set.h"
+#include "core/sim/error_meter.h"
 #include "core/sim/friction_anchors.h"
 #include "core/sim/interaction.h"
 #include "core/sim/sim_state.h"
@@ -138,6 +139,13 @@ class Simulator {
   /// that is not finite.
   void SetState(const SimState& state);
   const SimStatistics& statistics() const { return statistics_; }
+  /// The live accuracy meter (error_meter.h): off by default. On, some steps are first taken
+  /// once whole and once in halves from the same state, both thrown away, and the state restored
+  /// exactly, so results are bit-identical with the meter on or off; it costs at most the
+  /// meter's budget (5 %) of the stepping time. Turning it on or off restarts its reading.
+  void SetErrorMeter(bool on);
+  bool error_meter() const { return meter_on_; }
+  ErrorMeterReading error_meter_reading() const { return meter_.Reading(); }
   /// Warnings from building the simulation (e.g. a preshrink that flipped triangles).
   const Diagnostics& diagnostics() const { return diagnostics_; }
   /// The simulated world: the description it was built from with every edit since (surfaces,
@@ -379,6 +387,12 @@ class Simulator {
   // contact joints and feedback (simulator_contacts.cpp)
   void AddContactJoints(const ContactPair& pair, const Vec3* anchor_velocities, double step);
 
+  // the accuracy meter (simulator_meter.cpp)
+  void SampleStepError(double step);
+  bool ProbeSteps(const SimState& start, const std::vector<double>& steps,
+                  std::vector<Vec3>* positions);
+  std::vector<Vec3> MovingBodyPositions() const;
+
   // robots (simulator_robots.cpp)
   void RunControllers(double step);
   void PrepareRobotsForStep(double step);
@@ -464,6 +478,9 @@ class Simulator {
   bool halted_ = false;  ///< an error stopped the simulation
   SimState last_good_;   ///< when halted: the state at the start of the step that failed
   SimStatistics statistics_;
+  ErrorMeter meter_;
+  bool meter_on_ = false;
+  bool probing_ = false;  ///< the meter's probe steps: no observers, nothing kept
 };
 
 }  // namespace lamina::core

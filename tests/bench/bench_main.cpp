@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   lamina::bench::RegisterWorldBenchmarks();
   lamina::bench::RegisterRobotBenchmarks();
+  lamina::bench::RegisterErrorMeterBenchmarks();
   if (own_format) {
     benchmark::RunSpecifiedBenchmarks();
   } else {

@@ -6,5 +6,7 @@ namespace lamina::bench {
 
 /// Registers Robot/athlete_fractal_1/<solver>.
 void RegisterRobotBenchmarks();
+/// Registers ErrorMeter/<world>: the live accuracy meter's cost (error_meter_bench.cpp).
+void RegisterErrorMeterBenchmarks();
 
 }  // namespace lamina::bench

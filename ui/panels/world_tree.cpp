@@ -136,7 +136,7 @@ void DrawLoadMessages(const ViewerState& state) {
 
 void DrawWorldTree(const PanelContext& context) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  const float top = MenuBarHeight() + 300.0f;
+  const float top = MenuBarHeight() + 320.0f;  // below the Simulation panel
   ImGui::SetNextWindowPos(ImVec2(10, top), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(300, std::max(150.0f, display.y - top - 36.0f)),
                            ImGuiCond_FirstUseEver);

@@ -141,6 +141,7 @@ void LiveSession::Install(std::unique_ptr<core::LiveWorld> world) {
 // the physics thread takes over a new world (lockstep: the caller)
 void LiveSession::Adopt(std::unique_ptr<core::LiveWorld> world) {
   world_ = std::move(world);
+  world_->simulator().SetErrorMeter(true);  // the Simulation panel shows it (LiveWorld keeps it)
   world_->AddStepObserver([this](const core::StepEvent& event) {
     smallest_step_ = smallest_step_ > 0.0 ? std::min(smallest_step_, event.h) : event.h;
     if (event.simulator.dragging()) drag_impulse_ += event.simulator.drag().force * event.h;
@@ -490,6 +491,7 @@ void LiveSession::FillFrame(int sampled, SessionFrame* frame) {
     frame->problem = problem_;
   }
   frame->kinetic_energy = simulator.KineticEnergy();
+  frame->error_meter = simulator.error_meter_reading();
   frame->potential_energy = simulator.PotentialEnergy();
   frame->dragging = simulator.dragging();
   frame->drag = simulator.drag();

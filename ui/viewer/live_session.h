@@ -82,6 +82,8 @@ struct SessionFrame {
   double speed = 1.0;
   double real_time_factor = 0.0;
   double kinetic_energy = 0.0, potential_energy = 0.0;  ///< J
+  /// The live accuracy meter (core/sim/error_meter.h): position error growth, m per simulated s.
+  core::ErrorMeterReading error_meter;
   bool dragging = false;
   core::DragState drag;
   /// ∫ drag force dt over the steps since the previous frame (N·s, world): what the mouse spring
