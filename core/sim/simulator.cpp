@@ -351,7 +351,8 @@ Simulator::SubStep Simulator::TrySubStep(double* h, StepProgress* progress, bool
   contacts_.KeepForRollback();
   DetectContacts();
   bool unreliable = false;
-  const bool rollback = NeedsRollback(contacts_.before(), contacts_.pairs(), &unreliable);
+  bool rollback = NeedsRollback(contacts_.before(), contacts_.pairs(), &unreliable);
+  if (ObjectTunnelled()) rollback = unreliable = true;  // simulator_sweep.cpp
   if (world_.settings.adaptive_time_stepping && rollback &&
       *h / 2 >= world_.settings.minimum_adaptive_step) {
     RestoreState(guard_.rollback_state());

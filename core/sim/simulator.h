@@ -381,6 +381,9 @@ class Simulator {
   void DetectContacts();
   void UpdateBounds();
   bool MayCollide(const BodyRecord& a, const BodyRecord& b) const;
+  // the tunnelling check (simulator_sweep.cpp)
+  bool ObjectTunnelled() const;
+  bool SegmentCrossesBody(int id, const Vec3& from, const Vec3& to) const;
   void CaptureBodyState(SimState* state, bool with_controllers) const;
   void RestoreState(const SimState& state);
 
