@@ -20,13 +20,6 @@ using test::CommandResult;
 using test::RunHeadless;
 using ::testing::HasSubstr;
 
-std::string Read(const std::string& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 TEST(AccuracyCliTest, SmallSweepWritesEveryOutput) {
   const std::string out = test::ScratchDir() + "/accuracy_cli";
   std::filesystem::remove_all(out);
@@ -36,7 +29,7 @@ TEST(AccuracyCliTest, SmallSweepWritesEveryOutput) {
       out + " --markdown " + out + "/page.md");
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_THAT(result.out, HasSubstr("bouncing_ball: rebound height within 1 % of e²H at 1 ms"));
-  const nlohmann::json json = nlohmann::json::parse(Read(out + "/runs.json"));
+  const nlohmann::json json = nlohmann::json::parse(test::ReadFile(out + "/runs.json"));
   ASSERT_EQ(json["runs"].size(), 4u);
   for (const nlohmann::json& run : json["runs"]) {
     EXPECT_EQ(run["failure"], "");
@@ -44,10 +37,10 @@ TEST(AccuracyCliTest, SmallSweepWritesEveryOutput) {
     EXPECT_GT(run["cpu_s"].get<double>(), 0.0);
   }
   EXPECT_EQ(json["runs"][2]["solver"], "quick20-fixed");
-  const std::string csv = Read(out + "/runs.csv");
+  const std::string csv = test::ReadFile(out + "/runs.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
-  EXPECT_THAT(Read(out + "/bouncing_ball-time.svg"), HasSubstr("exact (slope"));
-  EXPECT_THAT(Read(out + "/page.md"), HasSubstr("](./bouncing_ball-step.svg)"));
+  EXPECT_THAT(test::ReadFile(out + "/bouncing_ball-time.svg"), HasSubstr("exact (slope"));
+  EXPECT_THAT(test::ReadFile(out + "/page.md"), HasSubstr("](./bouncing_ball-step.svg)"));
 }
 
 TEST(AccuracyCliTest, UnknownSceneAndSolverAreNamed) {

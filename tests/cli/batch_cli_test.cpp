@@ -18,13 +18,6 @@ using test::CommandResult;
 using test::RunHeadless;
 using ::testing::HasSubstr;
 
-std::string Read(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 std::string FirstLine(const std::string& text) {
   return text.substr(0, text.find('\n'));
 }
@@ -48,14 +41,14 @@ TEST(BatchCommandTest, WritesCsvJsonLinesAndSummary) {
   EXPECT_THAT(result.out, HasSubstr("runs: 8 (8 normal)"));
   EXPECT_THAT(result.out, HasSubstr("robots[0].actualConfig[0]"));
   EXPECT_EQ(result.err.find("runs/s"), std::string::npos);  // not a terminal: no progress
-  const std::string csv = Read(prefix + ".csv");
+  const std::string csv = test::ReadFile(prefix + ".csv");
   EXPECT_EQ(FirstLine(csv),
             "index,robots[0].config[0],robots[0].actualConfig[0],"
             "controllers[0].commandedConfig[0],status,time,wall_clock_time");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 9);
-  EXPECT_THAT(Read(prefix + ".jsonl"), HasSubstr("\"lamina_batch\""));
-  EXPECT_THAT(Read(prefix + ".summary.json"), HasSubstr("\"q95\""));
-  EXPECT_EQ(Read(prefix + ".hist.png").substr(1, 3), "PNG");
+  EXPECT_THAT(test::ReadFile(prefix + ".jsonl"), HasSubstr("\"lamina_batch\""));
+  EXPECT_THAT(test::ReadFile(prefix + ".summary.json"), HasSubstr("\"q95\""));
+  EXPECT_EQ(test::ReadFile(prefix + ".hist.png").substr(1, 3), "PNG");
 }
 
 TEST(BatchCommandTest, BadSpecExitsWithStatus2NamingTheKey) {
@@ -88,9 +81,9 @@ TEST(BatchCommandTest, TwoShardsMergeIntoTheSingleRun) {
   const CommandResult merged =
       RunHeadless("batch merge " + part1 + " " + part0 + " --no-wall-time --out " + dir + "/m");
   ASSERT_EQ(merged.exit_code, 0) << merged.err;
-  EXPECT_EQ(Read(dir + "/m.csv"), Read(dir + "/whole.csv"));
-  EXPECT_EQ(Read(dir + "/m.jsonl"), Read(dir + "/whole.jsonl"));
-  EXPECT_EQ(Read(dir + "/m.summary.json"), Read(dir + "/whole.summary.json"));
+  EXPECT_EQ(test::ReadFile(dir + "/m.csv"), test::ReadFile(dir + "/whole.csv"));
+  EXPECT_EQ(test::ReadFile(dir + "/m.jsonl"), test::ReadFile(dir + "/whole.jsonl"));
+  EXPECT_EQ(test::ReadFile(dir + "/m.summary.json"), test::ReadFile(dir + "/whole.summary.json"));
 
   const CommandResult missing = RunHeadless("batch merge " + part1 + " --out " + dir + "/x");
   EXPECT_EQ(missing.exit_code, 2);
@@ -109,7 +102,7 @@ TEST(BatchCommandTest, ASlurmArrayTaskRunsItsShard) {
   unsetenv("SLURM_ARRAY_TASK_MIN");
   unsetenv("SLURM_ARRAY_TASK_COUNT");
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  const std::string csv = Read(dir + "/t.part-1-of-2.csv");
+  const std::string csv = test::ReadFile(dir + "/t.part-1-of-2.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);  // runs 1, 3, 5, 7
   EXPECT_THAT(csv, HasSubstr("\n7,"));
 }

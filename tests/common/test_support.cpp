@@ -8,6 +8,7 @@
 #include <iterator>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -22,6 +23,13 @@ std::string DataPath(const std::string& relative) {
 
 std::string WorldsPath(const std::string& relative) {
   return LAMINA_WORLDS_DIR "/" + relative;
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 std::string ScratchDir() {

@@ -18,6 +18,8 @@ std::string DataPath(const std::string& relative);
 std::string WorldsPath(const std::string& relative);
 /// This test's own directory under the system temp, emptied at its first use in the test.
 std::string ScratchDir();
+/// The bytes of the file at `path` ("" when it cannot be read).
+std::string ReadFile(const std::string& path);
 /// Writes `text` to `name` inside ScratchDir() (subdirectories created) and returns its path.
 std::string WriteScratchFile(const std::string& name, const std::string& text);
 

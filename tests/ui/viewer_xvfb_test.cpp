@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include "tests/common/test_support.h"
 #include "tests/render/golden_image.h"
 
 namespace {
@@ -67,13 +68,6 @@ int RunUnderXvfb(const std::string& command, const std::string& log) {
   return -1;
 }
 
-std::string ReadText(const std::string& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 // not blank: over 100 distinct colours and over a tenth of the pixels unlike the top-left corner
 // (a blank or merely cleared window has one or two colours)
 void ExpectNotBlank(const Image& image) {
@@ -106,12 +100,12 @@ void ExpectWindowMatchesHeadless(const std::string& name, const std::string& wor
                                      view_options + " --screenshot " + window_png;
   ASSERT_EQ(RunUnderXvfb(window_command, name + "_window.log"), 0)
       << window_command << "\n"
-      << ReadText(name + "_window.log");
+      << lamina::test::ReadFile(name + "_window.log");
   const std::string headless_command = kBin + "/lamina-headless shot " + world +
                                        " --size 640x480 " + view_options + " -o " + headless_png;
   ASSERT_EQ(RunCommand(headless_command, name + "_headless.log"), 0)
       << headless_command << "\n"
-      << ReadText(name + "_headless.log");
+      << lamina::test::ReadFile(name + "_headless.log");
   const Image window = ReadImage(window_png), headless = ReadImage(headless_png);
   ASSERT_EQ(window.width, 640);
   ASSERT_EQ(window.height, 480);
@@ -145,9 +139,9 @@ TEST(ViewerUnderXvfb, FxaaSmoothsEdgesAndLeavesTheRestAlone) {
                               "/klampt/simulation_test_worlds/stacktest.xml --frames 3 --no-ui "
                               "--paused --size 480x300 --camera 'target=0.05,0,0.75;dist=0.35' ";
   ASSERT_EQ(RunUnderXvfb(command + "--msaa 1 --screenshot no_aa.png", "no_aa.log"), 0)
-      << ReadText("no_aa.log");
+      << lamina::test::ReadFile("no_aa.log");
   ASSERT_EQ(RunUnderXvfb(command + "--fxaa --screenshot fxaa.png", "fxaa.log"), 0)
-      << ReadText("fxaa.log");
+      << lamina::test::ReadFile("fxaa.log");
   const Image plain = ReadImage("no_aa.png"), smoothed = ReadImage("fxaa.png");
   ExpectNotBlank(smoothed);
   const auto difference = lamina::test::CompareImages(plain, smoothed, 8);
@@ -161,7 +155,8 @@ TEST(ViewerUnderXvfb, PanelsSmokeOnTheDefaultWorld) {
   if (!HaveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
   const std::string command =
       kBin + "/lamina --frames 5 --size 960x540 --screenshot " + "panels.png";
-  ASSERT_EQ(RunUnderXvfb(command, "panels.log"), 0) << command << "\n" << ReadText("panels.log");
+  ASSERT_EQ(RunUnderXvfb(command, "panels.log"), 0) << command << "\n"
+                                                    << lamina::test::ReadFile("panels.log");
   const Image image = ReadImage("panels.png");
   EXPECT_EQ(image.width, 960);
   ExpectNotBlank(image);
@@ -207,7 +202,8 @@ void ExpectPanelsMatchGolden(const std::string& name, const std::string& world_f
   const std::string command = pointer + kBin + "/lamina " + world + " --worlds " + worlds +
                               " --lockstep --size 1280x720 --frames 120 " + options +
                               " --screenshot " + png;
-  ASSERT_EQ(RunUnderXvfb(command, name + ".log"), 0) << command << "\n" << ReadText(name + ".log");
+  ASSERT_EQ(RunUnderXvfb(command, name + ".log"), 0) << command << "\n"
+                                                     << lamina::test::ReadFile(name + ".log");
   const Image actual = ReadImage(png);
   const std::string golden = std::string(LAMINA_UI_GOLDEN_DIR) + "/" + png;
   const char* update = std::getenv("LAMINA_UPDATE_GOLDEN");
@@ -262,16 +258,16 @@ TEST(PanelGolden, KeysAndMouseHelp) {
 TEST(ViewerUnderXvfb, BenchmarkPrintsMedianFrameTimes) {
   if (!HaveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
   const std::string command = kBin + "/lamina --bench-frames 3 --no-ui --size 640x360";
-  ASSERT_EQ(RunUnderXvfb(command, "bench.log"), 0) << ReadText("bench.log");
-  EXPECT_NE(ReadText("bench.log").find("median render"), std::string::npos)
-      << ReadText("bench.log");
+  ASSERT_EQ(RunUnderXvfb(command, "bench.log"), 0) << lamina::test::ReadFile("bench.log");
+  EXPECT_NE(lamina::test::ReadFile("bench.log").find("median render"), std::string::npos)
+      << lamina::test::ReadFile("bench.log");
 }
 
 TEST(ViewerUnderXvfb, AMissingWorldIsReportedNotACrash) {
   if (!HaveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
   EXPECT_EQ(RunUnderXvfb(kBin + "/lamina /no/such/world.xml --frames 2", "missing.log"), 1);
-  EXPECT_NE(ReadText("missing.log").find("/no/such/world.xml"), std::string::npos)
-      << ReadText("missing.log");
+  EXPECT_NE(lamina::test::ReadFile("missing.log").find("/no/such/world.xml"), std::string::npos)
+      << lamina::test::ReadFile("missing.log");
 }
 
 TEST(ViewerUnderXvfb, SetChangesTheWorldAndARefusedSetSaysWhy) {
@@ -281,22 +277,23 @@ TEST(ViewerUnderXvfb, SetChangesTheWorldAndARefusedSetSaysWhy) {
                              " --frames 2 --no-ui --set 'settings.gravity=0,0,-1.62'",
                          "set.log"),
             0)
-      << ReadText("set.log");
+      << lamina::test::ReadFile("set.log");
   EXPECT_EQ(
       RunUnderXvfb(kBin + "/lamina " + world + " --frames 2 --set 'objects[0].kRestitution=1.5'",
                    "bad_set.log"),
       1);
-  EXPECT_NE(ReadText("bad_set.log").find("--set 'objects[0].kRestitution=1.5'"), std::string::npos)
-      << ReadText("bad_set.log");
+  EXPECT_NE(lamina::test::ReadFile("bad_set.log").find("--set 'objects[0].kRestitution=1.5'"),
+            std::string::npos)
+      << lamina::test::ReadFile("bad_set.log");
 }
 
 TEST(ViewerOptions, BadOptionsAreRejectedBeforeAnyWindowOpens) {
   EXPECT_EQ(RunCommand(kBin + "/lamina --overlay sparkles", "bad_overlay.log"), 2);
-  EXPECT_NE(ReadText("bad_overlay.log").find("--overlay"), std::string::npos);
+  EXPECT_NE(lamina::test::ReadFile("bad_overlay.log").find("--overlay"), std::string::npos);
   EXPECT_EQ(RunCommand(kBin + "/lamina --size 12by7", "bad_size.log"), 2);
-  EXPECT_NE(ReadText("bad_size.log").find("--size"), std::string::npos);
+  EXPECT_NE(lamina::test::ReadFile("bad_size.log").find("--size"), std::string::npos);
   EXPECT_EQ(RunCommand(kBin + "/lamina --camera 'yaw=abc'", "bad_camera.log"), 2);
-  EXPECT_NE(ReadText("bad_camera.log").find("camera"), std::string::npos);
+  EXPECT_NE(lamina::test::ReadFile("bad_camera.log").find("camera"), std::string::npos);
 }
 
 }  // namespace
