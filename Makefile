@@ -41,7 +41,8 @@ install: build
 	  cmake --install $(BUILD) --prefix $(PREFIX); \
 	else sudo cmake --install $(BUILD) --prefix $(PREFIX); fi
 
-# the core and its tests under AddressSanitizer + UndefinedBehaviorSanitizer; the long physics
+# the core and its tests under AddressSanitizer + UndefinedBehaviorSanitizer (Debug, at -O1 with
+# assertions on: cmake/LaminaOptions.cmake); the long physics
 # runs (label "physics") and the benchmark smoke run (label "bench") stay in the optimized
 # `make test` (the benchmarks are not even built here)
 test-asan:
