@@ -278,9 +278,13 @@ StepStatus Simulator::Simulate(double dt) {
     // steps on the grid of whole steps, whatever the chunking of the calls
     const double step = remaining < largest * (1 - kStepGridTolerance) ? remaining : largest;
     if (meter_on_ && meter_.Due()) SampleStepError(step);
-    Stopwatch stepping;
-    worst = std::max(worst, Step(step));
-    if (meter_on_) meter_.AddSteppingTime(stepping.Lap());
+    if (meter_on_) {
+      Stopwatch stepping;
+      worst = std::max(worst, Step(step));
+      meter_.AddSteppingTime(stepping.Lap());
+    } else {
+      worst = std::max(worst, Step(step));
+    }
     if (worst == StepStatus::kError) break;
     remaining -= step;
     if (remaining < largest * kStepGridTolerance) remaining = 0.0;
