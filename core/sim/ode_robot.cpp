@@ -224,18 +224,23 @@ void OdeRobot::BuildJoints(dWorldID world, const VecX& q) {
       link.servo = dJointCreateAMotor(world, nullptr);
       dJointAttach(link.servo, link.body, parent);
       dJointSetAMotorMode(link.servo, dAMotorUser);
-      dJointSetAMotorNumAxes(link.servo, 1);
-      dJointSetAMotorAxis(link.servo, 0, 1, axis.x(), axis.y(), axis.z());
+      // axis 0: the servo; axis 1: joint friction (SetJointMotor)
+      dJointSetAMotorNumAxes(link.servo, 2);
+      for (int k = 0; k < 2; ++k)
+        dJointSetAMotorAxis(link.servo, k, 1, axis.x(), axis.y(), axis.z());
       dJointSetAMotorParam(link.servo, dParamFMax, 0.0);
+      dJointSetAMotorParam(link.servo, dParamFMax2, 0.0);
     } else {
       link.joint = dJointCreateSlider(world, nullptr);
       dJointAttach(link.joint, link.body, parent);
       dJointSetSliderAxis(link.joint, axis.x(), axis.y(), axis.z());
       link.servo = dJointCreateLMotor(world, nullptr);
       dJointAttach(link.servo, link.body, parent);
-      dJointSetLMotorNumAxes(link.servo, 1);
-      dJointSetLMotorAxis(link.servo, 0, 1, axis.x(), axis.y(), axis.z());
+      dJointSetLMotorNumAxes(link.servo, 2);
+      for (int k = 0; k < 2; ++k)
+        dJointSetLMotorAxis(link.servo, k, 1, axis.x(), axis.y(), axis.z());
       dJointSetLMotorParam(link.servo, dParamFMax, 0.0);
+      dJointSetLMotorParam(link.servo, dParamFMax2, 0.0);
     }
     SetStops(i);
   }
@@ -529,16 +534,21 @@ void OdeRobot::SetJointFriction(const std::vector<DriverDesc>& drivers, const Ve
   }
 }
 
+// The friction row is the second axis of the servo's motor joint, not the hinge's (or slider's)
+// own motor: a hinge with a motor row is a "mixed" joint to dWorldStep, and only joints whose rows
+// are all unbounded join the LCP's unbounded block, factorized at once; the rows of mixed joints
+// go through Dantzig's pivoting one at a time (HRP-2 with joint friction: 150 hinge rows).
 void OdeRobot::SetJointMotor(int i, double fmax, double cfm) {
-  const dJointID joint = links_[i].joint;
-  if (robot_.links[i].axis_type == LinkJointAxis::kRevolute) {
-    dJointSetHingeParam(joint, dParamVel, 0.0);
-    dJointSetHingeParam(joint, dParamCFM, cfm);
-    dJointSetHingeParam(joint, dParamFMax, fmax);
+  const dJointID motor = links_[i].servo;
+  if (motor == nullptr) return;
+  if (dJointGetType(motor) == dJointTypeAMotor) {
+    dJointSetAMotorParam(motor, dParamVel2, 0.0);
+    dJointSetAMotorParam(motor, dParamCFM2, cfm);
+    dJointSetAMotorParam(motor, dParamFMax2, fmax);
   } else {
-    dJointSetSliderParam(joint, dParamVel, 0.0);
-    dJointSetSliderParam(joint, dParamCFM, cfm);
-    dJointSetSliderParam(joint, dParamFMax, fmax);
+    dJointSetLMotorParam(motor, dParamVel2, 0.0);
+    dJointSetLMotorParam(motor, dParamCFM2, cfm);
+    dJointSetLMotorParam(motor, dParamFMax2, fmax);
   }
 }
 
