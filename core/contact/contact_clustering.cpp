@@ -5,7 +5,9 @@
 #include "core/contact/contact_clustering.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include <Eigen/Core>
@@ -253,26 +255,159 @@ void ClusterContacts(int max_contacts, double normal_scale, ContactList* contact
 }  // namespace lamina::core
 
 namespace lamina::core {
+namespace {
 
-void MergeCoincidentContacts(double radius, ContactList* contacts) {
-  // cos(15 degrees)
-  constexpr double kSameNormal = 0.9659258262890683;
-  const double radius_squared = radius * radius;
-  size_t kept = 0;
-  for (size_t i = 0; i < contacts->size(); ++i) {
-    const Contact& contact = (*contacts)[i];
-    bool merged = false;
-    for (size_t k = 0; k < kept && !merged; ++k) {
-      Contact& survivor = (*contacts)[k];
-      if ((survivor.position - contact.position).squaredNorm() > radius_squared) continue;
-      if (survivor.normal.dot(contact.normal) < kSameNormal) continue;
-      survivor.depth = std::max(survivor.depth, contact.depth);
-      survivor.penetrating = survivor.penetrating || contact.penetrating;
-      merged = true;
+// cos(15 degrees)
+constexpr double kSameNormal = 0.9659258262890683;
+// below this many contacts the plain scan over the survivors is as fast as the grid
+constexpr std::size_t kMergeGridMinimum = 32;
+
+bool Coincide(const Contact& survivor, const Contact& contact, double radius_squared) {
+  // written so that NaN compares as coinciding, as it always has
+  return !((survivor.position - contact.position).squaredNorm() > radius_squared) &&
+         !(survivor.normal.dot(contact.normal) < kSameNormal);
+}
+
+void Absorb(const Contact& contact, Contact* survivor) {
+  survivor->depth = std::max(survivor->depth, contact.depth);
+  survivor->penetrating = survivor->penetrating || contact.penetrating;
+}
+
+// Index of the first survivor (of contacts[0, kept)) that `contact` coincides with; kept if none.
+std::size_t FirstCoincident(const ContactList& contacts, std::size_t kept, const Contact& contact,
+                            double radius_squared) {
+  for (std::size_t k = 0; k < kept; ++k) {
+    if (Coincide(contacts[k], contact, radius_squared)) return k;
+  }
+  return kept;
+}
+
+void MergeByScan(double radius_squared, ContactList* contacts) {
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < contacts->size(); ++i) {
+    const Contact contact = (*contacts)[i];
+    const std::size_t k = FirstCoincident(*contacts, kept, contact, radius_squared);
+    if (k < kept) {
+      Absorb(contact, &(*contacts)[k]);
+    } else {
+      (*contacts)[kept++] = contact;
     }
-    if (!merged) (*contacts)[kept++] = contact;
   }
   contacts->resize(kept);
+}
+
+using Cell = Eigen::Matrix<std::int64_t, 3, 1>;
+
+// The survivors hashed into a grid of cells of edge 2·radius: each survivor is entered in every
+// cell its radius-ball overlaps (at most 2 per axis, 8 in all), so a contact finds every survivor
+// within radius of it in its own cell, with one lookup. Open addressing; each slot heads a chain
+// of entries. Kept per thread so that a call does not allocate once grown.
+class SurvivorGrid {
+ public:
+  void Reset(std::size_t count, double radius) {
+    std::size_t size = 64;
+    while (size < 4 * count) size *= 2;
+    cells_.resize(size);
+    heads_.assign(size, -1);
+    entries_.clear();
+    radius_ = radius;
+    inverse_edge_ = 0.5 / radius;
+  }
+
+  // the first survivor within radius_squared of `contact` (normals agreeing), or -1
+  int FirstCoincident(const ContactList& survivors, const Contact& contact,
+                      double radius_squared) const {
+    const std::size_t slot = Find(CellOf(contact.position));
+    int first = -1;
+    for (int e = heads_[slot]; e >= 0; e = entries_[e].next) {
+      const int k = entries_[e].survivor;
+      if ((first < 0 || k < first) && Coincide(survivors[k], contact, radius_squared)) first = k;
+    }
+    return first;
+  }
+
+  void Add(int survivor, const Vec3& position) {
+    const Cell low = CellOf(position - Vec3::Constant(radius_));
+    const Cell high = CellOf(position + Vec3::Constant(radius_));
+    for (std::int64_t x = low.x(); x <= high.x(); ++x) {
+      for (std::int64_t y = low.y(); y <= high.y(); ++y) {
+        for (std::int64_t z = low.z(); z <= high.z(); ++z) Enter(survivor, Cell(x, y, z));
+      }
+    }
+  }
+
+ private:
+  struct Entry {
+    int survivor;
+    int next;  ///< the cell's previous entry, -1 at the end
+  };
+
+  Cell CellOf(const Vec3& position) const {
+    return (position * inverse_edge_).array().floor().cast<std::int64_t>();
+  }
+
+  void Enter(int survivor, const Cell& cell) {
+    const std::size_t slot = Find(cell);
+    cells_[slot] = cell;
+    entries_.push_back({survivor, heads_[slot]});
+    heads_[slot] = static_cast<int>(entries_.size()) - 1;
+  }
+
+  // the slot of `cell`, or the empty slot where it would go
+  std::size_t Find(const Cell& cell) const {
+    const auto hash = static_cast<std::uint64_t>(cell.x()) * 73856093ULL ^
+                      static_cast<std::uint64_t>(cell.y()) * 19349663ULL ^
+                      static_cast<std::uint64_t>(cell.z()) * 83492791ULL;
+    const std::size_t mask = heads_.size() - 1;
+    std::size_t slot = static_cast<std::size_t>(hash) & mask;
+    while (heads_[slot] >= 0 && cells_[slot] != cell) slot = (slot + 1) & mask;
+    return slot;
+  }
+
+  std::vector<Cell> cells_;
+  std::vector<int> heads_;  ///< per slot: the cell's latest entry, -1 for an empty slot
+  std::vector<Entry> entries_;
+  double radius_ = 1.0;
+  double inverse_edge_ = 0.5;
+};
+
+// Same result as MergeByScan (each contact joins the FIRST survivor it coincides with), in
+// O(n) for contacts spread over the patch instead of O(n · survivors).
+void MergeByGrid(double radius, ContactList* contacts) {
+  thread_local SurvivorGrid grid;
+  grid.Reset(contacts->size(), radius);
+  const double radius_squared = radius * radius;
+  int kept = 0;
+  for (std::size_t i = 0; i < contacts->size(); ++i) {
+    const Contact contact = (*contacts)[i];
+    const int k = grid.FirstCoincident(*contacts, contact, radius_squared);
+    if (k >= 0) {
+      Absorb(contact, &(*contacts)[k]);
+    } else {
+      (*contacts)[kept] = contact;
+      grid.Add(kept++, contact.position);
+    }
+  }
+  contacts->resize(kept);
+}
+
+// The grid needs cell indices that fit: finite positions within 2^52 radii of the origin.
+bool GridFits(double radius, const ContactList& contacts) {
+  if (!(radius > 0.0) || !std::isfinite(radius)) return false;
+  const double limit = 4.5e15 * radius;
+  return std::all_of(contacts.begin(), contacts.end(), [limit](const Contact& c) {
+    return c.position.allFinite() && c.position.cwiseAbs().maxCoeff() < limit;
+  });
+}
+
+}  // namespace
+
+void MergeCoincidentContacts(double radius, ContactList* contacts) {
+  if (contacts->size() >= kMergeGridMinimum && GridFits(radius, *contacts)) {
+    MergeByGrid(radius, contacts);
+  } else {
+    MergeByScan(radius * radius, contacts);
+  }
 }
 
 }  // namespace lamina::core

@@ -242,5 +242,81 @@ TEST(ContactClusteringTest, ContactsOutsideTheSubsampleStillCount) {
   EXPECT_EQ(deep_outputs, 1);
 }
 
+// ---- MergeCoincidentContacts ---------------------------------------------------------------
+
+// The rule as first written (a scan over the survivors): the reference the grid must match.
+ContactList MergeReference(double radius, ContactList contacts) {
+  constexpr double kSameNormal = 0.9659258262890683;  // cos 15°
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const Contact contact = contacts[i];
+    bool merged = false;
+    for (std::size_t k = 0; k < kept && !merged; ++k) {
+      Contact& survivor = contacts[k];
+      if ((survivor.position - contact.position).squaredNorm() > radius * radius) continue;
+      if (survivor.normal.dot(contact.normal) < kSameNormal) continue;
+      survivor.depth = std::max(survivor.depth, contact.depth);
+      survivor.penetrating = survivor.penetrating || contact.penetrating;
+      merged = true;
+    }
+    if (!merged) contacts[kept++] = contact;
+  }
+  contacts.resize(kept);
+  return contacts;
+}
+
+// A patch of n contacts on a lattice of spacing `spacing` with jitter, every third one a
+// near-duplicate of an earlier one, normals tilted by up to ~25° (some beyond the 15° rule).
+ContactList NoisyPatch(int n, double spacing, unsigned seed) {
+  unsigned state = seed;
+  const auto uniform = [&state]() {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<double>(state >> 8) / static_cast<double>(1u << 24);
+  };
+  ContactList contacts;
+  for (int i = 0; i < n; ++i) {
+    Vec3 position(spacing * (i % 10) + 0.3 * spacing * uniform(),
+                  spacing * (i / 10) + 0.3 * spacing * uniform(), 1e-4 * uniform());
+    if (i % 3 == 2) position = contacts[i / 2].position + Vec3::Constant(0.2 * spacing * uniform());
+    const Vec3 normal = Vec3(0.45 * (uniform() - 0.5), 0.45 * (uniform() - 0.5), 1.0).normalized();
+    contacts.push_back(MakeContact(position, normal, 1e-3 * uniform(), uniform() < 0.1));
+  }
+  return contacts;
+}
+
+// Large inputs take the grid; its result is the scan's, contact for contact, for merge radii
+// below, at and above the lattice spacing (cells of every size relative to the patch).
+TEST(MergeCoincidentContactsTest, GridMatchesTheScan) {
+  for (const double radius : {0.002, 0.01, 0.013, 0.05}) {
+    for (unsigned seed = 1; seed <= 5; ++seed) {
+      SCOPED_TRACE(testing::Message() << "radius " << radius << " seed " << seed);
+      ContactList contacts = NoisyPatch(400, 0.01, seed);
+      const ContactList expected = MergeReference(radius, contacts);
+      MergeCoincidentContacts(radius, &contacts);
+      ExpectIdentical(contacts, expected);
+      EXPECT_LT(contacts.size(), 400u);
+      EXPECT_GT(contacts.size(), 1u);
+    }
+  }
+}
+
+// Far from the origin, and with a non-finite contact (the scan's rule: NaN merges), the result
+// is still the scan's.
+TEST(MergeCoincidentContactsTest, FarAndNonFiniteInputsMatchTheScan) {
+  ContactList far = NoisyPatch(100, 0.01, 7);
+  for (Contact& c : far) c.position += Vec3(1e5, -2e5, 3e4);
+  ContactList expected = MergeReference(0.01, far);
+  MergeCoincidentContacts(0.01, &far);
+  ExpectIdentical(far, expected);
+
+  ContactList broken = NoisyPatch(100, 0.01, 8);
+  broken[40].position.x() = std::nan("");
+  broken[60].normal = Vec3::Constant(std::nan(""));
+  expected = MergeReference(0.01, broken);
+  MergeCoincidentContacts(0.01, &broken);
+  ASSERT_EQ(broken.size(), expected.size());
+  for (std::size_t i = 0; i < broken.size(); ++i) EXPECT_EQ(broken[i].depth, expected[i].depth);
+}
+
 }  // namespace
 }  // namespace lamina::core
