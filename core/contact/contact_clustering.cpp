@@ -306,7 +306,7 @@ class SurvivorGrid {
  public:
   void Reset(std::size_t count, double radius) {
     std::size_t size = 64;
-    while (size < 4 * count) size *= 2;
+    while (size < 16 * count) size *= 2;  // up to 8 cells per survivor: load <= 1/2
     cells_.resize(size);
     heads_.assign(size, -1);
     entries_.clear();

@@ -318,5 +318,21 @@ TEST(MergeCoincidentContactsTest, FarAndNonFiniteInputsMatchTheScan) {
   for (std::size_t i = 0; i < broken.size(); ++i) EXPECT_EQ(broken[i].depth, expected[i].depth);
 }
 
+
+// Survivors far apart, each exactly on a corner of the grid's cells so that it enters 8 of them:
+// the table holds 8 entries per survivor (it once filled up and looped forever), and nothing merges.
+TEST(MergeCoincidentContactsTest, SparseSurvivorsOnCellCornersAllStay) {
+  const double radius = 0.01;
+  ContactList contacts;
+  for (int i = 0; i < 1000; ++i) {
+    const Vec3 corner(6 * radius * (i % 10), 6 * radius * ((i / 10) % 10), 6 * radius * (i / 100));
+    contacts.push_back(MakeContact(corner, Vec3::UnitZ(), 1e-3));
+  }
+  const ContactList expected = MergeReference(radius, contacts);
+  MergeCoincidentContacts(radius, &contacts);
+  ExpectIdentical(contacts, expected);
+  EXPECT_EQ(contacts.size(), 1000u);
+}
+
 }  // namespace
 }  // namespace lamina::core
