@@ -2,6 +2,8 @@
 #include "core/sim/contact_set.h"
 
 #include "core/contact/contact_clustering.h"
+#include "core/contact/contact_reduction.h"
+#include "core/sim/contact_rows.h"
 
 namespace lamina::core {
 
@@ -26,6 +28,7 @@ bool FindPairContacts(int first, int second, const NarrowBody& body_first,
     pair->penetrating = pair->penetrating || contact.penetrating;
   }
   MergeCoincidentContacts(std::max(kMergeFraction * pair->tolerance, kMinimumMergeRadius), scratch);
+  ReduceFlatPatch(ContactWeightDepth(0.0, pair->tolerance), scratch);
   ClusterContacts(max_contacts, kDefaultClusterNormalScale, scratch);
   pair->contacts = *scratch;
   timing->clustering += watch.Lap();
