@@ -329,6 +329,7 @@ StepStatus Simulator::Step(double step) {
 // one tentative sub-step of *h: accepted, to be retaken (*h halved after a rollback), or an error
 Simulator::SubStep Simulator::TrySubStep(double* h, StepProgress* progress, bool* recovered) {
   CaptureBodyState(&guard_.rollback_state(), false);  // reuses its storage
+  MeasureRobotJointGapsBefore();
   const IntegrateResult result = Integrate(*h);
   if (result == IntegrateResult::kOdeError) {
     const std::vector<int> blown = bodies_.NonFiniteBodies();
@@ -351,6 +352,11 @@ Simulator::SubStep Simulator::TrySubStep(double* h, StepProgress* progress, bool
     progress->flags |= kStepRecovered;
     progress->corrections += stopped;
     return SubStep::kRetake;
+  }
+  // a robot whose joints came apart is put back and stopped (simulator_robots.cpp)
+  if (const int stopped = StopBrokenRobots(&progress->corrected_bodies)) {
+    progress->flags |= kStepCorrected;
+    progress->corrections += stopped;
   }
   contacts_.KeepForRollback();
   DetectContacts();

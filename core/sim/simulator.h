@@ -341,6 +341,9 @@ class Simulator {
   struct RobotScratch {
     VecX q, dq, forces;
     std::vector<ServoMotorCommand> motors;
+    std::vector<double> gaps, gaps_before;  ///< joint gaps now and at the sub-step's start
+    std::vector<Pose> frames;               ///< link frames, for the gaps
+    std::vector<char> known;                ///< links with a frame (not virtual)
   };
   struct RobotPlacement {  ///< where a robot is, to place it again after a rebuild
     VecX q, dq;
@@ -402,6 +405,11 @@ class Simulator {
   void AcceptRobotStep(double step);
   void CaptureRobotState(SimState* state, bool with_controllers) const;
   void RestoreRobotState(const SimState& state);
+  void RestoreOneRobot(int robot, const RobotSimState& state);
+  // robots in the step guard (robot_guard.h)
+  void MeasureJointGaps(int robot, std::vector<double>* gaps);
+  void MeasureRobotJointGapsBefore();
+  int StopBrokenRobots(std::vector<int>* ids);
   void RestoreControllers(const SimState& state);
   void RobotLinksChanged(int robot, unsigned changes);
   int RequireRobot(int robot) const;

@@ -11,6 +11,7 @@
 #include "core/sim/body_change.h"
 #include "core/sim/ode_conversions.h"
 #include "core/sim/ode_robot.h"
+#include "core/sim/robot_guard.h"
 #include "core/sim/simulator.h"
 
 namespace lamina::core {
@@ -184,15 +185,59 @@ void Simulator::CaptureRobotState(SimState* state, bool with_controllers) const 
 
 void Simulator::RestoreRobotState(const SimState& state) {
   for (int r = 0; r < robot_count() && r < static_cast<int>(state.robots.size()); ++r) {
-    const RobotSimState& robot_state = state.robots[r];
-    OdeRobot& robot = *robots_[r];
-    size_t next = 0;
-    for (int l = 0; l < robot.dof() && next < robot_state.bodies.size(); ++l) {
-      if (!robot.link(l).owns_body) continue;
-      WriteBodyState(robot.link(l).body, robot_state.bodies[next++]);
-    }
-    robot.RestoreJointState(robot_state.joints);
+    RestoreOneRobot(r, state.robots[r]);
   }
+}
+
+void Simulator::RestoreOneRobot(int robot, const RobotSimState& state) {
+  OdeRobot& sim_robot = *robots_[robot];
+  size_t next = 0;
+  for (int l = 0; l < sim_robot.dof() && next < state.bodies.size(); ++l) {
+    if (!sim_robot.link(l).owns_body) continue;
+    WriteBodyState(sim_robot.link(l).body, state.bodies[next++]);
+  }
+  sim_robot.RestoreJointState(state.joints);
+}
+
+// ---- robots in the step guard (robot_guard.h) --------------------------------------------
+
+// the gap of every joint of `robot` at the current state, m
+void Simulator::MeasureJointGaps(int robot, std::vector<double>* gaps) {
+  RobotScratch& scratch = robot_scratch_[robot];
+  const OdeRobot& sim_robot = *robots_[robot];
+  const int first = world_.RobotLinkId(robot, 0);
+  scratch.frames.resize(sim_robot.dof());
+  scratch.known.resize(sim_robot.dof());
+  for (int l = 0; l < sim_robot.dof(); ++l) {
+    scratch.known[l] = sim_robot.link(l).kind != OdeRobot::LinkKind::kVirtual;
+    scratch.frames[l] = bodies_.GetPose(bodies_[first + l]);
+  }
+  RobotJointGaps(world_.robots[robot], scratch.frames, scratch.known, gaps);
+}
+
+void Simulator::MeasureRobotJointGapsBefore() {
+  for (int r = 0; r < robot_count(); ++r) MeasureJointGaps(r, &robot_scratch_[r].gaps_before);
+}
+
+// after a tentative step: every robot whose joints came apart goes back to where the step
+// started, at rest; the number of its bodies stopped (their ids appended to `ids`)
+int Simulator::StopBrokenRobots(std::vector<int>* ids) {
+  int stopped = 0;
+  for (int r = 0; r < robot_count(); ++r) {
+    RobotScratch& scratch = robot_scratch_[r];
+    MeasureJointGaps(r, &scratch.gaps);
+    if (!RobotJointsBroke(world_.robots[r], scratch.gaps_before, scratch.gaps)) continue;
+    RestoreOneRobot(r, guard_.rollback_state().robots[r]);
+    robots_[r]->SetVelocity(VecX::Zero(robots_[r]->dof()));
+    RobotLinksChanged(r, kPoseChanged | kVelocityChanged);
+    const int first = world_.RobotLinkId(r, 0);
+    for (int l = 0; l < robots_[r]->dof(); ++l) {
+      if (!robots_[r]->link(l).owns_body) continue;
+      ++stopped;
+      ids->push_back(first + l);
+    }
+  }
+  return stopped;
 }
 
 void Simulator::RestoreControllers(const SimState& state) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "core/sim/step_guard.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <ode/ode.h>
@@ -10,6 +11,12 @@
 namespace lamina::core {
 
 namespace {
+
+bool BodyFinite(dBodyID body) {
+  return ToVec3(dBodyGetPosition(body)).allFinite() &&
+         ToVec3(dBodyGetLinearVel(body)).allFinite() &&
+         ToVec3(dBodyGetAngularVel(body)).allFinite();
+}
 
 std::pair<int, int> Key(const ContactPair& pair) {
   return {std::min(pair.a, pair.b), std::max(pair.a, pair.b)};
@@ -78,19 +85,27 @@ int StepGuard::StopOverflowingBodies(BodyTable* bodies, std::vector<int>* ids) {
   return stopped;
 }
 
-// per rigid object: non-finite after the step, or moving absurdly fast before it
-std::vector<bool> StepGuard::BlownUp(const BodyTable& bodies) const {
+// per body id: a rigid object non-finite after the step, or moving absurdly fast before it; every
+// link of a robot one of whose links is non-finite after the step (robot_guard.h)
+std::vector<char> StepGuard::BlownUp(const BodyTable& bodies) const {
+  std::vector<char> blown(bodies.size(), 0);
   const std::vector<int>& ids = bodies.object_ids();
-  std::vector<bool> blown(ids.size(), false);
   for (size_t i = 0; i < ids.size(); ++i) {
-    const dBodyID body = bodies[ids[i]].body;
-    const Vec3 p = ToVec3(dBodyGetPosition(body));
-    const Vec3 v = ToVec3(dBodyGetLinearVel(body));
-    const Vec3 w = ToVec3(dBodyGetAngularVel(body));
     const BodyState& start = rollback_state_.objects[i];
     const double speed_squared =
         start.linear_velocity.squaredNorm() + start.angular_velocity.squaredNorm();
-    blown[i] = !p.allFinite() || !v.allFinite() || !w.allFinite() || !std::isfinite(speed_squared);
+    blown[ids[i]] = !BodyFinite(bodies[ids[i]].body) || !std::isfinite(speed_squared);
+  }
+  std::vector<int> robots;  // robots with a non-finite link
+  for (const BodyRecord& body : bodies) {
+    if (body.kind == WorldId::Kind::kRobotLink && body.body && !BodyFinite(body.body)) {
+      robots.push_back(body.index);
+    }
+  }
+  for (int id = 0; id < bodies.size(); ++id) {
+    const BodyRecord& body = bodies[id];
+    if (body.kind != WorldId::Kind::kRobotLink || !body.body || !body.owns_body) continue;
+    if (std::find(robots.begin(), robots.end(), body.index) != robots.end()) blown[id] = 1;
   }
   return blown;
 }
@@ -137,19 +152,17 @@ void StepGuard::CollectSamples(BodyTable* bodies, const std::vector<ContactPair>
 int StepGuard::RecoverFromFailedStep(BodyTable* bodies,
                                      const std::function<void(const SimState&)>& restore,
                                      std::vector<int>* stopped_ids) {
-  const std::vector<bool> blown = BlownUp(*bodies);
+  const std::vector<char> blown = BlownUp(*bodies);
   restore(rollback_state_);
-  int stopped = 0;
-  for (bool b : blown) stopped += b ? 1 : 0;
+  const int stopped = static_cast<int>(std::count(blown.begin(), blown.end(), 1));
   if (stopped == 0 || !bodies->StateIsFinite()) return -1;
-  const std::vector<int>& ids = bodies->object_ids();
-  for (size_t i = 0; i < ids.size(); ++i) {
-    if (!blown[i]) continue;
-    BodyRecord& body = (*bodies)[ids[i]];
+  for (int id = 0; id < bodies->size(); ++id) {
+    if (!blown[id]) continue;
+    BodyRecord& body = (*bodies)[id];
     dBodySetLinearVel(body.body, 0, 0, 0);
     dBodySetAngularVel(body.body, 0, 0, 0);
     body.energy = 0.0;
-    if (stopped_ids) stopped_ids->push_back(ids[i]);
+    if (stopped_ids) stopped_ids->push_back(id);
   }
   return stopped;
 }

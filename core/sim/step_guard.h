@@ -14,7 +14,8 @@
 // applied forces, held wrenches and its contacts can supply (a body pushed by a kinematic body
 // or held by the mouse spring is left out); a body whose energy overflows a double is stopped
 // before ODE steps (ODE would fail inside its step); a step that leaves a state non-finite is
-// undone once with the culprits stopped.
+// undone once with the culprits stopped (a robot's culprit is the whole robot). Robots have a
+// check of their own, on their joints (robot_guard.h).
 #pragma once
 
 #include <functional>
@@ -61,8 +62,9 @@ class StepGuard {
   /// corrections appends the world ids of the bodies it slowed or stopped to `ids` (when given).
   static int StopOverflowingBodies(BodyTable* bodies, std::vector<int>* ids = nullptr);
   /// After a step that left a non-finite state: back to rollback_state() with the bodies that blew
-  /// up stopped (the number of them); -1 when nothing can be recovered (nothing blew up, or the
-  /// state before was not finite). `restore` restores a SimState.
+  /// up stopped (the number of them; every link of a robot one of whose links blew up, as
+  /// robot_guard.h says); -1 when nothing can be recovered (nothing blew up, or the state before
+  /// was not finite). `restore` restores a SimState.
   int RecoverFromFailedStep(BodyTable* bodies, const std::function<void(const SimState&)>& restore,
                             std::vector<int>* ids = nullptr);
   /// Checks the accepted step of length `step`: every rigid object over its energy allowance is
@@ -73,7 +75,7 @@ class StepGuard {
                            std::vector<int>* ids = nullptr);
 
  private:
-  std::vector<bool> BlownUp(const BodyTable& bodies) const;
+  std::vector<char> BlownUp(const BodyTable& bodies) const;
   void MarkPushed(const BodyTable& bodies, const std::vector<ContactPair>& before);
   void CollectSamples(BodyTable* bodies, const std::vector<ContactPair>& before,
                       const PairStiffness& stiffness, const Vec3& gravity, double step);

@@ -156,8 +156,9 @@ TEST(LiveEditTest, GainsAndFrictionEditedLiveSurviveResetAndReachTheSavedWorld) 
   EXPECT_EQ(loaded.world.robots[0].links[0].q_max, 0.9);
 }
 
-// an absurd torque on a robot joint (robots are outside the energy check) makes ODE fail inside
-// its step; ODE cannot be trusted after that, so the simulation stops
+// an absurd torque on a robot joint (1e200 N·m) makes ODE fail inside its step, before the robot
+// guard can put the robot back (core/sim/robot_guard.h); ODE cannot be trusted after that, so the
+// simulation stops
 TEST(LiveEditTest, ASimulationStoppedByAnErrorIsRevivedBySetStateResetAndRebuild) {
   const std::string gains = "servoP 50\nservoI 0\nservoD 5\n";
   core::Simulator simulator(Pendulum(gains));
