@@ -15,6 +15,7 @@
 #include "app/headless_batch.h"
 #include "app/headless_render_commands.h"
 #include "app/headless_sensors.h"
+#include "app/headless_stress.h"
 #include "core/control/send_motion.h"
 #include "core/io/trajectory_file.h"
 #include "core/io/world_file.h"
@@ -360,12 +361,14 @@ int main(int argc, char** argv) {
   const lamina::app::Subcommand record = lamina::app::AddRecordCommand(app);
   const lamina::app::Subcommand batch = lamina::app::AddBatchCommand(app);
   const lamina::app::Subcommand accuracy = lamina::app::AddAccuracyCommand(app);
+  const lamina::app::Subcommand stress = lamina::app::AddStressCommand(app);
 
   CLI11_PARSE(app, argc, argv);
   if (shot.command->parsed()) return shot.run();
   if (record.command->parsed()) return record.run();
   if (batch.command->parsed()) return batch.run();
   if (accuracy.command->parsed()) return accuracy.run();
+  if (stress.command->parsed()) return stress.run();
   if (info->parsed()) return RunInfo(info_world, info_json, info_sets);
   if (run->parsed()) return RunSimulation(run_options);
   return 2;
