@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
-// ATHLETE dropped on fractal terrain (athlete_fractal_1.xml) with dWorldStep and with
-// dWorldQuickStep (20 iterations): every iteration simulates 5 s from the start on a fresh
-// simulator; the counters give the real-time factor, the time split and how far the base moved
-// over the last 2 s (the bar: < 1 cm, Klamp't creeps downhill). An iteration whose base
-// moves more than that fails the benchmark.
+// Robots standing on their own: ATHLETE dropped on fractal terrain (athlete_fractal_1.xml) and
+// the HRP-2 humanoid on a plane (hrp2_plane.xml, 30 hinges with joint friction, its servos holding
+// the zero pose), each with dWorldStep and with dWorldQuickStep (20 iterations): every iteration
+// simulates 5 s from the start on a fresh simulator; the counters give the real-time factor, the
+// time split and how far the base moved over the last 2 s (the bar: < 1 cm; Klamp't's ATHLETE
+// creeps downhill). An iteration whose base moves more than that fails the benchmark.
 #include "tests/bench/robot_bench.h"
 
 #include <memory>
@@ -26,8 +27,8 @@ struct SolverCase {
   core::SolverSettings settings;
 };
 
-void RunAthlete(benchmark::State& state, const core::WorldDesc& world,
-                const core::SolverSettings& solver) {
+void RunStanding(benchmark::State& state, const core::WorldDesc& world,
+                 const core::SolverSettings& solver) {
   LaminaTotals totals;
   double worst_drift = 0.0;
   for (auto _ : state) {
@@ -57,16 +58,14 @@ void RunAthlete(benchmark::State& state, const core::WorldDesc& world,
   }
 }
 
-}  // namespace
-
-void RegisterRobotBenchmarks() {
+void RegisterStanding(const std::string& world_name) {
   auto world = std::make_shared<core::WorldDesc>();
   std::string errors;
-  const bool loaded = LoadWorld(WorldsPath("klampt/athlete_fractal_1.xml"), world.get(), &errors);
+  const bool loaded = LoadWorld(WorldsPath("klampt/" + world_name + ".xml"), world.get(), &errors);
   const SolverCase solvers[] = {{"step", {core::SolverType::kStep, 20}},
                                 {"quick20", {core::SolverType::kQuickStep, 20}}};
   for (const SolverCase& solver : solvers) {
-    const std::string name = std::string("Robot/athlete_fractal_1/") + solver.name;
+    const std::string name = "Robot/" + world_name + "/" + solver.name;
     const core::SolverSettings settings = solver.settings;
     benchmark::RegisterBenchmark(name.c_str(),
                                  [world, settings, loaded, errors](benchmark::State& state) {
@@ -74,11 +73,18 @@ void RegisterRobotBenchmarks() {
                                      Fail(state, "cannot load the world: " + errors);
                                      return;
                                    }
-                                   RunAthlete(state, *world, settings);
+                                   RunStanding(state, *world, settings);
                                  })
         ->Unit(benchmark::kMillisecond)
         ->Iterations(1);
   }
+}
+
+}  // namespace
+
+void RegisterRobotBenchmarks() {
+  RegisterStanding("athlete_fractal_1");
+  RegisterStanding("hrp2_plane");
 }
 
 }  // namespace lamina::bench
