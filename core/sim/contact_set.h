@@ -48,7 +48,8 @@ inline constexpr double kMergeFraction = 0.05;
 inline constexpr double kMinimumMergeRadius = 1e-4;
 
 /// The contacts of bodies `first` and `second` (a is the one that moves): collided within their
-/// paddings, coincident points merged, clustered to `max_contacts`. False (and `pair` untouched)
+/// paddings, coincident points merged, a flat patch reduced to its outline's corners
+/// (contact_reduction.h), clustered to `max_contacts`. False (and `pair` untouched)
 /// when they do not touch. `scratch` is reused storage; times go to `timing`.
 bool FindPairContacts(int first, int second, const NarrowBody& body_first,
                       const NarrowBody& body_second, int max_contacts, ContactList* scratch,
