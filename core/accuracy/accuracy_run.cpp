@@ -8,19 +8,12 @@
 #include <stdexcept>
 #include <thread>
 
-#include <time.h>
-
+#include "core/accuracy/probe_support.h"
 #include "core/io/world_file.h"
 #include "core/sim/simulator.h"
 
 namespace lamina::core {
 namespace {
-
-double ThreadCpuSeconds() {
-  timespec now{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
 
 void ApplySolver(const AccuracySolver& solver, double step, WorldDesc* world) {
   world->settings.timestep = step;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <time.h>
+
 #include "core/sim/simulator.h"
 
 namespace lamina::core {
@@ -23,6 +25,12 @@ Vec3 ObjectAngularMomentum(const Simulator& simulator, int object) {
   const Mat3 rotation = simulator.GetObjectPose(object).linear();
   const Mat3 inertia = simulator.world().objects.at(object).inertia;
   return rotation * inertia * rotation.transpose() * simulator.GetObjectVelocity(object).angular;
+}
+
+double ThreadCpuSeconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
 }
 
 double RunMetric(const AccuracyRun& run, const std::string& name) {

@@ -20,6 +20,8 @@ Vec3 ObjectComVelocity(const Simulator& simulator, int object);
 /// Angular momentum about the centre of mass (kg·m²/s, world): R I Rᵀ ω.
 Vec3 ObjectAngularMomentum(const Simulator& simulator, int object);
 
+/// CPU time of the calling thread (s): what the sweeps time a run by.
+double ThreadCpuSeconds();
 /// The value of metric `name` of a run; NaN when the run has none.
 double RunMetric(const AccuracyRun& run, const std::string& name);
 /// The slope of log(error) against log(step) through two runs (NaN when either error is 0 or a

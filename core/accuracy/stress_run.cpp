@@ -7,20 +7,12 @@
 #include <mutex>
 #include <thread>
 
-#include <time.h>
-
 #include "core/accuracy/probe_support.h"
 #include "core/io/world_file.h"
 #include "core/sim/simulator.h"
 
 namespace lamina::core {
 namespace {
-
-double ThreadCpuSeconds() {
-  timespec now{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
 
 void ApplySolver(const StressCase& c, WorldDesc* world) {
   world->settings.timestep = c.step;

@@ -318,9 +318,9 @@ TEST(MergeCoincidentContactsTest, FarAndNonFiniteInputsMatchTheScan) {
   for (std::size_t i = 0; i < broken.size(); ++i) EXPECT_EQ(broken[i].depth, expected[i].depth);
 }
 
-
 // Survivors far apart, each exactly on a corner of the grid's cells so that it enters 8 of them:
-// the table holds 8 entries per survivor (it once filled up and looped forever), and nothing merges.
+// the table holds 8 entries per survivor (it once filled up and looped forever), and nothing
+// merges.
 TEST(MergeCoincidentContactsTest, SparseSurvivorsOnCellCornersAllStay) {
   const double radius = 0.01;
   ContactList contacts;
