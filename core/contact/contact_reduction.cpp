@@ -23,17 +23,26 @@ struct PlanarPatch {
   double extent = 0.0;       ///< the diagonal of the points' bounding box (m)
 };
 
+// One normal for all, and finite positions: checked before anything is built (a curved patch,
+// the common case, leaves here).
+bool OneNormal(const ContactList& contacts) {
+  const Vec3& n = contacts[0].normal;
+  if (!n.allFinite()) return false;
+  const double same_normal = std::cos(kFlatPatchAngle);
+  return std::all_of(contacts.begin(), contacts.end(), [&](const Contact& c) {
+    return c.normal.dot(n) >= same_normal && c.position.allFinite();
+  });
+}
+
 bool Flatten(const ContactList& contacts, PlanarPatch* patch) {
+  if (!OneNormal(contacts)) return false;
   const Vec3& n = contacts[0].normal;
   const Vec3& origin = contacts[0].position;
-  if (!n.allFinite() || !origin.allFinite()) return false;
   const Vec3 t1 = n.unitOrthogonal();
   const Vec3 t2 = n.cross(t1);
-  const double same_normal = std::cos(kFlatPatchAngle);
   Eigen::AlignedBox2d box;
   patch->points.clear();
   for (const Contact& c : contacts) {
-    if (!(c.normal.dot(n) >= same_normal) || !c.position.allFinite()) return false;
     const Vec3 d = c.position - origin;
     patch->points.emplace_back(t1.dot(d), t2.dot(d));
     box.extend(patch->points.back());
@@ -154,19 +163,15 @@ bool ReduceFlatPatch(double floor, ContactList* contacts) {
     share.assign(corners.size(), 1.0);
     sum = static_cast<double>(corners.size());
   }
-  ContactList reduced;
+  // a zero weight would read as "unset" (depth²): a corner always keeps a sliver
   for (std::size_t i = 0; i < corners.size(); ++i) {
-    Contact corner = (*contacts)[corners[i]];
-    // a zero weight would read as "unset" (depth²): a corner always keeps a sliver
-    corner.weight = std::max(total * share[i] / sum, total * 1e-12);
-    reduced.push_back(corner);
+    (*contacts)[corners[i]].weight = std::max(total * share[i] / sum, total * 1e-12);
   }
-  std::vector<int> order(corners.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-  std::sort(order.begin(), order.end(),
-            [&corners](int a, int b) { return corners[a] < corners[b]; });
-  contacts->clear();
-  for (const int i : order) contacts->push_back(reduced[i]);
+  // the corners, in their input order, move to the front (corners[i] >= i: nothing is overwritten
+  // before it is read)
+  std::sort(corners.begin(), corners.end());
+  for (std::size_t i = 0; i < corners.size(); ++i) (*contacts)[i] = (*contacts)[corners[i]];
+  contacts->resize(corners.size());
   return true;
 }
 
