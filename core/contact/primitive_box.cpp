@@ -276,34 +276,80 @@ bool EdgeContact(const PlacedPrimitive& a, const PlacedPrimitive& b, const Separ
   return true;
 }
 
+/// A lower bound (m) on the signed distance from segment p0 p1 to `box` (distance is negative
+/// inside): along each box axis no point of the segment is nearer the slab than the segment's
+/// least |coordinate|, and a point's signed distance is at least its largest excess over the
+/// half sizes (outside: the Euclidean distance is at least any one axis's; inside: the nearest
+/// face's excess).
+double SegmentBoxLowerBound(const Vec3& p0_W, const Vec3& p1_W, const PlacedPrimitive& box) {
+  const Mat3 R_SW = box.X_WS.linear().transpose();
+  const Vec3 p0 = R_SW * (p0_W - box.Center());
+  const Vec3 p1 = R_SW * (p1_W - box.Center());
+  const Vec3 half = box.HalfSize();
+  double bound = -kInf;
+  for (int k = 0; k < 3; ++k) {
+    const double least = p0[k] * p1[k] <= 0.0 ? 0.0 : std::min(std::abs(p0[k]), std::abs(p1[k]));
+    bound = std::max(bound, least - half[k]);
+  }
+  return bound;
+}
+
+/// An edge of one box against the other (the solid): which box carries it, its index, its ends
+/// and a lower bound on its distance to the solid.
+struct EdgeCandidate {
+  bool on_a = true;
+  int edge = 0;
+  Vec3 start = Vec3::Zero();
+  Vec3 end = Vec3::Zero();
+  double bound = 0.0;  ///< m
+};
+
+/// The 24 edges of both boxes in the order a's 0..11, b's 0..11, each with its bound.
+std::array<EdgeCandidate, 24> EdgeCandidates(const PlacedPrimitive& a, const PlacedPrimitive& b) {
+  std::array<EdgeCandidate, 24> candidates;
+  for (int i = 0; i < 24; ++i) {
+    EdgeCandidate& candidate = candidates[i];
+    candidate.on_a = i < 12;
+    candidate.edge = i % 12;
+    (candidate.on_a ? a : b).BoxEdge(candidate.edge, &candidate.start, &candidate.end);
+    candidate.bound = SegmentBoxLowerBound(candidate.start, candidate.end, candidate.on_a ? b : a);
+  }
+  return candidates;
+}
+
 /// One contact at the nearest point of any edge of either box to the other box, if nearer than
-/// `below` (m).
+/// `below` (m). The edges are searched in the order of their lower bounds and an edge whose bound
+/// exceeds the best distance found (or `below`) by more than rounding is left out: it cannot be
+/// nearer. Ties go to the earlier edge (a's before b's), as a search over all edges in order.
 void NearestEdgeContact(const PlacedPrimitive& a, const PlacedPrimitive& b, double below,
                         ContactSink* sink) {
+  // far above the rounding of a bound or a distance at robot scales, far below any layer
+  constexpr double kBoundSlack = 1e-9;
+  std::array<EdgeCandidate, 24> candidates = EdgeCandidates(a, b);
+  std::array<int, 24> order;
+  for (int i = 0; i < 24; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&candidates](int i, int j) { return candidates[i].bound < candidates[j].bound; });
   SegmentNearest best;
   best.closest.distance = kInf;
-  bool best_on_a = true;
-  int best_edge = 0;
-  for (int side = 0; side < 2; ++side) {
-    const PlacedPrimitive& edges = side == 0 ? a : b;
-    const PlacedPrimitive& solid = side == 0 ? b : a;
-    for (int edge = 0; edge < 12; ++edge) {
-      Vec3 start;
-      Vec3 end;
-      edges.BoxEdge(edge, &start, &end);
-      const SegmentNearest nearest = NearestOnSegment(start, end, solid);
-      if (nearest.closest.distance < best.closest.distance) {
-        best = nearest;
-        best_on_a = side == 0;
-        best_edge = edge;
-      }
+  int best_index = -1;
+  for (const int i : order) {
+    const EdgeCandidate& candidate = candidates[i];
+    if (candidate.bound - kBoundSlack > std::min(best.closest.distance, below)) break;
+    const SegmentNearest nearest =
+        NearestOnSegment(candidate.start, candidate.end, candidate.on_a ? b : a);
+    if (nearest.closest.distance < best.closest.distance ||
+        (nearest.closest.distance == best.closest.distance && i < best_index)) {
+      best = nearest;
+      best_index = i;
     }
   }
-  if (!(best.closest.distance < below)) return;
-  const PlacedPrimitive& edge_box = best_on_a ? a : b;
-  const PlacedPrimitive& solid = best_on_a ? b : a;
-  sink->AddBall(best_on_a, best.point, 0.0,
-                QueryPoint(solid, best.point, EdgeOutward(edge_box, best_edge, best.point)));
+  if (best_index < 0 || !(best.closest.distance < below)) return;
+  const EdgeCandidate& edge = candidates[best_index];
+  const PlacedPrimitive& edge_box = edge.on_a ? a : b;
+  const PlacedPrimitive& solid = edge.on_a ? b : a;
+  sink->AddBall(edge.on_a, best.point, 0.0,
+                QueryPoint(solid, best.point, EdgeOutward(edge_box, edge.edge, best.point)));
 }
 
 }  // namespace

@@ -225,12 +225,36 @@ Vec3 EdgeOutward(const PlacedPrimitive& box, int index, const Vec3& p_W) {
   return offset - along.dot(offset) * along;
 }
 
+namespace {
+
+/// QueryBox's distance alone (outward zero: the nearest face inside), for the minimiser.
+double BoxDistance(const Vec3& half, const Vec3& p) {
+  const Vec3 excess = p.cwiseAbs() - half;
+  int outside_axes = 0;
+  for (int i = 0; i < 3; ++i) outside_axes += excess[i] > kOnSurface ? 1 : 0;
+  return outside_axes > 1 ? excess.cwiseMax(0.0).norm() : excess.maxCoeff();
+}
+
+/// Argument in [0, 1] of the least signed distance along p0 p1 to `shape`. A box is searched in
+/// its own frame (the segment transformed once: the search's 66 distances are its cost).
+double SegmentMinimum(const Vec3& p0_W, const Vec3& p1_W, const PlacedPrimitive& shape) {
+  if (shape.shape->type == PrimitiveType::kBox) {
+    const Mat3 R_SW = shape.X_WS.linear().transpose();
+    const Vec3 p0 = R_SW * (p0_W - shape.X_WS.translation());
+    const Vec3 p1 = R_SW * (p1_W - shape.X_WS.translation());
+    const Vec3 half = 0.5 * shape.shape->size;
+    return MinimizeUnimodal([&](double t) { return BoxDistance(half, p0 + t * (p1 - p0)); }, 0.0,
+                            1.0);
+  }
+  return MinimizeUnimodal(
+      [&](double t) { return QueryPoint(shape, p0_W + t * (p1_W - p0_W)).distance; }, 0.0, 1.0);
+}
+
+}  // namespace
+
 SegmentNearest NearestOnSegment(const Vec3& p0_W, const Vec3& p1_W, const PlacedPrimitive& shape) {
-  const auto distance_at = [&](double t) {
-    return QueryPoint(shape, p0_W + t * (p1_W - p0_W)).distance;
-  };
   SegmentNearest nearest;
-  nearest.t = MinimizeUnimodal(distance_at, 0.0, 1.0);
+  nearest.t = SegmentMinimum(p0_W, p1_W, shape);
   nearest.point = p0_W + nearest.t * (p1_W - p0_W);
   nearest.closest = QueryPoint(shape, nearest.point);
   return nearest;

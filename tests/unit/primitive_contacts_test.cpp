@@ -941,6 +941,36 @@ TEST(PrimitiveContactsTest, NearlyAlignedStackedBoxesGiveJustTheOverlapCorners) 
   }
 }
 
+TEST(PrimitiveContactsTest, OverhangingTiltedStackedBoxesFindTheTrueSeparation) {
+  // a jostled stack (QuickStep's): the box above shifted past the edge of the one below by up to
+  // 2 cm and tilted by up to 1e-2 rad, so that its lowest corner overhangs and the nearest points
+  // lie on edges (the search over edges skips those its lower bound rules out: it must still find
+  // the nearest)
+  const double side = 0.1;
+  const Primitive box = Primitive::Box(Vec3::Constant(side));
+  Random random(13);
+  constexpr double kDistanceTolerance = 1e-7;
+  for (const double tilt : {1e-2, 1e-4}) {
+    for (int trial = 0; trial < kRandomTrials; ++trial) {
+      SCOPED_TRACE(testing::Message() << "tilt " << tilt << " trial " << trial);
+      const StackedBox stacked = RandomStackedBox(side, 1e-2, 0.02, tilt, &random);
+      const ContactList contacts = Contacts(box, stacked.X_Wa, box, Pose::Identity());
+      ExpectWellFormedAndSymmetric(contacts, Contacts(box, Pose::Identity(), box, stacked.X_Wa));
+      const Contact* deepest = Deepest(contacts);
+      // the oracle (a lower bound of the distance) started from the deepest normal of a wide layer
+      const ContactList wide_contacts =
+          Contacts(box, stacked.X_Wa, box, Pose::Identity(), 0.05, 0.05);
+      const Contact* wide = Deepest(wide_contacts);
+      const double distance = OracleSignedDistance(box, stacked.X_Wa, box, Pose::Identity(),
+                                                   wide != nullptr ? wide->normal : Vec3::UnitZ());
+      if (distance > 0.0 && distance < kTol - kDistanceTolerance) {
+        ASSERT_NE(deepest, nullptr) << "distance " << distance;
+        EXPECT_NEAR(deepest->depth, kTol - distance, kDistanceTolerance);
+      }
+    }
+  }
+}
+
 TEST(PrimitiveContactsTest, PlanePlaneIsUnsupported) {
   ContactList contacts;
   EXPECT_FALSE(
