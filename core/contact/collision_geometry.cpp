@@ -273,7 +273,11 @@ constexpr double kBoundsSlack = 1e-9;
 // Meshes this small against each other test every triangle pair (bounds first): cheaper than
 // traversing two hierarchies whose volumes nearly all overlap when small meshes touch.
 constexpr long kEveryPairLimit = 4096;
-// A mesh this small is bounded as a whole and run through the other mesh's hierarchy.
+// Up to this many pairs every pair is tested whatever the meshes' sizes (two 12-triangle cubes).
+constexpr long kEveryPairAlways = 256;
+// A mesh this small is bounded as a whole and run through the other mesh's hierarchy, before
+// every pair is tried: a two-triangle floor under a 724-triangle wheel (ATHLETE) keeps only the
+// wheel's triangles near the floor's slab instead of testing all 1448 pairs.
 constexpr int kSmallMeshTriangles = 64;
 
 // A triangle of b in a's frame with its bounds and plane there.
@@ -514,9 +518,13 @@ void NearTrianglePairs(const MeshBvh& a, const MeshBvh& b, const Pose& X_ab, dou
   const int fewer = std::min(a.model.num_tris, b.model.num_tris);
   switch (search) {
     case PairSearch::kAuto:
+      if (pairs > kEveryPairAlways && fewer <= kSmallMeshTriangles &&
+          finder.SmallerInLarger(kEveryPairLimit / fewer)) {
+        break;
+      }
       if (pairs <= kEveryPairLimit) {
         finder.EveryPair();
-      } else if (fewer > kSmallMeshTriangles || !finder.SmallerInLarger(kEveryPairLimit / fewer)) {
+      } else {
         finder.BothHierarchies();
       }
       break;
