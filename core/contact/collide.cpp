@@ -23,8 +23,9 @@ void CollideSwapped(Function collide, ContactList* out) {
 
 void Collide(const CollisionGeometry& a, const Pose& X_Wa, double pad_a, const CollisionGeometry& b,
              const Pose& X_Wb, double pad_b, ContactList* out) {
-  const double padding_a = pad_a + a.margin();
-  const double padding_b = pad_b + b.margin();
+  // the layer-edge slack split evenly: the contacts' midpoints do not move
+  const double padding_a = pad_a + a.margin() + 0.5 * kLayerEdgeSlack;
+  const double padding_b = pad_b + b.margin() + 0.5 * kLayerEdgeSlack;
   using Kind = CollisionGeometry::Kind;
   if (a.kind() == Kind::kPointCloud) {
     PointCloudContacts(a, X_Wa, padding_a, b, X_Wb, padding_b, out);

@@ -78,7 +78,8 @@ class CollisionGeometryCache {
 };
 
 /// Every contact between a (at pose X_Wa, padding pad_a) and b (X_Wb, pad_b), appended to
-/// `out`. Paddings include nothing else: the geometries' own margins are added inside.
+/// `out`. Paddings include nothing else: the geometries' own margins are added inside, and
+/// half of kLayerEdgeSlack to each (contact.h).
 /// Deterministic: the same inputs give the same contacts in the same order. A point cloud's
 /// points are balls of its padding (point_cloud_contacts.h).
 void Collide(const CollisionGeometry& a, const Pose& X_Wa, double pad_a, const CollisionGeometry& b,

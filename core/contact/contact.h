@@ -10,6 +10,17 @@
 
 namespace lamina::core {
 
+/// How far beyond the sum of the paddings two geometries still count as in contact (m): Collide
+/// grows each padding by half of it, so depths are the layers' overlap plus this. A body placed
+/// exactly on the layer (a box stacked at padding distance, as worlds are written) has a distance
+/// equal to the paddings' sum up to rounding; without the slack half of such pairs fall outside and
+/// the body free-falls for a step (g h^2: 1 mm at 10 ms), and a stack of offset boxes set rattling
+/// this way never settles. The depth keeps the slack rather than being clamped at 0: contacts at
+/// depth exactly 0 between bodies falling together give ODE's Dantzig LCP rows with a zero
+/// right-hand side, on which it lets a 4-box stack fall through its layers. Far below anything
+/// physical, far above the rounding of positions up to 1e6 m.
+inline constexpr double kLayerEdgeSlack = 1e-9;
+
 /// One contact between body a and body b.
 struct Contact {
   Vec3 position = Vec3::Zero();  ///< world, midway between the two padded surfaces (m)

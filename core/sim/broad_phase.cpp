@@ -14,7 +14,8 @@ Eigen::AlignedBox3d WorldBounds(const CollisionGeometry& geometry, const Pose& p
   for (int corner = 0; corner < 8; ++corner) {
     world.extend(pose * local.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner)));
   }
-  const double grow = padding + geometry.margin();
+  // as Collide pads: a pair at the layer's edge is still a candidate
+  const double grow = padding + geometry.margin() + 0.5 * kLayerEdgeSlack;
   world.min().array() -= grow;
   world.max().array() += grow;
   return world;

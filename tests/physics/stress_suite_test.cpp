@@ -36,8 +36,11 @@ void ExpectContactNumbers(const Records& records) {
   EXPECT_EQ(records.at("mass_ratio_1000/quick20/1ms").lost.size(), 1u);  // the light box
   EXPECT_LT(metric("mesh_jitter/exact/1ms"), 1e-6);                      // m/s; measured 1.3e-15
   EXPECT_LT(metric("mesh_jitter/exact/10ms"), 1e-6);
-  // the offset stack creeps (docs/stress.md: 2.0 mm in 2 s at 1 ms); the rigid answer is 0
-  EXPECT_LT(metric("box_stack_20/exact/1ms"), 0.005);
+  // the offset stack stands still (the rigid answer is 0; measured 1.9e-8 m at 1 ms, 1.6e-8 m at
+  // 10 ms: the settle into the layers). It crept by 2 mm in 2 s (8 cm at 10 ms) while the boxes
+  // written at padding distance free-fell for their first step (core/contact/contact.h)
+  EXPECT_LT(metric("box_stack_20/exact/1ms"), 1e-6);
+  EXPECT_LT(metric("box_stack_20/exact/10ms"), 1e-6);
 }
 
 void ExpectImpactNumbers(const Records& records) {

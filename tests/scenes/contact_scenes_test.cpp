@@ -166,8 +166,9 @@ TEST(DeterminismTest, SetStateRestoresFrictionAnchors) {
   replay.SetState(forgotten);
   replay.Simulate(0.5);
   EXPECT_NE(replay.GetState().objects, end.objects);
-  // static friction holds the box: it moved less than a micrometre along the slope
-  EXPECT_LT(std::abs(end.objects[0].com_position.x() - middle.objects[0].com_position.x()), 1e-6);
+  // static friction holds the box: three iterations leave it jittering by a few micrometres about
+  // its anchor, it does not creep down the slope
+  EXPECT_LT(std::abs(end.objects[0].com_position.x() - middle.objects[0].com_position.x()), 2e-5);
 }
 
 }  // namespace

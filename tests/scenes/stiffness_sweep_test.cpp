@@ -85,8 +85,9 @@ SweepRun Run(const SweepCase& c) {
   run.error = simulator.statistics().error;
   run.final_speed = simulator.GetObjectVelocity(0).linear.norm();
   // the gap between the underlying geometry and the plane is z - half; the layer overlap is
-  // the padding sum minus that gap
-  run.final_depth = kPadding - (simulator.GetObjectPose(0).translation().z() - half);
+  // the padding sum (with the layer-edge nanometre, core/contact/contact.h) minus that gap
+  run.final_depth =
+      kPadding + core::kLayerEdgeSlack - (simulator.GetObjectPose(0).translation().z() - half);
   return run;
 }
 

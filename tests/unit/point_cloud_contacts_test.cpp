@@ -76,11 +76,12 @@ const Contact& Near(const ContactList& contacts, const Vec3& near) {
 }
 
 // The contact of a point p of body a at signed distance d from b's surface along the unit
-// normal n (from b into a): depth tol - d, midway between p's ball and b's padded surface.
+// normal n (from b into a): depth tol - d (Collide adds the layer-edge nanometre), midway between
+// p's ball and b's padded surface.
 void ExpectBallContact(const Contact& c, const Vec3& p, double d, const Vec3& n, double pad_a,
                        double pad_b) {
   const Vec3 on_b = p - d * n;  // b's surface point
-  EXPECT_NEAR(c.depth, pad_a + pad_b - d, kExact);
+  EXPECT_NEAR(c.depth, pad_a + pad_b + core::kLayerEdgeSlack - d, kExact);
   EXPECT_LT((c.normal - n).norm(), kExact) << c.normal.transpose();
   EXPECT_LT((c.position - 0.5 * ((p - pad_a * n) + (on_b + pad_b * n))).norm(), kExact);
   EXPECT_EQ(c.penetrating, d < 0.0);
@@ -101,8 +102,9 @@ TEST(PointCloudContactsTest, PointsAgainstASphereHaveTheAnalyticDepth) {
     ExpectBallContact(Near(contacts, p), p, p.norm() - radius, p.normalized(), pad_a, pad_b);
   }
   // the depths: 3.5 - 2 = 1.5 mm, 3.5 - 3 = 0.5 mm, and 3.5 mm + 0.5 - 0.3 sqrt(2) inside
-  EXPECT_NEAR(Near(contacts, Vec3(0.502, 0, 0)).depth, 0.0015, kExact);
-  EXPECT_NEAR(Near(contacts, Vec3(0, 0.3, 0.3)).depth, 0.0035 + 0.5 - 0.3 * std::sqrt(2.0), kExact);
+  EXPECT_NEAR(Near(contacts, Vec3(0.502, 0, 0)).depth, 0.0015 + core::kLayerEdgeSlack, kExact);
+  EXPECT_NEAR(Near(contacts, Vec3(0, 0.3, 0.3)).depth,
+              0.0035 + core::kLayerEdgeSlack + 0.5 - 0.3 * std::sqrt(2.0), kExact);
 }
 
 TEST(PointCloudContactsTest, ASwappedPairGivesTheSameContactsWithNormalsTurned) {
