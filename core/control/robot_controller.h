@@ -40,6 +40,8 @@ struct ServoMotorCommand {
   /// The driver's viscous friction is part of this motor's damping (added to kD in cfm): it
   /// is then not applied again as joint friction.
   bool includes_viscous = false;
+  /// The simulator solves the row without its bound this step (core/sim/servo_bounds.h).
+  bool unbounded = false;
 };
 
 /// Default control period (s) when the robot has no `controller` property with a rate.

@@ -488,7 +488,7 @@ void OdeRobot::SetServos(const std::vector<ServoMotorCommand>& motors) {
     if (motor.link < 0 || motor.link >= dof()) continue;
     const dJointID servo = links_[motor.link].servo;
     if (servo == nullptr || !(motor.fmax > 0.0)) continue;
-    const double fmax = std::isfinite(motor.fmax) ? motor.fmax : dInfinity;
+    const double fmax = std::isfinite(motor.fmax) && !motor.unbounded ? motor.fmax : dInfinity;
     if (dJointGetType(servo) == dJointTypeAMotor) {
       dJointSetAMotorParam(servo, dParamVel, motor.velocity);
       dJointSetAMotorParam(servo, dParamCFM, motor.cfm);

@@ -68,7 +68,8 @@ class OdeRobot {
   /// Adds the generalized force of every link (N·m on hinges, N on sliders, along the virtual
   /// axes of a floating base) for the coming ODE step.
   void ApplyLinkForces(const VecX& forces);
-  /// Implicit PD motors: every servo off, then the given ones on for the coming step.
+  /// Implicit PD motors: every servo off, then the given ones on for the coming step (bounded by
+  /// their fmax unless `unbounded`).
   void SetServos(const std::vector<ServoMotorCommand>& motors);
   /// Joint friction motors: each driven link resists motion with up to dry + viscous·|dq|.
   void SetJointFriction(const std::vector<DriverDesc>& drivers, const VecX& q, const VecX& dq,

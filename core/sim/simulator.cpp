@@ -353,6 +353,11 @@ Simulator::SubStep Simulator::TrySubStep(double* h, StepProgress* progress, bool
     progress->corrections += stopped;
     return SubStep::kRetake;
   }
+  // a servo row solved without its bound that went over it: bounded, the sub-step is retaken
+  if (BoundOverrunServos()) {
+    RestoreState(guard_.rollback_state());
+    return SubStep::kRetake;
+  }
   // a robot whose joints came apart is put back and stopped (simulator_robots.cpp)
   if (const int stopped = StopBrokenRobots(&progress->corrected_bodies)) {
     progress->flags |= kStepCorrected;

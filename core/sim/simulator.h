@@ -341,6 +341,8 @@ class Simulator {
   struct RobotScratch {
     VecX q, dq, forces;
     std::vector<ServoMotorCommand> motors;
+    VecX rates_after;                       ///< joint rates after a tentative step (servo check)
+    std::vector<char> keep_bound;           ///< per link: its servo row stays bounded this sub-step
     std::vector<double> gaps, gaps_before;  ///< joint gaps now and at the sub-step's start
     std::vector<Pose> frames;               ///< link frames, for the gaps
     std::vector<char> known;                ///< links with a frame (not virtual)
@@ -402,6 +404,8 @@ class Simulator {
   // robots (simulator_robots.cpp)
   void RunControllers(double step);
   void PrepareRobotsForStep(double step);
+  void MarkUnboundedServos(RobotScratch* scratch);
+  bool BoundOverrunServos();
   void AcceptRobotStep(double step);
   void CaptureRobotState(SimState* state, bool with_controllers) const;
   void RestoreRobotState(const SimState& state);

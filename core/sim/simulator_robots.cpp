@@ -12,6 +12,7 @@
 #include "core/sim/ode_conversions.h"
 #include "core/sim/ode_robot.h"
 #include "core/sim/robot_guard.h"
+#include "core/sim/servo_bounds.h"
 #include "core/sim/simulator.h"
 
 namespace lamina::core {
@@ -144,6 +145,7 @@ void Simulator::PrepareRobotsForStep(double step) {
     if (world_.settings.solver == SolverType::kStep) {
       controllers_[r].ComputeImplicitServo(scratch.q, scratch.dq, step, &scratch.forces,
                                            &scratch.motors);
+      MarkUnboundedServos(&scratch);
     } else {
       // QuickStep's iterations converge stiff servo rows on light chains too slowly (ATHLETE
       // creeps 60 mm in 2 s with implicit servos, 16 mm with the explicit law): explicit there
@@ -156,8 +158,39 @@ void Simulator::PrepareRobotsForStep(double step) {
   }
 }
 
+// the servo rows whose force at the current rate is well inside their limit go unbounded, but
+// for those an earlier try of this sub-step found over it (servo_bounds.h)
+void Simulator::MarkUnboundedServos(RobotScratch* scratch) {
+  scratch->keep_bound.resize(scratch->dq.size(), 0);
+  for (ServoMotorCommand& motor : scratch->motors) {
+    motor.unbounded = motor.link >= 0 && motor.link < scratch->dq.size() &&
+                      !scratch->keep_bound[motor.link] &&
+                      ServoMayGoUnbounded(motor, scratch->dq[motor.link]);
+  }
+}
+
+// After an ODE step: whether an unbounded servo row applied more than its limit. Those rows are
+// marked to stay bounded when the sub-step is retaken.
+bool Simulator::BoundOverrunServos() {
+  bool overrun = false;
+  for (int r = 0; r < robot_count(); ++r) {
+    RobotScratch& scratch = robot_scratch_[r];
+    bool read = false;
+    for (const ServoMotorCommand& motor : scratch.motors) {
+      if (!motor.unbounded) continue;
+      if (!read) robots_[r]->GetVelocity(&scratch.rates_after);
+      read = true;
+      if (ServoForceWithinBound(motor, scratch.rates_after[motor.link])) continue;
+      scratch.keep_bound[motor.link] = 1;
+      overrun = true;
+    }
+  }
+  return overrun;
+}
+
 void Simulator::AcceptRobotStep(double step) {
   for (int r = 0; r < robot_count(); ++r) {
+    std::fill(robot_scratch_[r].keep_bound.begin(), robot_scratch_[r].keep_bound.end(), 0);
     robots_[r]->AcceptStep();
     RecordSensorStep(r);
     RobotScratch& scratch = robot_scratch_[r];

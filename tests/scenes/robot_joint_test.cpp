@@ -18,6 +18,7 @@
 namespace lamina {
 namespace {
 
+using core::Vec3;
 using core::VecX;
 
 constexpr double kGravity = 9.8;
@@ -134,6 +135,32 @@ TEST(RobotJointTest, TorqueLimitClampsTheActuator) {
     theta -= (3 * theta - mgl * (1 - std::cos(theta))) / (3 - mgl * std::sin(theta));
   }
   EXPECT_NEAR(highest, theta, 0.01 * theta);
+}
+
+// The arm hangs at rest at its target, so its servo's force is 0 and its row is solved without
+// its bound (core/sim/servo_bounds.h); then a 20 N·m torque on the link asks the stiff servo
+// (kP 1e4, kD 100) for 3.55 N·m against a 3 N·m limit. The step is retaken with the bound: the
+// arm turns as under 20 - 3 = 17 N·m with no servo at all, not at the 3 % lower rate the
+// unbounded row gives.
+double RateAfterOneStep(const std::string& gains, double applied, bool torque_mode) {
+  core::WorldDesc world = PendulumWorld(gains, 0.0);
+  core::Simulator simulator(world);
+  const bool commanded = torque_mode
+                             ? simulator.controller(0).SetTorque(VecX::Zero(1))
+                             : simulator.controller(0).SetPIDCommand(VecX::Zero(1), VecX::Zero(1));
+  EXPECT_TRUE(commanded);
+  simulator.SetAppliedWrench(world.RobotLinkId(0, 0), Vec3::Zero(), Vec3(0, applied, 0));
+  simulator.Simulate(0.001);
+  return simulator.GetRobotVelocity(0)[0];
+}
+
+TEST(RobotJointTest, AServoSolvedUnboundedStillStopsAtItsLimit) {
+  const double servo =
+      RateAfterOneStep("servoP 10000\nservoI 0\nservoD 100\ntorqueMax 3\n", 20.0, false);
+  const double net = RateAfterOneStep("servoP 0\nservoI 0\nservoD 0\n", 17.0, true);
+  EXPECT_NEAR(servo, net, 1e-12);
+  // about (20 - 3) h / I (ODE's world CFM softens the hinge by 0.2 %)
+  EXPECT_NEAR(servo, 17.0 / PivotInertia() * 0.001, 3e-3 * servo);
 }
 
 TEST(RobotJointTest, JointStopsHoldAtTheLimit) {
