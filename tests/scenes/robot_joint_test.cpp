@@ -163,6 +163,16 @@ TEST(RobotJointTest, AServoSolvedUnboundedStillStopsAtItsLimit) {
   EXPECT_NEAR(servo, 17.0 / PivotInertia() * 0.001, 3e-3 * servo);
 }
 
+// The same push on an arm whose joint also has 1 N·m of dry friction (the second row of the same
+// motor joint, always bounded): the servo row comes out over its limit and is bounded, both rows
+// then sit at their bounds and the arm turns as under 20 - 3 - 1 = 16 N·m.
+TEST(RobotJointTest, ServoAndDryFrictionOnOneJointBothStopAtTheirLimits) {
+  const double both = RateAfterOneStep(
+      "servoP 10000\nservoI 0\nservoD 100\ntorqueMax 3\ndryFriction 1\n", 20.0, false);
+  const double net = RateAfterOneStep("servoP 0\nservoI 0\nservoD 0\n", 16.0, true);
+  EXPECT_NEAR(both, net, 1e-12);
+}
+
 TEST(RobotJointTest, JointStopsHoldAtTheLimit) {
   // released at 0.3 rad under gravity towards q < 0 onto a stop at -0.2
   core::Simulator simulator(
