@@ -282,9 +282,8 @@ bool EdgeContact(const PlacedPrimitive& a, const PlacedPrimitive& b, const Separ
 /// half sizes (outside: the Euclidean distance is at least any one axis's; inside: the nearest
 /// face's excess).
 double SegmentBoxLowerBound(const Vec3& p0_W, const Vec3& p1_W, const PlacedPrimitive& box) {
-  const Mat3 R_SW = box.X_WS.linear().transpose();
-  const Vec3 p0 = R_SW * (p0_W - box.Center());
-  const Vec3 p1 = R_SW * (p1_W - box.Center());
+  const Vec3 p0 = box.ToLocal(p0_W);
+  const Vec3 p1 = box.ToLocal(p1_W);
   const Vec3 half = box.HalfSize();
   double bound = -kInf;
   for (int k = 0; k < 3; ++k) {

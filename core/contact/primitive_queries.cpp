@@ -239,9 +239,8 @@ double BoxDistance(const Vec3& half, const Vec3& p) {
 /// its own frame (the segment transformed once: the search's 66 distances are its cost).
 double SegmentMinimum(const Vec3& p0_W, const Vec3& p1_W, const PlacedPrimitive& shape) {
   if (shape.shape->type == PrimitiveType::kBox) {
-    const Mat3 R_SW = shape.X_WS.linear().transpose();
-    const Vec3 p0 = R_SW * (p0_W - shape.X_WS.translation());
-    const Vec3 p1 = R_SW * (p1_W - shape.X_WS.translation());
+    const Vec3 p0 = shape.ToLocal(p0_W);
+    const Vec3 p1 = shape.ToLocal(p1_W);
     const Vec3 half = 0.5 * shape.shape->size;
     return MinimizeUnimodal([&](double t) { return BoxDistance(half, p0 + t * (p1 - p0)); }, 0.0,
                             1.0);
@@ -274,9 +273,8 @@ bool FeatureSpan(const PlacedPrimitive& shape, const SurfacePoint& closest, cons
   *t_begin = 0.0;
   *t_end = 1.0;
   if (closest.feature == SurfaceFeature::kPoint) return false;
-  const Mat3 R_SW = shape.X_WS.linear().transpose();
-  const Vec3 p0 = R_SW * (p0_W - shape.X_WS.translation());
-  const Vec3 p1 = R_SW * (p1_W - shape.X_WS.translation());
+  const Vec3 p0 = shape.ToLocal(p0_W);
+  const Vec3 p1 = shape.ToLocal(p1_W);
   const Primitive& primitive = *shape.shape;
   switch (primitive.type) {
     case PrimitiveType::kBox: {

@@ -17,6 +17,8 @@ struct PlacedPrimitive {
   Pose X_WS = Pose::Identity();
 
   Vec3 Center() const { return X_WS.translation(); }
+  /// World point `p_W` in the shape's frame.
+  Vec3 ToLocal(const Vec3& p_W) const { return X_WS.linear().transpose() * (p_W - Center()); }
   /// World direction of local axis `i` (0 = x, 1 = y, 2 = z).
   Vec3 Axis(int i) const { return X_WS.linear().col(i); }
   /// Box half extents (m).

@@ -19,7 +19,8 @@ namespace lamina::core {
 
 using CandidatePairs = std::vector<std::pair<int, int>>;
 
-/// Bounds of `geometry` at `pose`, grown by `padding` (and the geometry's margin) on every side;
+/// Bounds of `geometry` at `pose`, grown by `padding` (and the geometry's margin and half of
+/// kLayerEdgeSlack, as Collide pads) on every side;
 /// empty for an empty geometry, everything for an unbounded one (a plane).
 Eigen::AlignedBox3d WorldBounds(const CollisionGeometry& geometry, const Pose& pose,
                                 double padding);

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Servo rows solved without their bound when the bound will not act. ODE's dWorldStep (a Dantzig
 // LCP) factorizes every row whose bounds are infinite in one block and takes each bounded row in
-// one pivot at a time, at a cost of order rows x (all rows)^2: on a humanoid the 30 servo rows
-// (bounded by the torque limits) cost as much as its contacts. A servo whose force stays inside
+// one pivot at a time, at a cost of order rows x (all rows)^2: on a humanoid the 30 servo rows,
+// bounded by the torque limits, are pivoted one by one like its contacts. A servo whose force
+// stays inside
 // its limit gives exactly the same step without the bound, so the row goes unbounded when the
 // force it would apply at the joint's current rate is well inside the limit, and the step is
 // checked afterwards: ODE solves the row J v' = v_target - cfm lambda, so the force it applied is

@@ -190,10 +190,10 @@ bool Simulator::BoundOverrunServos() {
 
 void Simulator::AcceptRobotStep(double step) {
   for (int r = 0; r < robot_count(); ++r) {
-    std::fill(robot_scratch_[r].keep_bound.begin(), robot_scratch_[r].keep_bound.end(), 0);
+    RobotScratch& scratch = robot_scratch_[r];
+    std::fill(scratch.keep_bound.begin(), scratch.keep_bound.end(), 0);  // a new sub-step
     robots_[r]->AcceptStep();
     RecordSensorStep(r);
-    RobotScratch& scratch = robot_scratch_[r];
     robots_[r]->GetConfig(&scratch.q);
     controllers_[r].AcceptStep(scratch.q, step);
   }
