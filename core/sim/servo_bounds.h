@@ -3,12 +3,11 @@
 // LCP) factorizes every row whose bounds are infinite in one block and takes each bounded row in
 // one pivot at a time, at a cost of order rows x (all rows)^2: on a humanoid the 30 servo rows,
 // bounded by the torque limits, are pivoted one by one like its contacts. A servo whose force
-// stays inside
-// its limit gives exactly the same step without the bound, so the row goes unbounded when the
-// force it would apply at the joint's current rate is well inside the limit, and the step is
-// checked afterwards: ODE solves the row J v' = v_target - cfm lambda, so the force it applied is
-// lambda = (v_target - rate after the step) / cfm. A row whose force came out beyond the limit is
-// bounded again and the step retaken from its start (Simulator::TrySubStep), so a step is never
+// stays inside its limit gives exactly the same step without the bound, so the row goes unbounded
+// when the force it would apply at the joint's current rate is well inside the limit, and the step
+// is checked afterwards: ODE solves the row J v' = v_target - cfm lambda, so the force it applied
+// is lambda = (v_target - rate after the step) / cfm. A row whose force came out beyond the limit
+// is bounded again and the step retaken from its start (Simulator::TrySubStep), so a step is never
 // accepted with a servo over its limit.
 //
 // Units: rates in rad/s (m/s for sliders), forces in N·m (N). Sign: the joint's own (the rate
