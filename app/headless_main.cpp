@@ -189,10 +189,11 @@ struct RunOptions {
 // Klamp't SimTest logs every 0.01 s of simulated time
 constexpr double kLogInterval = 0.01;
 
-// "step", "quick" or "quick:N"
+// "step", "newton", "quick" or "quick:N"
 bool ParseSolver(const std::string& text, lamina::core::SolverSettings* solver) {
-  if (text == "step") {
-    solver->type = lamina::core::SolverType::kStep;
+  if (text == "step" || text == "newton") {
+    solver->type =
+        text == "step" ? lamina::core::SolverType::kStep : lamina::core::SolverType::kNewton;
     return true;
   }
   if (text.rfind("quick", 0) != 0) return false;
@@ -272,8 +273,9 @@ int RunSimulation(const RunOptions& options) {
   }
   lamina::core::SolverSettings solver;
   if (!options.solver.empty() && !ParseSolver(options.solver, &solver)) {
-    std::cerr << "lamina-headless: --solver must be step, quick or quick:N (N in [1, 1e6]), got '"
-              << options.solver << "'\n";
+    std::cerr
+        << "lamina-headless: --solver must be step, newton, quick or quick:N (N in [1, 1e6]), got '"
+        << options.solver << "'\n";
     return 2;
   }
   WorldDesc world;
@@ -337,7 +339,7 @@ int main(int argc, char** argv) {
   run->add_option("--dt", run_options.step, "largest physics step, s (default: the world's)")
       ->check(CLI::PositiveNumber);
   run->add_option("--solver", run_options.solver,
-                  "step (exact), quick or quick:N (default: the world's solver)");
+                  "step (exact), newton, quick or quick:N (default: the world's solver)");
   run->add_option("--log", run_options.log, "write a Klamp't-style CSV log (every 0.01 s)");
   run->add_flag("--json", run_options.json, "print JSON instead of text");
   run->add_flag("--no-error-meter", run_options.no_error_meter,

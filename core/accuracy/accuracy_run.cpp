@@ -103,7 +103,9 @@ AccuracyRun RunAccuracyScene(const AccuracyScene& scene, const std::string& worl
 }
 
 std::string AccuracySolver::Label() const {
-  std::string label = type == SolverType::kStep ? "exact" : "quick" + std::to_string(iterations);
+  std::string label = type == SolverType::kStep     ? "exact"
+                      : type == SolverType::kNewton ? "newton"
+                                                    : "quick" + std::to_string(iterations);
   return adaptive ? label : label + "-fixed";
 }
 

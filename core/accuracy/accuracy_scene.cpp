@@ -24,6 +24,10 @@ std::optional<AccuracySolver> ParseAccuracySolver(const std::string& label) {
     name.resize(name.size() - fixed.size());
   }
   if (name == "exact") return solver;
+  if (name == "newton") {
+    solver.type = SolverType::kNewton;
+    return solver;
+  }
   if (!name.starts_with("quick") || name.size() == 5 || name.size() > 10) return std::nullopt;
   for (std::size_t i = 5; i < name.size(); ++i) {
     if (name[i] < '0' || name[i] > '9') return std::nullopt;

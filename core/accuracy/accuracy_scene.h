@@ -53,13 +53,13 @@ struct AccuracySolver {
   int iterations = 20;   ///< QuickStep only
   bool adaptive = true;  ///< adaptive time stepping (rollback and halving)
 
-  /// "exact", "quick20", ..., with "-fixed" when adaptive stepping is off.
+  /// "exact", "newton", "quick20", ..., with "-fixed" when adaptive stepping is off.
   std::string Label() const;
   bool operator==(const AccuracySolver&) const = default;
 };
 
-/// The solver a label names ("exact", "exact-fixed", "quick40", "quick40-fixed"); nullopt for
-/// anything else (iterations must be 1 … 10000).
+/// The solver a label names ("exact", "exact-fixed", "newton", "quick40", "quick40-fixed"); nullopt
+/// for anything else (iterations must be 1 … 10000).
 std::optional<AccuracySolver> ParseAccuracySolver(const std::string& label);
 
 /// The solver of a scene's bars and of the editor's default: exact, adaptive.

@@ -24,7 +24,7 @@ constexpr unsigned kRobot = KindBit(ElementKind::kRobot);
 constexpr unsigned kLink = KindBit(ElementKind::kLink);
 constexpr unsigned kDriver = KindBit(ElementKind::kDriver);
 
-constexpr std::string_view kSolverChoices[] = {"step", "quick"};
+constexpr std::string_view kSolverChoices[] = {"step", "quick", "newton"};
 constexpr std::string_view kPreshrinkChoices[] = {"none", "copy", "in-place"};
 
 // ---- accessors ----------------------------------------------------------------------------
@@ -86,11 +86,11 @@ void SetGravity(WorldDesc* world, const ElementIndex&, const ParamValue& value) 
 }
 
 ParamValue GetSolver(const WorldDesc& world, const ElementIndex&) {
-  return One(world.settings.solver == SolverType::kStep ? 0.0 : 1.0);
+  return One(static_cast<double>(world.settings.solver));
 }
 
 void SetSolver(WorldDesc* world, const ElementIndex&, const ParamValue& value) {
-  world->settings.solver = value[0] == 0.0 ? SolverType::kStep : SolverType::kQuickStep;
+  world->settings.solver = static_cast<SolverType>(static_cast<int>(value[0]));
 }
 
 // a BodySimParams field of a terrain, object or link
@@ -315,8 +315,9 @@ const ParamSpec kParams[] = {
      GetSetting<&SimSettings::robot_robot_collisions>,
      SetSetting<&SimSettings::robot_robot_collisions>},
     // ---- settings: Lamina's <globals> ----
-    {"solver", "solver", "", kSettings, T::kChoice, 0, 1, false, false, false, A::kLive, false,
-     "step: ODE's exact dWorldStep; quick: the iterative dWorldQuickStep (faster, softer)",
+    {"solver", "solver", "", kSettings, T::kChoice, 0, 2, false, false, false, A::kLive, false,
+     "step: ODE's exact dWorldStep; quick: the iterative dWorldQuickStep (faster, softer); "
+     "newton: islands of free objects by Lamina's Newton solver, the rest by dWorldStep",
      kSolverChoices, GetSolver, SetSolver},
     {"quickStepIterations", "quick step iterations", "", kSettings, T::kInteger, 1, 1e6, false,
      false, true, A::kLive, false, "iterations of dWorldQuickStep per step", kNoChoices,

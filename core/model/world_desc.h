@@ -179,12 +179,15 @@ struct RobotDesc {
 };
 
 /// The physics solver: ODE's exact dWorldStep (a Dantzig LCP, stiff stacks and mass ratios
-/// hold) or its iterative dWorldQuickStep (projected Gauss-Seidel, faster on large robots).
-enum class SolverType { kStep, kQuickStep };
+/// hold), its iterative dWorldQuickStep (projected Gauss-Seidel, faster on large robots), or
+/// Lamina's Newton solver for the islands of free objects with dWorldStep for the rest
+/// (core/sim/object_islands.h: ODE's rows, the same answer, a factorization of the bodies'
+/// size instead of the rows'). The values are the table's choices, in order.
+enum class SolverType { kStep, kQuickStep, kNewton };
 
 /// The solver of a simulation (SimSettings::solver and quick_step_iterations).
 struct SolverSettings {
-  SolverType type = SolverType::kStep;  ///< dWorldStep (exact) or dWorldQuickStep
+  SolverType type = SolverType::kStep;  ///< dWorldStep (exact), dWorldQuickStep or Newton
   int quick_step_iterations = 20;       ///< iterations of dWorldQuickStep
   bool operator==(const SolverSettings&) const = default;
 };
@@ -205,7 +208,7 @@ struct SimSettings {
   bool robot_self_collisions = false;   ///< robot self-contacts (allowed pairs only)
   bool robot_robot_collisions = true;   ///< contacts between different robots
 
-  SolverType solver = SolverType::kStep;  ///< `solver`: "step" (exact) or "quick"
+  SolverType solver = SolverType::kStep;  ///< `solver`: "step" (exact), "quick" or "newton"
   int quick_step_iterations = 20;         ///< `quickStepIterations`
   bool sleeping = false;                  ///< `sleeping`: idle objects leave the steps
   /// `sleepSpeed`: linear (m/s) and angular (rad/s) speed below which an object is idle

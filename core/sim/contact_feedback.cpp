@@ -119,8 +119,14 @@ FeedbackRecorder::Slot* FeedbackRecorder::Attach(dxJoint* joint,
   slot.contact.normal = slot.flip ? Vec3(-contact.normal) : contact.normal;
   slot.contact.friction = friction;
   slot.contact.penetrating = contact.penetrating;
-  dJointSetFeedback(joint, &slot.ode);
+  if (joint != nullptr) dJointSetFeedback(joint, &slot.ode);
   return &slot;
+}
+
+dJointFeedback* FeedbackRecorder::Feedback(Slot* slot, bool core) {
+  if (!core) return &slot->ode;
+  slot->has_core = true;
+  return &slot->core;
 }
 
 void FeedbackRecorder::AttachCore(Slot* slot, dxJoint* core_joint) {

@@ -74,9 +74,12 @@ class FeedbackRecorder {
   /// Before a step's joints are made: `contacts` slots at most (joints point into them, so they
   /// must not move while the step is built).
   void ReserveSlots(size_t contacts);
-  /// A slot for a new contact joint of `pair`'s `contact` under `record` (Find's result).
+  /// A slot for a new contact joint of `pair`'s `contact` under `record` (Find's result); a
+  /// null `joint` is one the Newton solver keeps (it fills Feedback(slot, false)).
   Slot* Attach(dxJoint* joint, const ContactFeedbackRecord& record, int joint_first_body,
                const Contact& contact, double friction);
+  /// The slot's force record of its joint (`core`: of its rigid-core joint, which it then has).
+  static dJointFeedback* Feedback(Slot* slot, bool core);
   /// The rigid-core joint of a soft contact reports into the same slot.
   static void AttachCore(Slot* slot, dxJoint* core_joint);
   /// After the step: the slots' forces become the records' last sub-step of length `step`.

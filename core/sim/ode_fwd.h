@@ -9,6 +9,8 @@ struct dxWorld;
 struct dxBody;
 struct dxJoint;
 struct dxJointGroup;
+struct dContact;
+struct dJointFeedback;
 
 namespace lamina::core {
 

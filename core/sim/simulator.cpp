@@ -447,6 +447,8 @@ void Simulator::BuildConstraints(double step) {
   anchors_.Update(&contacts_.mutable_pairs(), contacts_.candidates(), bodies_, step,
                   s.friction_anchor_gain, s.friction_anchor_slip);
   const Vec3* anchor_velocities = anchors_.velocities().data();
+  const bool newton = s.solver == SolverType::kNewton;
+  if (newton) PrepareObjectIslands();
   for (const ContactPair& pair : contacts_.pairs()) {
     // no joint ties a sleeper to what cannot wake it (ODE would enable it through the joint)
     if (!s.sleeping || !sleep_.SleepsAgainstInert(bodies_, pair)) {
@@ -457,6 +459,14 @@ void Simulator::BuildConstraints(double step) {
   bodies_.ApplyForces();
   AddDragJoint(step);
   PrepareRobotsForStep(step);
+  if (newton) {
+    const ObjectIslands::Statistics before = islands_.statistics();
+    islands_.Solve(ode_world_.get(), contact_group_.get(), step);
+    const ObjectIslands::Statistics& after = islands_.statistics();
+    statistics_.newton_islands += after.islands - before.islands;
+    statistics_.newton_fallbacks += after.fallbacks - before.fallbacks;
+    statistics_.newton_iterations += after.iterations - before.iterations;
+  }
 }
 
 StepStatus Simulator::AcceptStep(double step, StepProgress* progress) {

@@ -32,6 +32,7 @@
 #include "core/sim/error_meter.h"
 #include "core/sim/friction_anchors.h"
 #include "core/sim/interaction.h"
+#include "core/sim/object_islands.h"
 #include "core/sim/sim_state.h"
 #include "core/sim/sleep.h"
 #include "core/sim/step_guard.h"
@@ -394,6 +395,10 @@ class Simulator {
 
   // contact joints and feedback (simulator_contacts.cpp)
   void AddContactJoints(const ContactPair& pair, const Vec3* anchor_velocities, double step);
+  /// solver "newton": the islands of free objects, before the contact joints (object_islands.h)
+  void PrepareObjectIslands();
+  /// `id` moves freely and is awake (a body the Newton solver can take)
+  bool FreeForIslands(int id) const;
 
   // the accuracy meter (simulator_meter.cpp)
   void SampleStepError(double step);
@@ -483,6 +488,7 @@ class Simulator {
   FrictionAnchors anchors_;
   StepGuard guard_;
   FeedbackRecorder feedback_;
+  ObjectIslands islands_;  ///< solver "newton": this step's object islands
   SleepTracker sleep_;
   DragState drag_;
   std::map<int, KinematicTarget> targets_;  ///< by body id

@@ -59,21 +59,67 @@ void Simulator::AddContactJoints(const ContactPair& pair, const Vec3* anchor_vel
   // the same for every contact of the pair; read only with rolling friction
   const Vec3 angular =
       law.surface.rolling > 0.0 ? RelativeAngularVelocity(body_a, body_b) : Vec3::Zero();
+  // solver "newton": the joints of an object island are kept for its solve (object_islands.h)
+  const int free_a = FreeForIslands(pair.a) ? pair.a : -1;
+  const int free_b = FreeForIslands(pair.b) ? pair.b : -1;
+  const bool keep = world_.settings.solver == SolverType::kNewton && (free_a >= 0 || free_b >= 0) &&
+                    islands_.Takes(free_a >= 0 ? free_a : free_b);
+  // the joint in ODE, or null when kept
+  auto make = [&](const dContact& joint) -> dJointID {
+    if (keep) return nullptr;
+    dJointID id = dJointCreateContact(ode_world_.get(), contact_group_.get(), &joint);
+    dJointAttach(id, body_a, body_b);
+    return id;
+  };
+  auto kept_feedback = [&](FeedbackRecorder::Slot* slot, bool core) {
+    return slot != nullptr ? FeedbackRecorder::Feedback(slot, core) : nullptr;
+  };
   for (const Contact& contact : pair.contacts) {
     const Vec3& anchor_velocity = *anchor_velocities++;
     const ContactRow row =
         MakeContactRow(contact, law, RelativeVelocity(body_a, body_b, contact.position),
                        anchor_velocity, step, settings, angular);
     const dContact joint = ToOdeContact(row, contact);
-    dJointID id = dJointCreateContact(ode_world_.get(), contact_group_.get(), &joint);
-    dJointAttach(id, body_a, body_b);
+    dJointID id = make(joint);
     FeedbackRecorder::Slot* slot =
         record ? feedback_.Attach(id, *record, pair.a, contact, row.mu) : nullptr;
+    if (keep) islands_.Keep(joint, free_a, free_b, body_a, body_b, kept_feedback(slot, false));
     if (!row.core) continue;
     const dContact core = ToOdeContact(row, contact, true);
-    dJointID core_id = dJointCreateContact(ode_world_.get(), contact_group_.get(), &core);
-    dJointAttach(core_id, body_a, body_b);
-    if (slot != nullptr) FeedbackRecorder::AttachCore(slot, core_id);
+    dJointID core_id = make(core);
+    if (keep) islands_.Keep(core, free_a, free_b, body_a, body_b, kept_feedback(slot, true));
+    if (slot != nullptr && !keep) FeedbackRecorder::AttachCore(slot, core_id);
+  }
+}
+
+bool Simulator::FreeForIslands(int id) const {
+  const BodyRecord& record = bodies_[id];
+  return record.moves_freely() && dBodyIsEnabled(record.body);
+}
+
+// robot links, bodies held by a persistent ODE joint (world joints) and the dragged body stay
+// with ODE's solver, and so does every island they are in; a free body touching a sleeping one
+// too (ODE would wake it through the joint)
+void Simulator::PrepareObjectIslands() {
+  islands_.Begin(bodies_.size());
+  for (int id = 0; id < bodies_.size(); ++id) {
+    const BodyRecord& record = bodies_[id];
+    if (record.body == nullptr) continue;
+    if (!record.is_object() || dBodyGetNumJoints(record.body) > 0 ||
+        (drag_.active && drag_.body == id)) {
+      islands_.MarkOde(id);
+    }
+  }
+  for (const ContactPair& pair : contacts_.pairs()) {
+    const bool free_a = FreeForIslands(pair.a), free_b = FreeForIslands(pair.b);
+    if (free_a && free_b) {
+      islands_.Link(pair.a, pair.b);
+    } else if (free_a != free_b) {
+      const BodyRecord& other = bodies_[free_a ? pair.b : pair.a];
+      if (other.body != nullptr && !dBodyIsEnabled(other.body)) {
+        islands_.MarkOde(free_a ? pair.a : pair.b);
+      }
+    }
   }
 }
 

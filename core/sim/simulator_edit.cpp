@@ -136,8 +136,7 @@ void Simulator::SetSolver(const SolverSettings& solver) {
   if (auto error = CheckParam(spec, {iterations}, 1)) {
     throw std::invalid_argument("settings." + *error);
   }
-  SetOrThrow(this, ElementIndex::Settings(), "solver",
-             {solver.type == SolverType::kStep ? 0.0 : 1.0});
+  SetOrThrow(this, ElementIndex::Settings(), "solver", {static_cast<double>(solver.type)});
   SetOrThrow(this, ElementIndex::Settings(), "quickStepIterations", {iterations});
 }
 

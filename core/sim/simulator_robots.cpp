@@ -142,7 +142,7 @@ void Simulator::PrepareRobotsForStep(double step) {
     robot.GetConfig(&scratch.q);
     robot.GetVelocity(&scratch.dq);
     robot.PrepareStep(scratch.q, step, world_.settings.erp);
-    if (world_.settings.solver == SolverType::kStep) {
+    if (world_.settings.solver != SolverType::kQuickStep) {  // robots are dWorldStep's
       controllers_[r].ComputeImplicitServo(scratch.q, scratch.dq, step, &scratch.forces,
                                            &scratch.motors);
       MarkUnboundedServos(&scratch);

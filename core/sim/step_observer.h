@@ -47,6 +47,10 @@ struct SimStatistics {
   int max_contacts_in_step = 0;      ///< most contact joints in one sub-step
   long contact_joints = 0;           ///< contact joints over all accepted sub-steps
   double max_penetration = 0.0;      ///< deepest boundary-layer overlap in an accepted state, m
+  /// solver "newton" (object_islands.h), over every sub-step tried (retaken ones too)
+  long newton_islands = 0;     ///< object islands the Newton solver took
+  long newton_fallbacks = 0;   ///< of those, handed back to ODE's solver (no convergence)
+  long newton_iterations = 0;  ///< Newton steps in all
   StepStatus worst_status = StepStatus::kNormal;
   std::string error;  ///< what stopped the simulation (kError)
   SimTimeSplit time_split;

@@ -348,7 +348,7 @@ bool HeldRaw(const ParamSpec& spec, const ParamValue& probe) {
       return std::isfinite(x) && x == std::floor(x) && std::abs(x) < 1e9;
     case ParamType::kChoice:
       return spec.key == "preshrink" ? std::isfinite(x) && x == std::floor(x) && std::abs(x) < 1e9
-                                     : x == 0.0 || x == 1.0;  // solver: step or quick
+                                     : x == 0.0 || x == 1.0 || x == 2.0;  // step, quick, newton
     default:
       return true;
   }

@@ -357,7 +357,7 @@ TEST(AccessPathTest, UnreadableValuesAndBadComponentsAreRefused) {
   EXPECT_EQ(SetError("objects[0].kFriction", "abc"),
             "objects[0].kFriction: cannot read 'abc': must be >= 0 (inf allowed)");
   EXPECT_EQ(SetError("settings.solver", "fast"),
-            "settings.solver: cannot read 'fast': must be step or quick");
+            "settings.solver: cannot read 'fast': must be step, quick or newton");
   EXPECT_EQ(SetError("robots[0].config[1]", "1,2"),
             "robots[0].config[1]: cannot read '1,2': must be one number (a component)");
   const core::WorldDesc world = TestWorld();

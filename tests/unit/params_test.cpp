@@ -360,7 +360,8 @@ TEST(ParamCheckTest, ChoicesAndBoolsMustBeInRange) {
   EXPECT_FALSE(Accepts("preshrink", ElementKind::kObject, {3}));
   EXPECT_FALSE(Accepts("preshrink", ElementKind::kObject, {-1}));
   EXPECT_FALSE(Accepts("preshrink", ElementKind::kObject, {1.5}));
-  EXPECT_FALSE(Accepts("solver", ElementKind::kSettings, {2}));
+  EXPECT_TRUE(Accepts("solver", ElementKind::kSettings, {2}));
+  EXPECT_FALSE(Accepts("solver", ElementKind::kSettings, {3}));
   EXPECT_TRUE(Accepts("sleeping", ElementKind::kSettings, {1}));
   EXPECT_FALSE(Accepts("sleeping", ElementKind::kSettings, {0.5}));
   EXPECT_FALSE(Accepts("sleeping", ElementKind::kSettings, {2}));

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+// The velocity step of an island of free bodies and contact rows, solved by Newton's method on
+// the convex function whose minimum is ODE's row law (Lamina's fast solver for object islands).
+//
+// The row law is dWorldStep's (ode/src/step.cpp), with the forces λ in newtons:
+//   v' = v_free + h M⁻¹ Σ J_iᵀ λ_i                 (v_free: the velocity after the step with the
+//                                                   applied forces, gravity and gyroscopic torque)
+//   λ_i = clamp((c_i − J_i v') / cfm_i, lo_i, hi_i)  (a friction row's bounds are its lo/hi times
+//                                                   |λ| of its normal row, ODE's findex)
+// For fixed bounds v' is the unique minimum of the strictly convex, piecewise quadratic
+//   f(v) = ½ (v − v_free)ᵀ M (v − v_free) + h Σ Φ_i(c_i − J_i v),   Φ_i' = the clamp above,
+// so Newton's method with an exact line search reaches it in a few steps whatever the mass
+// ratio: the cost of a step is one Cholesky factorization of M + h Σ J_iᵀ J_i / cfm_i over the
+// rows inside their bounds, not a number of sweeps that grows with the ratio (ODE's QuickStep,
+// Bullet). The friction bounds follow the normal forces in rounds (the fixed point of "solve
+// with the bounds of the last normal forces"); ODE's Dantzig solver sets each friction bound once
+// from the normal force of the moment it pivots the row in, so where friction saturates the two
+// may differ and this one is the consistent answer.
+//
+// Warm start: Newton starts from `start` (the bodies' velocity before the step): a resting or
+// steadily moving island keeps the rows it had, and the first step lands on the answer.
+//
+// Units: m, kg, s, N; Jacobian rows are linear then angular (world axes, about each body's centre
+// of mass), as ODE's getInfo2 writes them; a row's velocity is J_a v_a + J_b v_b.
+#pragma once
+
+#include <vector>
+
+#include "core/math_types.h"
+#include "core/sim/profile_cholesky.h"
+
+namespace lamina::core {
+
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+
+/// One free body of the island.
+struct NewtonBody {
+  double mass = 1.0;                  ///< kg (> 0)
+  Mat3 inertia = Mat3::Identity();    ///< about the centre of mass, world axes (kg·m², SPD)
+  Vec6 free_velocity = Vec6::Zero();  ///< after the step without the rows (m/s, rad/s)
+  Vec6 start = Vec6::Zero();          ///< where Newton starts (the velocity before the step)
+};
+
+/// One constraint row between bodies a and b of the island (-1: the fixed world).
+struct NewtonRow {
+  int a = -1;
+  int b = -1;
+  Vec6 ja = Vec6::Zero();  ///< the row's Jacobian on body a (linear, angular)
+  Vec6 jb = Vec6::Zero();  ///< on body b
+  double rhs = 0.0;        ///< c: the velocity asked of the row (m/s or rad/s)
+  double cfm = 1e-9;       ///< constraint force mixing ((m/s)/N, > 0)
+  double lo = 0.0;         ///< force bounds (N; lo <= 0 <= hi), or, with `normal` >= 0,
+  double hi = kInf;        ///< coefficients of |λ| of row `normal`
+  int normal = -1;         ///< the normal row of a friction row (ODE's findex), or -1
+};
+
+struct NewtonOptions {
+  int max_iterations = 100;  ///< Newton steps in all rounds together
+  int max_rounds = 100;      ///< rounds of friction bounds (each takes a Newton step or more)
+  double velocity_tolerance = 1e-12;  ///< a Newton step smaller than this (m/s, mass-weighted) ends
+  double bound_tolerance = 1e-9;      ///< relative change of a friction force that needs a round
+};
+
+struct NewtonResult {
+  std::vector<Vec6> velocity;  ///< v' per body
+  std::vector<double> force;   ///< λ per row (N or N·m)
+  int iterations = 0;          ///< Newton steps taken
+  int rounds = 0;              ///< rounds of friction bounds
+  bool converged = false;      ///< false: the last iterate, not the answer (the caller falls back)
+};
+
+/// The solver keeps its matrices between calls (no allocation once they have grown).
+class NewtonSolver {
+ public:
+  /// Solves the island's step of `step` seconds into `result`; returns result->converged.
+  bool Solve(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
+             double step, const NewtonOptions& options, NewtonResult* result);
+
+ private:
+  void SetProfile(size_t bodies, const std::vector<NewtonRow>& rows);
+  double RowVelocity(const NewtonRow& row, const VecX& v) const;
+  double RowForce(size_t i, double x) const;
+  signed char Regime(size_t i, double x) const;
+  void SetBounds(const std::vector<NewtonRow>& rows);
+  void RowOffsets(const std::vector<NewtonRow>& rows, const VecX& v);
+  void Gradient(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
+                const VecX& v);
+  void Hessian(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows);
+  double Objective(const std::vector<NewtonBody>& bodies, const VecX& v) const;
+  bool FullStepDescends(const std::vector<NewtonBody>& bodies, double slope);
+  double LineSearch(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows);
+  double Slope(double alpha, double* curvature) const;
+  bool NewtonSteps(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
+                   const NewtonOptions& options, int* budget);
+  bool BoundsSettled(const std::vector<NewtonRow>& rows, double tolerance);
+
+  double step_ = 0.0;
+  double mass_sum_ = 0.0;
+  VecX v_, v_free_, gradient_, direction_, trial_;
+  ProfileCholesky::Matrix hessian_;  ///< its lower triangle, then its factor
+  ProfileCholesky cholesky_;
+  std::vector<int> first_;  ///< the Hessian's profile: per unknown, its first coupled column
+  std::vector<double> lo_, hi_, cfm_, x_, q_;  ///< per row: bounds now, CFM, c − J v, J d
+  std::vector<signed char> regime_;            ///< per row: the part of its law in the Hessian
+  double d_m_d_ = 0.0, d_m_offset_ = 0.0;
+};
+
+}  // namespace lamina::core

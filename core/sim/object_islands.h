@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+// The share of a step that Lamina's Newton solver takes (solver "newton"): every island made only
+// of free rigid objects and their contacts.
+//
+// - The contact joints of such an island are kept as dContacts instead of being created in ODE.
+//   After the solve (newton_solver.h) every body gets its constraint wrench M (v' − v_free) / h
+//   (= Σ Jᵀλ at the answer) added to its force accumulators, so ODE's step integrates v' and the
+//   positions just as when its own solver has found λ: one integrator, one place where gravity,
+//   the gyroscopic torque and finite rotation are applied.
+// - The rows are ODE's own (ContactJointRows: ode/src/joints/contact.cpp, getInfo2, including
+//   the swap of a joint whose first body is the fixed world), so the answer is dWorldStep's to the
+//   solver's tolerance where ODE's Dantzig solver is exact (newton_solver.h: where friction
+//   saturates, this answer is the consistent one).
+// - An island with a robot link, with a body held by a persistent ODE joint (a world joint, the
+//   mouse spring) or whose solve does not converge gets its ODE joints as before, and ODE's
+//   solver takes it in the same step.
+// - Contact feedback: a kept contact fills its dJointFeedback (force and torque on each body, as
+//   ODE reports them) from λ.
+// Units: SI; forces in N, torques in N·m about each body's centre of mass, world axes.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "core/sim/ode_fwd.h"
+
+namespace lamina::core {
+
+/// The Newton solver's islands of one step, by world id.
+class ObjectIslands {
+ public:
+  struct Statistics {
+    long long islands = 0;       ///< islands solved by the Newton solver
+    long long fallbacks = 0;     ///< islands handed back to ODE's solver (no convergence)
+    long long iterations = 0;    ///< Newton steps in all
+  };
+
+  ObjectIslands();
+  ~ObjectIslands();
+  ObjectIslands(const ObjectIslands&) = delete;
+  ObjectIslands& operator=(const ObjectIslands&) = delete;
+
+  /// Starts a step over world ids 0 … count-1.
+  void Begin(int count);
+  /// `id`'s island is ODE's (a robot link, a body with a persistent ODE joint, dragged).
+  void MarkOde(int id) { ode_[Root(id)] = 1; }
+  /// A contact between two free bodies: one island.
+  void Link(int a, int b);
+  /// True when `id` (a free body after every Link and MarkOde) is in a Newton island.
+  bool Takes(int id) { return !ode_[Root(id)]; }
+  /// Keeps a contact joint between `a` and `b` (world ids; -1 or a body outside the islands for
+  /// the fixed world or a kinematic body), reporting into `feedback` when not null.
+  void Keep(const dContact& contact, int a, int b, dxBody* body_a, dxBody* body_b,
+            dJointFeedback* feedback);
+  /// Solves every island of the kept contacts, adds the forces to the bodies; an island that
+  /// does not converge gets its contact joints in `group`.
+  void Solve(dxWorld* world, dxJointGroup* group, double step);
+  const Statistics& statistics() const { return statistics_; }
+
+ private:
+  struct Kept;    ///< a kept contact joint (object_islands.cpp)
+  struct Island;  ///< one island's solve and its scratch (object_islands.cpp)
+  int Root(int id);
+  int IslandOf(const Kept& kept);
+  void SolveIsland(const std::vector<size_t>& members, dxWorld* world, dxJointGroup* group,
+                   double step);
+
+  std::vector<int> parent_;
+  std::vector<char> ode_;
+  std::vector<Kept> kept_;
+  std::vector<int> local_;  ///< world id -> index in the island being solved, or -1
+  std::unique_ptr<Island> island_;
+  Statistics statistics_;
+};
+
+}  // namespace lamina::core

@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: MIT
+// Solver "newton" (core/sim/object_islands.h) against ODE's dWorldStep on the same worlds: the
+// same rows, so the same steps where the Dantzig solver is exact.
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/sim/simulator.h"
+#include "tests/common/test_support.h"
+
+namespace lamina {
+namespace {
+
+struct Gap {
+  double position = 0.0;  ///< m
+  double velocity = 0.0;  ///< m/s
+};
+
+Gap Compare(const core::Simulator& a, const core::Simulator& b) {
+  Gap gap;
+  for (int k = 0; k < a.object_count(); ++k) {
+    gap.position = std::max(
+        gap.position,
+        (a.GetObjectPose(k).translation() - b.GetObjectPose(k).translation()).norm());
+    const core::Twist va = a.GetObjectVelocity(k), vb = b.GetObjectVelocity(k);
+    gap.velocity = std::max(gap.velocity, (va.linear - vb.linear).norm());
+  }
+  return gap;
+}
+
+// both solvers from the world's start, step by step
+Gap LockStep(const std::string& world_file, double step, int steps, core::SimStatistics* newton) {
+  test::LoadedWorld loaded;
+  test::LoadWorld(test::WorldsPath(world_file), &loaded);
+  EXPECT_TRUE(loaded.ok) << world_file;
+  core::Simulator exact(loaded.world, {core::SolverType::kStep, 20});
+  core::Simulator fast(loaded.world, {core::SolverType::kNewton, 20});
+  Gap worst;
+  for (int i = 0; i < steps; ++i) {
+    exact.Simulate(step);
+    fast.Simulate(step);
+    const Gap gap = Compare(exact, fast);
+    worst.position = std::max(worst.position, gap.position);
+    worst.velocity = std::max(worst.velocity, gap.velocity);
+  }
+  *newton = fast.statistics();
+  return worst;
+}
+
+struct Case {
+  const char* world;
+  double step;      ///< s
+  int steps;
+  double position;  ///< largest gap allowed (m)
+  double velocity;  ///< m/s
+  bool newton = true;  ///< false: every island is ODE's (robots, world joints), the runs are one
+};
+
+// Resting, stacked, rolling, bouncing: both solvers meet the same rows and ODE's Dantzig solver
+// is exact there, so the two runs agree to the Newton tolerance (1e-12 m/s per step, growing
+// slowly over the steps). Sliding: ODE bounds each friction row by the normal force of the
+// moment it pivots the row in, the Newton solver by the final one (newton_solver.h): the runs
+// differ by 1.5e-7 m/s (measured), 1e-6 allowed.
+const Case kCases[] = {
+    {"accuracy/box_stack.xml", 0.01, 150, 1e-12, 1e-10},
+    {"accuracy/heavy_on_light_1000.xml", 0.01, 300, 1e-12, 1e-10},
+    {"stress/box_stack_20.xml", 0.01, 50, 1e-12, 1e-10},
+    {"accuracy/bouncing_ball.xml", 0.001, 2000, 1e-12, 1e-10},
+    {"accuracy/slide_to_roll.xml", 0.001, 1000, 1e-10, 1e-10},
+    {"accuracy/mesh_jitter.xml", 0.001, 1000, 1e-12, 1e-10},
+    {"accuracy/stiffness.xml", 0.001, 300, 1e-12, 1e-10},
+    {"accuracy/incline.xml", 0.001, 500, 1e-8, 1e-6},
+    {"accuracy/sliding_block_22_5.xml", 0.001, 1000, 1e-8, 1e-6},
+    {"examples/door_drawer.xml", 0.001, 500, 0.0, 0.0, false},
+    {"examples/sensors.xml", 0.001, 500, 1e-12, 1e-10},  // a robot and a free object
+    {"examples/two_blocks.xml", 0.001, 500, 1e-12, 1e-10},
+};
+
+class NewtonIslandsWorldTest : public testing::TestWithParam<Case> {};
+
+TEST_P(NewtonIslandsWorldTest, StepsAsDWorldStepDoes) {
+  const Case& c = GetParam();
+  core::SimStatistics statistics;
+  const Gap gap = LockStep(c.world, c.step, c.steps, &statistics);
+  std::printf("%s: gap %g m, %g m/s; islands %ld, fallbacks %ld, Newton steps %ld\n", c.world,
+              gap.position, gap.velocity, statistics.newton_islands, statistics.newton_fallbacks,
+              statistics.newton_iterations);
+  EXPECT_LE(gap.position, c.position);
+  EXPECT_LE(gap.velocity, c.velocity);
+  if (c.newton) {
+    EXPECT_GT(statistics.newton_islands, 0);
+  } else {
+    EXPECT_EQ(statistics.newton_islands, 0);
+  }
+  // a fallback hands the island to dWorldStep (the same answer, more time): rare
+  EXPECT_LE(statistics.newton_fallbacks * 500, statistics.newton_islands);
+}
+
+INSTANTIATE_TEST_SUITE_P(Worlds, NewtonIslandsWorldTest, testing::ValuesIn(kCases),
+                         [](const testing::TestParamInfo<Case>& param_info) {
+                           std::string name = param_info.param.world;
+                           name = name.substr(name.find('/') + 1);
+                           name = name.substr(0, name.find('.'));
+                           std::string camel;  // box_stack_20 -> BoxStack20
+                           for (size_t i = 0; i < name.size(); ++i) {
+                             if (name[i] == '_') continue;
+                             const bool first = i == 0 || name[i - 1] == '_';
+                             camel += first ? static_cast<char>(std::toupper(name[i])) : name[i];
+                           }
+                           return camel;
+                         });
+
+}  // namespace
+}  // namespace lamina
