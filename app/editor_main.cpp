@@ -77,7 +77,8 @@ int main(int argc, char** argv) {
   bool no_solver_choice = false;
   app.add_flag("--no-solver-choice", no_solver_choice,
                "always run the world's own solver, even when the exact one cannot keep real "
-               "time (default: QuickStep in its place then, and the Simulation panel says so)");
+               "time (default: the Newton solver in its place then, QuickStep in a world with "
+               "robots, and the Simulation panel says so)");
   app.add_option("--trace", options.trace_path,
                  "write one JSON line per frame (selection, drag, positions) to this file");
   CLI11_PARSE(app, argc, argv);

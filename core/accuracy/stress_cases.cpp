@@ -16,6 +16,7 @@ using Probe = std::function<std::unique_ptr<AccuracyProbe>(const WorldDesc&)>;
 
 const AccuracySolver kExact{};
 const AccuracySolver kQuick{SolverType::kQuickStep, 20, true};
+const AccuracySolver kNewton{SolverType::kNewton, 20, true};
 
 Probe SceneProbe(const char* scene) {
   return FindAccuracyScene(scene)->probe;
@@ -55,7 +56,7 @@ void AddContactCases(std::vector<StressCase>* cases) {
   c.probe = SceneProbe("stiffness");
   c.metric_text = "largest resting overlap error, relative to m·g/k";
   c.keep_out = {Below(0.0)};
-  AddRuns(c, {{kExact, 1e-3}, {kQuick, 1e-3}}, cases);
+  AddRuns(c, {{kExact, 1e-3}, {kQuick, 1e-3}, {kNewton, 1e-3}}, cases);
 
   for (const char* ratio : {"10", "100", "1000"}) {
     c = {};
@@ -69,7 +70,7 @@ void AddContactCases(std::vector<StressCase>* cases) {
     c.metric_text = "heavy box's height loss at the end";
     c.unit = "m";
     c.keep_out = {Below(0.0)};
-    AddRuns(c, {{kExact, 1e-3}}, cases);
+    AddRuns(c, {{kExact, 1e-3}, {kNewton, 1e-3}, {kNewton, 1e-2}}, cases);
     // QuickStep's 20 iterations do not hold 1:100: the light box is crushed into the floor
     // (contact unreliable), at 1:1000 through it — flagged, never silent
     c.expected = std::string(ratio) == "10" ? StressVerdict::kStable : StressVerdict::kFlagged;
@@ -85,7 +86,8 @@ void AddContactCases(std::vector<StressCase>* cases) {
   c.metric_text = "top box's displacement at the end";
   c.unit = "m";
   c.keep_out = {Below(0.0)};
-  AddRuns(c, {{kExact, 1e-3}, {kQuick, 1e-3}, {kExact, 1e-2}}, cases);
+  AddRuns(c, {{kExact, 1e-3}, {kQuick, 1e-3}, {kExact, 1e-2}, {kNewton, 1e-3}, {kNewton, 1e-2}},
+          cases);
 
   c = {};
   c.name = "mesh_jitter";
@@ -96,7 +98,7 @@ void AddContactCases(std::vector<StressCase>* cases) {
   c.metric_text = "RMS resting speed after 0.5 s";
   c.unit = "m/s";
   c.keep_out = {Below(0.0)};
-  AddRuns(c, {{kExact, 1e-3}, {kQuick, 1e-3}, {kExact, 1e-2}}, cases);
+  AddRuns(c, {{kExact, 1e-3}, {kQuick, 1e-3}, {kExact, 1e-2}, {kNewton, 1e-3}}, cases);
 }
 
 void AddImpactCases(std::vector<StressCase>* cases) {
@@ -109,7 +111,7 @@ void AddImpactCases(std::vector<StressCase>* cases) {
   c.metric_text = "lowest core point above the floor during the run";
   c.unit = "m";
   c.keep_out = {Below(0.0)};
-  AddRuns(c, {{kExact, 1e-3}, {kQuick, 1e-3}, {kExact, 1e-2}}, cases);
+  AddRuns(c, {{kExact, 1e-3}, {kQuick, 1e-3}, {kExact, 1e-2}, {kNewton, 1e-2}}, cases);
 
   c = {};
   c.name = "high_speed";
@@ -120,7 +122,7 @@ void AddImpactCases(std::vector<StressCase>* cases) {
   c.metric_text = "deepest a ball's core got past its wall's near face";
   c.unit = "m";
   c.keep_out = {{Vec3::UnitX(), 0.01}};  // behind both walls (the box is 1 cm thick)
-  AddRuns(c, {{kExact, 1e-3}, {kExact, 1e-2}, {kQuick, 1e-2}}, cases);
+  AddRuns(c, {{kExact, 1e-3}, {kExact, 1e-2}, {kQuick, 1e-2}, {kNewton, 1e-2}}, cases);
 
   c = {};
   c.name = "thin_shell";
@@ -135,7 +137,7 @@ void AddImpactCases(std::vector<StressCase>* cases) {
                 {-Vec3::UnitX(), 0.5},
                 {Vec3::UnitY(), 0.5},
                 {-Vec3::UnitY(), 0.5}};
-  AddRuns(c, {{kExact, 1e-3}, {kQuick, 1e-3}, {kExact, 1e-2}}, cases);
+  AddRuns(c, {{kExact, 1e-3}, {kQuick, 1e-3}, {kExact, 1e-2}, {kNewton, 1e-3}}, cases);
 }
 
 void AddRobotCases(std::vector<StressCase>* cases) {

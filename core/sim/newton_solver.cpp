@@ -235,8 +235,8 @@ bool NewtonSolver::NewtonSteps(const std::vector<NewtonBody>& bodies,
     // next Newton step would be (1 − α) d
     bool same = true;
     for (size_t i = 0; i < rows.size() && same; ++i) same = Regime(i, x_[i] - q_[i]) == regime_[i];
-    if (same && std::abs(1.0 - alpha) * std::sqrt(d_m_d_ / mass_sum_) <=
-                    options.velocity_tolerance) {
+    if (same &&
+        std::abs(1.0 - alpha) * std::sqrt(d_m_d_ / mass_sum_) <= options.velocity_tolerance) {
       return true;
     }
   }

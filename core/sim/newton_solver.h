@@ -73,8 +73,8 @@ struct NewtonResult {
 class NewtonSolver {
  public:
   /// Solves the island's step of `step` seconds into `result`; returns result->converged.
-  bool Solve(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
-             double step, const NewtonOptions& options, NewtonResult* result);
+  bool Solve(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows, double step,
+             const NewtonOptions& options, NewtonResult* result);
 
  private:
   void SetProfile(size_t bodies, const std::vector<NewtonRow>& rows);

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "core/sim/object_islands.h"
 
-#include <ode/ode.h>
-
 #include <algorithm>
 #include <numeric>
+
+#include <ode/ode.h>
 
 #include "core/sim/newton_solver.h"
 #include "core/sim/ode_contact_rows.h"
@@ -65,7 +65,9 @@ void ObjectIslands::Keep(const dContact& contact, int a, int b, dBodyID body_a, 
   kept_.push_back({contact, a, b, body_a, body_b, feedback});
 }
 
-int ObjectIslands::IslandOf(const Kept& kept) { return Root(kept.a >= 0 ? kept.a : kept.b); }
+int ObjectIslands::IslandOf(const Kept& kept) {
+  return Root(kept.a >= 0 ? kept.a : kept.b);
+}
 
 void ObjectIslands::Solve(dWorldID world, dJointGroupID group, double step) {
   if (kept_.empty()) return;
@@ -142,8 +144,7 @@ void ObjectIslands::SolveIsland(const std::vector<size_t>& members, dWorldID wor
   island.first_row.push_back(island.rows.size());
   for (int id : island.ids) local_[id] = -1;
   ++statistics_.islands;
-  const bool converged =
-      island.solver.Solve(island.bodies, island.rows, step, {}, &island.result);
+  const bool converged = island.solver.Solve(island.bodies, island.rows, step, {}, &island.result);
   statistics_.iterations += island.result.iterations;
   if (converged) {
     island.ApplyForces(kept_, members, step);

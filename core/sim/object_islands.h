@@ -30,9 +30,9 @@ namespace lamina::core {
 class ObjectIslands {
  public:
   struct Statistics {
-    long long islands = 0;       ///< islands solved by the Newton solver
-    long long fallbacks = 0;     ///< islands handed back to ODE's solver (no convergence)
-    long long iterations = 0;    ///< Newton steps in all
+    long long islands = 0;     ///< islands solved by the Newton solver
+    long long fallbacks = 0;   ///< islands handed back to ODE's solver (no convergence)
+    long long iterations = 0;  ///< Newton steps in all
   };
 
   ObjectIslands();

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "core/sim/ode_contact_rows.h"
 
-#include <ode/ode.h>
-
 #include <algorithm>
 #include <cmath>
+
+#include <ode/ode.h>
 
 #include "core/sim/ode_conversions.h"
 
@@ -123,8 +123,8 @@ void RollingRows(const dContact& contact, const RowContext& c, const Vec3 axes[3
 
 }  // namespace
 
-bool ContactJointRows(const dContact& contact, dBodyID a, dBodyID b, int ia, int ib,
-                      dWorldID world, double step, std::vector<NewtonRow>* rows) {
+bool ContactJointRows(const dContact& contact, dBodyID a, dBodyID b, int ia, int ib, dWorldID world,
+                      double step, std::vector<NewtonRow>* rows) {
   Vec3 normal = ToVec3(contact.geom.normal);
   const bool swapped = a == nullptr;  // dJointAttach makes the body the first, reversed
   if (swapped) {
@@ -133,7 +133,11 @@ bool ContactJointRows(const dContact& contact, dBodyID a, dBodyID b, int ia, int
     normal = -normal;
   }
   const Vec3 point = ToVec3(contact.geom.pos);
-  const RowContext c{a,  b, ia, ib, point - ToVec3(dBodyGetPosition(a)),
+  const RowContext c{a,
+                     b,
+                     ia,
+                     ib,
+                     point - ToVec3(dBodyGetPosition(a)),
                      b != nullptr ? Vec3(point - ToVec3(dBodyGetPosition(b))) : Vec3::Zero(),
                      dWorldGetCFM(world)};
   const int normal_index = static_cast<int>(rows->size());

@@ -16,7 +16,7 @@ namespace lamina::core {
 /// kinematic body's velocity goes into the right-hand side). World ERP/CFM and the contact
 /// parameters are read from `world`; `step` in s. Returns whether ODE swapped the bodies (a
 /// null `a`): the rows' first body is then `b`, and its feedback is reported on `b`.
-bool ContactJointRows(const dContact& contact, dxBody* a, dxBody* b, int ia, int ib,
-                      dxWorld* world, double step, std::vector<NewtonRow>* rows);
+bool ContactJointRows(const dContact& contact, dxBody* a, dxBody* b, int ia, int ib, dxWorld* world,
+                      double step, std::vector<NewtonRow>* rows);
 
 }  // namespace lamina::core

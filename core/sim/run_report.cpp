@@ -86,6 +86,10 @@ std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
       {"mean_contacts",
        stats.steps > 0 ? static_cast<double>(stats.contact_joints) / stats.steps : 0.0},
       {"time_split", TimeSplit(stats.time_split)},
+      {"newton",
+       {{"islands", stats.newton_islands},
+        {"fallbacks", stats.newton_fallbacks},
+        {"iterations", stats.newton_iterations}}},
       {"sleeping_objects", simulator.SleepingObjectCount()}};
   if (!stats.error.empty()) out["error"] = stats.error;
   if (simulator.error_meter()) out["error_meter"] = ErrorMeterJson(simulator);

@@ -32,6 +32,7 @@ struct SolverCase {
 const SolverCase kSolvers[] = {
     {"step", {core::SolverType::kStep, 20}, false},
     {"quick20", {core::SolverType::kQuickStep, 20}, false},
+    {"newton", {core::SolverType::kNewton, 20}, false},
     {"step_sleep", {core::SolverType::kStep, 20}, true},
 };
 

@@ -25,7 +25,7 @@ TEST(StressCliTest, PatternPicksCasesAndTheJsonRecordsEach) {
   EXPECT_THAT(result.out, HasSubstr("drop_15m/exact/10ms"));
   EXPECT_THAT(result.out, HasSubstr("absurd_torque/exact/1ms: flagged: status unstable"));
   const nlohmann::json json = nlohmann::json::parse(test::ReadFile(json_path));
-  ASSERT_EQ(json["cases"].size(), 4u);
+  ASSERT_EQ(json["cases"].size(), 5u);  // drop_15m: exact 1 ms, quick 1 ms, exact and newton 10 ms
   EXPECT_EQ(json["failed"], 0);
   const nlohmann::json& drop = json["cases"][0];
   EXPECT_EQ(drop["name"], "drop_15m/exact/1ms");
@@ -34,7 +34,7 @@ TEST(StressCliTest, PatternPicksCasesAndTheJsonRecordsEach) {
   EXPECT_GT(drop["steps"].get<long>(), 2000);
   EXPECT_GT(drop["metric"]["value"].get<double>(), 0.0);  // no core below the floor
   EXPECT_LT(drop["metric"]["value"].get<double>(), 0.0025);
-  const nlohmann::json& arm = json["cases"][3];
+  const nlohmann::json& arm = json["cases"][4];
   EXPECT_EQ(arm["name"], "absurd_torque/exact/1ms");
   EXPECT_EQ(arm["verdict"], "flagged");
   EXPECT_EQ(arm["status"], "unstable");

@@ -23,8 +23,7 @@ Gap Compare(const core::Simulator& a, const core::Simulator& b) {
   Gap gap;
   for (int k = 0; k < a.object_count(); ++k) {
     gap.position = std::max(
-        gap.position,
-        (a.GetObjectPose(k).translation() - b.GetObjectPose(k).translation()).norm());
+        gap.position, (a.GetObjectPose(k).translation() - b.GetObjectPose(k).translation()).norm());
     const core::Twist va = a.GetObjectVelocity(k), vb = b.GetObjectVelocity(k);
     gap.velocity = std::max(gap.velocity, (va.linear - vb.linear).norm());
   }
@@ -52,10 +51,10 @@ Gap LockStep(const std::string& world_file, double step, int steps, core::SimSta
 
 struct Case {
   const char* world;
-  double step;      ///< s
+  double step;  ///< s
   int steps;
-  double position;  ///< largest gap allowed (m)
-  double velocity;  ///< m/s
+  double position;     ///< largest gap allowed (m)
+  double velocity;     ///< m/s
   bool newton = true;  ///< false: every island is ODE's (robots, world joints), the runs are one
 };
 

@@ -153,11 +153,11 @@ LiveSession::Command SetSettingsRow(const std::string& key, double value) {
 }
 
 // The real-time solver choice on the physics thread, with a budget of 0 so that any measured
-// cost is too much (the switch does not depend on this machine's speed): QuickStep runs while
-// the document still says exact and stays unedited; a Reset and a rebuild keep the choice;
-// turning it off
-// puts the exact solver back; turning it on again chooses again.
-TEST(LiveSessionTest, TheSolverChoiceRunsQuickStepWithoutEditingTheWorld) {
+// cost is too much (the switch does not depend on this machine's speed): the Newton solver (a
+// world without robots) runs while the document still says exact and stays unedited; a Reset
+// and a rebuild keep the choice; turning it off puts the exact solver back; turning it on again
+// chooses again.
+TEST(LiveSessionTest, TheSolverChoiceRunsTheNewtonSolverWithoutEditingTheWorld) {
   LiveSession session(true);
   session.SetPhysicsBudget(0.0);
   session.SetSpeed(4.0);
@@ -166,13 +166,13 @@ TEST(LiveSessionTest, TheSolverChoiceRunsQuickStepWithoutEditingTheWorld) {
   std::shared_ptr<const SessionFrame> frame =
       WaitFor(&session, [](const SessionFrame& f) { return f.solver_chosen; });
   ASSERT_TRUE(frame->solver_chosen);
-  EXPECT_EQ(frame->solver.type, core::SolverType::kQuickStep);
+  EXPECT_EQ(frame->solver.type, core::SolverType::kNewton);
   EXPECT_EQ(frame->world->settings.solver, core::SolverType::kStep);
   EXPECT_FALSE(frame->dirty);
   EXPECT_NE(SolverText(*frame).find("chosen for real time"), std::string::npos);
   const std::vector<std::string> messages = session.TakeMessages();
   ASSERT_EQ(messages.size(), 1u);
-  EXPECT_NE(messages[0].find("QuickStep"), std::string::npos) << messages[0];
+  EXPECT_NE(messages[0].find("Newton"), std::string::npos) << messages[0];
 
   session.Post([](core::LiveWorld& world) {
     world.simulator().Reset();
@@ -182,14 +182,14 @@ TEST(LiveSessionTest, TheSolverChoiceRunsQuickStepWithoutEditingTheWorld) {
   session.Flush();
   frame = session.frame();
   EXPECT_EQ(frame->world->objects[0].mass, 2.0);
-  EXPECT_EQ(frame->solver.type, core::SolverType::kQuickStep) << "a rebuild dropped the choice";
+  EXPECT_EQ(frame->solver.type, core::SolverType::kNewton) << "a rebuild dropped the choice";
   EXPECT_TRUE(frame->solver_chosen);
   // tuning QuickStep's iterations is not choosing a solver: the choice stays, with them
   session.Post(SetSettingsRow("quickStepIterations", 35.0));
   session.Flush();
   frame =
       WaitFor(&session, [](const SessionFrame& f) { return f.solver.quick_step_iterations == 35; });
-  EXPECT_EQ(frame->solver.type, core::SolverType::kQuickStep);
+  EXPECT_EQ(frame->solver.type, core::SolverType::kNewton);
   EXPECT_EQ(frame->solver.quick_step_iterations, 35);
   EXPECT_TRUE(frame->solver_chosen);
 
@@ -200,6 +200,22 @@ TEST(LiveSessionTest, TheSolverChoiceRunsQuickStepWithoutEditingTheWorld) {
   session.SetAutoSolver(true);
   frame = WaitFor(&session, [](const SessionFrame& f) { return f.solver_chosen; });
   EXPECT_TRUE(frame->solver_chosen);
+}
+
+// A world with a robot: the Newton solver would leave the robot to dWorldStep, so the choice is
+// QuickStep.
+TEST(LiveSessionTest, TheSolverChoiceRunsQuickStepInAWorldWithARobot) {
+  LiveSession session(true);
+  session.SetPhysicsBudget(0.0);
+  session.SetSpeed(4.0);
+  ASSERT_TRUE(Load(&session, kArm));
+  std::shared_ptr<const SessionFrame> frame =
+      WaitFor(&session, [](const SessionFrame& f) { return f.solver_chosen; });
+  ASSERT_TRUE(frame->solver_chosen);
+  EXPECT_EQ(frame->solver.type, core::SolverType::kQuickStep);
+  const std::vector<std::string> messages = session.TakeMessages();
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_NE(messages[0].find("QuickStep"), std::string::npos) << messages[0];
 }
 
 // Choosing a solver in the settings is the user's decision: the choice ends for the world, and

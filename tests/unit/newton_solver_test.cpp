@@ -3,9 +3,9 @@
 // box, a sliding point, a 1000:1 stack) and ODE's row law checked row by row on random islands.
 #include "core/sim/newton_solver.h"
 
-#include <gtest/gtest.h>
-
 #include <random>
+
+#include <gtest/gtest.h>
 
 namespace lamina::core {
 namespace {

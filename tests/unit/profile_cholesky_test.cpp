@@ -2,11 +2,10 @@
 // The profile Cholesky factorization (core/sim/profile_cholesky.h) against Eigen's dense LLT.
 #include "core/sim/profile_cholesky.h"
 
-#include <gtest/gtest.h>
-
 #include <random>
 
 #include <Eigen/Cholesky>
+#include <gtest/gtest.h>
 
 namespace lamina::core {
 namespace {

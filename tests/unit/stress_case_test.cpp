@@ -66,9 +66,10 @@ TEST(StressJudgeTest, HaltsAndNonFiniteEndsFail) {
 
 TEST(StressCasesTest, PatternsPickCasesInReportOrder) {
   const auto stacks = FindStressCases({"box_stack_20/*"});
-  ASSERT_EQ(stacks.size(), 3u);
+  ASSERT_EQ(stacks.size(), 5u);
   EXPECT_EQ(stacks[0]->name, "box_stack_20/exact/1ms");
   EXPECT_EQ(stacks[2]->name, "box_stack_20/exact/10ms");
+  EXPECT_EQ(stacks[4]->name, "box_stack_20/newton/10ms");
   EXPECT_EQ(FindStressCases({"*/quick20/*", "absurd_torque*"}).size(), 12u);
   EXPECT_TRUE(FindStressCases({"nope"}).empty());
   EXPECT_EQ(FindStressCases({}).size(), StressCases().size());

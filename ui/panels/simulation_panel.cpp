@@ -58,11 +58,13 @@ void DrawToolChoice(ViewerState* state) {
   }
 }
 
-// the solver running now (orange when the real-time choice put QuickStep in place of the world's
-// exact solver), and the choice's switch (solver_choice.h)
+// the solver running now (orange when the real-time choice put another solver in place of the
+// world's exact solver), and the choice's switch (solver_choice.h)
 void DrawSolver(const PanelContext& context) {
   const SessionFrame& frame = context.frame;
-  const char* name = frame.solver.type == core::SolverType::kStep ? "exact" : "quick step";
+  const char* name = frame.solver.type == core::SolverType::kStep     ? "exact"
+                     : frame.solver.type == core::SolverType::kNewton ? "newton"
+                                                                      : "quick step";
   ImGui::TextUnformatted("solver     ");
   ImGui::SameLine();
   if (frame.solver_chosen) {
@@ -81,8 +83,9 @@ void DrawSolver(const PanelContext& context) {
   RecordItem("solver.auto");
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
-        "When the exact solver cannot keep real time within 80 %% of a core, play with QuickStep\n"
-        "instead (faster, softer; the world's file is not changed). Off: always the world's "
+        "When the exact solver cannot keep real time within 80 %% of a core, play with the\n"
+        "Newton solver instead (the same answer, faster), or with QuickStep in a world with\n"
+        "robots (faster, softer); the world's file is not changed. Off: always the world's "
         "solver.");
   }
 }

@@ -192,13 +192,24 @@ void LiveSession::MeasureSolver(double step_wall, double simulated, double speed
   if (solver.type != core::SolverType::kStep) return;
   choice_.Add(step_wall, simulated, speed);
   if (!choice_.too_slow()) return;
-  chosen_ = core::SolverSettings{core::SolverType::kQuickStep, solver.quick_step_iterations};
+  // without robots every island is one the Newton solver takes: the exact answer, faster; with
+  // robots, QuickStep (the Newton solver leaves robots to dWorldStep)
+  const bool newton = simulator.robot_count() == 0;
+  chosen_ = core::SolverSettings{newton ? core::SolverType::kNewton : core::SolverType::kQuickStep,
+                                 solver.quick_step_iterations};
   simulator.SetSolver(*chosen_);
-  char text[200];
+  char instead[80];
+  if (newton) {
+    std::snprintf(instead, sizeof instead, "the Newton solver (the same answer)");
+  } else {
+    std::snprintf(instead, sizeof instead, "QuickStep (%d iterations)",
+                  chosen_->quick_step_iterations);
+  }
+  char text[240];
   std::snprintf(text, sizeof text,
-                "the exact solver reached %.2fx real time on this machine: playing with "
-                "QuickStep (%d iterations) instead; the world keeps its solver",
-                choice_.reachable_factor(), chosen_->quick_step_iterations);
+                "the exact solver reached %.2fx real time on this machine: playing with %s "
+                "instead; the world keeps its solver",
+                choice_.reachable_factor(), instead);
   std::lock_guard<std::mutex> lock(mutex_);
   messages_.push_back(text);
 }
@@ -232,7 +243,7 @@ std::string SolverText(const SessionFrame& frame) {
   char text[160];
   std::snprintf(text, sizeof text, "quick step (%d iterations)",
                 frame.solver.quick_step_iterations);
-  std::string out = text;
+  std::string out = frame.solver.type == core::SolverType::kNewton ? "newton" : text;
   if (frame.solver_chosen) {
     std::snprintf(text, sizeof text, ", chosen for real time: exact reached %.2fx",
                   frame.exact_factor);
