@@ -204,7 +204,7 @@ double NewtonSolver::LineSearch(const std::vector<NewtonBody>& bodies,
     const double slope = Slope(alpha, &bend);
     if (std::abs(slope) <= 1e-13 * std::abs(start)) return alpha;
     (slope < 0.0 ? low : high) = alpha;
-    if (high - low <= 1e-15 * high) return low;
+    if (std::isfinite(high) && high - low <= 1e-15 * high) return low;
     double next = alpha - slope / bend;
     if (!(next > low && next < high)) next = std::isinf(high) ? 2.0 * alpha : 0.5 * (low + high);
     alpha = next;
