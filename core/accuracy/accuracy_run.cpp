@@ -113,8 +113,12 @@ AccuracyGrid FullAccuracyGrid() {
   AccuracyGrid grid;
   for (const AccuracyScene& scene : AccuracyScenes()) grid.scenes.push_back(&scene);
   const SolverType quick = SolverType::kQuickStep;
-  grid.solvers = {
-      {}, {quick, 20, true}, {quick, 40, true}, {quick, 100, true}, {SolverType::kStep, 20, false}};
+  grid.solvers = {{},
+                  {SolverType::kNewton, 20, true},
+                  {quick, 20, true},
+                  {quick, 40, true},
+                  {quick, 100, true},
+                  {SolverType::kStep, 20, false}};
   grid.steps = {1e-5, 4e-5, 1e-4, 4e-4, 1e-3, 4e-3, 1e-2};
   return grid;
 }
