@@ -63,7 +63,8 @@ struct PairBlocks {
 // the first column each unknown's row of the Hessian reaches: the lowest body a row couples it
 // with (the bodies' order is the caller's: a chain in order keeps the profile narrow)
 void NewtonSolver::SetProfile(size_t bodies, const std::vector<NewtonRow>& rows) {
-  std::vector<int> lowest(bodies);
+  std::vector<int>& lowest = lowest_body_;
+  lowest.resize(bodies);
   for (size_t k = 0; k < bodies; ++k) lowest[k] = static_cast<int>(k);
   for (const NewtonRow& row : rows) {
     if (row.a < 0 || row.b < 0) continue;

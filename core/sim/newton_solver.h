@@ -104,7 +104,8 @@ class NewtonSolver {
   VecX v_, v_free_, gradient_, direction_, trial_;
   ProfileCholesky::Matrix hessian_;  ///< its lower triangle, then its factor
   ProfileCholesky cholesky_;
-  std::vector<int> first_;  ///< the Hessian's profile: per unknown, its first coupled column
+  std::vector<int> first_;        ///< the Hessian's profile: per unknown, its first coupled column
+  std::vector<int> lowest_body_;  ///< per body, the lowest body a row couples it with
   std::vector<double> lo_, hi_, cfm_, x_, q_;  ///< per row: bounds now, CFM, c − J v, J d
   std::vector<signed char> regime_;            ///< per row: the part of its law in the Hessian
   double d_m_d_ = 0.0, d_m_offset_ = 0.0;

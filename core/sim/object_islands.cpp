@@ -26,13 +26,17 @@ struct ObjectIslands::Island {
   std::vector<NewtonBody> bodies;
   std::vector<NewtonRow> rows;
   std::vector<size_t> first_row;  ///< per member, its first row (and one past the last)
+  // the step's grouping of the kept contacts by island
+  std::vector<size_t> order;
+  std::vector<int> root;
+  std::vector<size_t> members;
   NewtonSolver solver;
   NewtonResult result;
 
   void Clear();
   void AddBody(int id, dBodyID body, dWorldID world, double step);
-  void ApplyForces(const std::vector<Kept>& kept, const std::vector<size_t>& members,
-                   double step) const;
+  /// for the kept contacts `members` (this island's)
+  void ApplyForces(const std::vector<Kept>& kept, double step) const;
 };
 
 ObjectIslands::ObjectIslands() : island_(std::make_unique<Island>()) {}
@@ -71,16 +75,20 @@ int ObjectIslands::IslandOf(const Kept& kept) {
 
 void ObjectIslands::Solve(dWorldID world, dJointGroupID group, double step) {
   if (kept_.empty()) return;
-  std::vector<size_t> order(kept_.size());
+  // (the island's scratch keeps its storage: nothing is allocated once it has grown)
+  std::vector<size_t>& order = island_->order;
+  std::vector<int>& root = island_->root;
+  order.resize(kept_.size());
   std::iota(order.begin(), order.end(), 0);
-  std::vector<int> island(kept_.size());
-  for (size_t k = 0; k < kept_.size(); ++k) island[k] = IslandOf(kept_[k]);
+  root.resize(kept_.size());
+  for (size_t k = 0; k < kept_.size(); ++k) root[k] = IslandOf(kept_[k]);
   std::stable_sort(order.begin(), order.end(),
-                   [&](size_t x, size_t y) { return island[x] < island[y]; });
-  std::vector<size_t> members;
+                   [&](size_t x, size_t y) { return root[x] < root[y]; });
+  std::vector<size_t>& members = island_->members;
+  members.clear();
   for (size_t k = 0; k < order.size(); ++k) {
     members.push_back(order[k]);
-    if (k + 1 == order.size() || island[order[k + 1]] != island[order[k]]) {
+    if (k + 1 == order.size() || root[order[k + 1]] != root[order[k]]) {
       SolveIsland(members, world, group, step);
       members.clear();
     }
@@ -147,7 +155,7 @@ void ObjectIslands::SolveIsland(const std::vector<size_t>& members, dWorldID wor
   const bool converged = island.solver.Solve(island.bodies, island.rows, step, {}, &island.result);
   statistics_.iterations += island.result.iterations;
   if (converged) {
-    island.ApplyForces(kept_, members, step);
+    island.ApplyForces(kept_, step);
     return;
   }
   ++statistics_.fallbacks;
@@ -163,8 +171,7 @@ void ObjectIslands::SolveIsland(const std::vector<size_t>& members, dWorldID wor
 // lands on the solver's velocity (λ itself is as sensitive to v' as 1 / cfm: a velocity error of
 // 1e-12 m/s is 1e-3 N on a hard row, and h M⁻¹ Σ Jᵀλ would not land on v'); the kept contacts'
 // feedback as ODE reports it, from λ
-void ObjectIslands::Island::ApplyForces(const std::vector<Kept>& kept,
-                                        const std::vector<size_t>& members, double step) const {
+void ObjectIslands::Island::ApplyForces(const std::vector<Kept>& kept, double step) const {
   for (size_t k = 0; k < bodies.size(); ++k) {
     const NewtonBody& body = bodies[k];
     const Vec6 change = result.velocity[k] - body.free_velocity;
