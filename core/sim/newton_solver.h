@@ -62,7 +62,8 @@ struct NewtonRow {
 struct NewtonOptions {
   int max_iterations = 100;  ///< Newton steps in all rounds together
   int max_rounds = 100;      ///< rounds of friction bounds (each takes a Newton step or more)
-  double velocity_tolerance = 1e-12;  ///< a Newton step smaller than this (m/s, mass-weighted) ends
+  double velocity_tolerance = 1e-12;  ///< a Newton step smaller than this on every body (m/s,
+                                      ///< √(dᵀ M d / m) per body) ends
   double bound_tolerance = 1e-9;      ///< relative change of a friction force that needs a round
 };
 
@@ -84,6 +85,7 @@ class NewtonSolver {
  private:
   void SetProfile(size_t bodies, const std::vector<NewtonRow>& rows);
   double RowVelocity(const NewtonRow& row, const VecX& v) const;
+  double StepSize(const std::vector<NewtonBody>& bodies) const;
   double RowForce(size_t i, double x) const;
   signed char Regime(size_t i, double x) const;
   void SetBounds(const std::vector<NewtonRow>& rows);
@@ -100,12 +102,10 @@ class NewtonSolver {
   bool BoundsSettled(const std::vector<NewtonRow>& rows, double tolerance);
 
   double step_ = 0.0;
-  double mass_sum_ = 0.0;
   VecX v_, v_free_, gradient_, direction_, trial_;
-  ProfileCholesky::Matrix hessian_;  ///< its lower triangle, then its factor
-  ProfileCholesky cholesky_;
-  std::vector<int> first_;        ///< the Hessian's profile: per unknown, its first coupled column
-  std::vector<int> lowest_body_;  ///< per body, the lowest body a row couples it with
+  ProfileCholesky cholesky_;      ///< the Hessian's lower triangle in its profile, then its factor
+  std::vector<int> lowest_body_;  ///< the Hessian's block profile: per body, the lowest body a
+                                  ///< row couples it with
   std::vector<double> lo_, hi_, cfm_, x_, q_;  ///< per row: bounds now, CFM, c − J v, J d
   std::vector<signed char> regime_;            ///< per row: the part of its law in the Hessian
   double d_m_d_ = 0.0, d_m_offset_ = 0.0;

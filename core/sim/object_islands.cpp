@@ -9,6 +9,7 @@
 #include "core/sim/newton_solver.h"
 #include "core/sim/ode_contact_rows.h"
 #include "core/sim/ode_conversions.h"
+#include "core/sim/ode_joint_rows.h"
 
 namespace lamina::core {
 
@@ -19,6 +20,13 @@ struct ObjectIslands::Kept {
   dJointFeedback* feedback;
 };
 
+struct ObjectIslands::KeptJoint {
+  dJointID joint;
+  int a, b;  ///< world ids of the first and second body, -1: the world
+  dBodyID body_a, body_b;
+  Vec3 hinge_axis2;
+};
+
 // one island's solve; the vectors keep their storage from island to island
 struct ObjectIslands::Island {
   std::vector<int> ids;  ///< island index -> world id
@@ -26,10 +34,11 @@ struct ObjectIslands::Island {
   std::vector<NewtonBody> bodies;
   std::vector<NewtonRow> rows;
   std::vector<size_t> first_row;  ///< per member, its first row (and one past the last)
-  // the step's grouping of the kept contacts by island
+  // the step's grouping of the kept contacts and joints by island
   std::vector<size_t> order;
   std::vector<int> root;
-  std::vector<size_t> members;
+  std::vector<size_t> members;        ///< this island's kept contacts
+  std::vector<size_t> joint_members;  ///< its kept joints
   NewtonSolver solver;
   NewtonResult result;
 
@@ -50,6 +59,7 @@ void ObjectIslands::Begin(int count) {
   ode_.assign(count, 0);
   local_.assign(count, -1);
   kept_.clear();
+  joints_.clear();
 }
 
 int ObjectIslands::Root(int id) {
@@ -69,30 +79,51 @@ void ObjectIslands::Keep(const dContact& contact, int a, int b, dBodyID body_a, 
   kept_.push_back({contact, a, b, body_a, body_b, feedback});
 }
 
-int ObjectIslands::IslandOf(const Kept& kept) {
+void ObjectIslands::KeepJoint(dJointID joint, int a, int b, const Vec3& hinge_axis2) {
+  joints_.push_back({joint, a, b, dJointGetBody(joint, 0), dJointGetBody(joint, 1), hinge_axis2});
+  if (b >= 0) Link(a, b);
+}
+
+int ObjectIslands::IslandOf(size_t item) {
+  if (item >= kept_.size()) return Root(joints_[item - kept_.size()].a);
+  const Kept& kept = kept_[item];
   return Root(kept.a >= 0 ? kept.a : kept.b);
 }
 
 void ObjectIslands::Solve(dWorldID world, dJointGroupID group, double step) {
-  if (kept_.empty()) return;
+  const size_t items = kept_.size() + joints_.size();
+  if (items == 0) return;
   // (the island's scratch keeps its storage: nothing is allocated once it has grown)
   std::vector<size_t>& order = island_->order;
   std::vector<int>& root = island_->root;
-  order.resize(kept_.size());
+  order.resize(items);
   std::iota(order.begin(), order.end(), 0);
-  root.resize(kept_.size());
-  for (size_t k = 0; k < kept_.size(); ++k) root[k] = IslandOf(kept_[k]);
+  root.resize(items);
+  for (size_t k = 0; k < items; ++k) root[k] = IslandOf(k);
   std::stable_sort(order.begin(), order.end(),
                    [&](size_t x, size_t y) { return root[x] < root[y]; });
   std::vector<size_t>& members = island_->members;
+  std::vector<size_t>& joint_members = island_->joint_members;
   members.clear();
+  joint_members.clear();
   for (size_t k = 0; k < order.size(); ++k) {
-    members.push_back(order[k]);
+    if (order[k] < kept_.size()) {
+      members.push_back(order[k]);
+    } else {
+      joint_members.push_back(order[k] - kept_.size());
+    }
     if (k + 1 == order.size() || root[order[k + 1]] != root[order[k]]) {
-      SolveIsland(members, world, group, step);
+      // (an island a later link made ODE's has no kept contact: its joints stay in ODE)
+      if (!ode_[root[order[k]]]) SolveIsland(world, group, step);
       members.clear();
+      joint_members.clear();
     }
   }
+}
+
+void ObjectIslands::Restore() {
+  for (dJointID joint : disabled_) dJointEnable(joint);
+  disabled_.clear();
 }
 
 void ObjectIslands::Island::Clear() {
@@ -129,8 +160,29 @@ void ObjectIslands::Island::AddBody(int id, dBodyID body, dWorldID world, double
   bodies.push_back(b);
 }
 
-void ObjectIslands::SolveIsland(const std::vector<size_t>& members, dWorldID world,
-                                dJointGroupID group, double step) {
+void ObjectIslands::SolveIsland(dWorldID world, dJointGroupID group, double step) {
+  Island& island = *island_;
+  ++statistics_.islands;
+  const bool built = BuildIsland(world, step);
+  const bool converged =
+      built && island.solver.Solve(island.bodies, island.rows, step, {}, &island.result);
+  if (built) statistics_.iterations += island.result.iterations;
+  if (!converged) {
+    ++statistics_.fallbacks;
+    HandBack(world, group);
+    return;
+  }
+  island.ApplyForces(kept_, step);
+  for (size_t j : island.joint_members) {
+    dJointDisable(joints_[j].joint);  // ODE's step only integrates: Restore enables it again
+    disabled_.push_back(joints_[j].joint);
+  }
+}
+
+// the island's bodies (a robot's children first, then its parents: the order the joints were
+// kept in, for a narrow profile; then the contacts' bodies) and rows; false when a joint is not
+// one ode_joint_rows.h replicates
+bool ObjectIslands::BuildIsland(dWorldID world, double step) {
   Island& island = *island_;
   island.Clear();
   auto add = [&](int id, dBodyID body) {
@@ -138,11 +190,13 @@ void ObjectIslands::SolveIsland(const std::vector<size_t>& members, dWorldID wor
     local_[id] = static_cast<int>(island.bodies.size());
     island.AddBody(id, body, world, step);
   };
-  for (size_t k : members) {
+  for (size_t j : island.joint_members) add(joints_[j].a, joints_[j].body_a);
+  for (size_t j : island.joint_members) add(joints_[j].b, joints_[j].body_b);
+  for (size_t k : island.members) {
     add(kept_[k].a, kept_[k].body_a);
     add(kept_[k].b, kept_[k].body_b);
   }
-  for (size_t k : members) {
+  for (size_t k : island.members) {
     const Kept& kept = kept_[k];
     island.first_row.push_back(island.rows.size());
     const int ia = kept.a >= 0 ? local_[kept.a] : -1;
@@ -150,16 +204,20 @@ void ObjectIslands::SolveIsland(const std::vector<size_t>& members, dWorldID wor
     ContactJointRows(kept.contact, kept.body_a, kept.body_b, ia, ib, world, step, &island.rows);
   }
   island.first_row.push_back(island.rows.size());
-  for (int id : island.ids) local_[id] = -1;
-  ++statistics_.islands;
-  const bool converged = island.solver.Solve(island.bodies, island.rows, step, {}, &island.result);
-  statistics_.iterations += island.result.iterations;
-  if (converged) {
-    island.ApplyForces(kept_, step);
-    return;
+  bool known = true;
+  for (size_t j : island.joint_members) {
+    const KeptJoint& kept = joints_[j];
+    const int ib = kept.b >= 0 ? local_[kept.b] : -1;
+    known = known &&
+            JointRows(kept.joint, local_[kept.a], ib, kept.hinge_axis2, world, step, &island.rows);
   }
-  ++statistics_.fallbacks;
-  for (size_t k : members) {
+  for (int id : island.ids) local_[id] = -1;
+  return known;
+}
+
+// ODE's solver takes the island: its contact joints are made (its robot joints stay enabled)
+void ObjectIslands::HandBack(dWorldID world, dJointGroupID group) {
+  for (size_t k : island_->members) {
     const Kept& kept = kept_[k];
     dJointID joint = dJointCreateContact(world, group, &kept.contact);
     dJointAttach(joint, kept.body_a, kept.body_b);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The share of a step that Lamina's Newton solver takes (solver "newton"): every island made only
-// of free rigid objects and their contacts.
+// The share of a step that Lamina's Newton solver takes (solver "newton"): every island of free
+// rigid objects, robots and their contacts.
 //
 // - The contact joints of such an island are kept as dContacts instead of being created in ODE.
 //   After the solve (newton_solver.h) every body gets its constraint wrench M (v' − v_free) / h
@@ -11,9 +11,12 @@
 //   the swap of a joint whose first body is the fixed world), so the answer is dWorldStep's to the
 //   solver's tolerance where ODE's Dantzig solver is exact (newton_solver.h: where friction
 //   saturates, this answer is the consistent one).
-// - An island with a robot link, with a body held by a persistent ODE joint (a world joint, the
-//   mouse spring) or whose solve does not converge gets its ODE joints as before, and ODE's
-//   solver takes it in the same step.
+// - A robot's hinges and motors (ode_robot.h) are kept too: their rows are ODE's
+//   (ode_joint_rows.h), and when the island's solve converges the joints are disabled for ODE's
+//   step, which then only integrates the bodies, and enabled again after it (Restore).
+// - An island with a body held by another persistent ODE joint (a world joint, the mouse
+//   spring), with a joint outside what ode_joint_rows.h replicates, or whose solve does not
+//   converge gets its ODE joints as before, and ODE's solver takes it in the same step.
 // - Contact feedback: a kept contact fills its dJointFeedback (force and torque on each body, as
 //   ODE reports them) from λ.
 // Units: SI; forces in N, torques in N·m about each body's centre of mass, world axes.
@@ -22,6 +25,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/math_types.h"
 #include "core/sim/ode_fwd.h"
 
 namespace lamina::core {
@@ -52,22 +56,33 @@ class ObjectIslands {
   /// the fixed world or a kinematic body), reporting into `feedback` when not null.
   void Keep(const dContact& contact, int a, int b, dxBody* body_a, dxBody* body_b,
             dJointFeedback* feedback);
-  /// Solves every island of the kept contacts, adds the forces to the bodies; an island that
-  /// does not converge gets its contact joints in `group`.
+  /// Keeps a robot's hinge or motor `joint` between its first body (world id `a`) and its
+  /// second (`b`, -1: the world), and links them into one island. `hinge_axis2`: ode_joint_rows.h.
+  /// Joints kept in children-first order keep the solver's matrix narrow.
+  void KeepJoint(dxJoint* joint, int a, int b, const Vec3& hinge_axis2);
+  /// Solves every island of the kept contacts and joints, adds the forces to the bodies and
+  /// disables the kept joints of the solved islands; an island that does not converge gets its
+  /// contact joints in `group` (and keeps its joints).
   void Solve(dxWorld* world, dxJointGroup* group, double step);
+  /// After ODE's step (or a failure before it): the joints Solve disabled are enabled again.
+  void Restore();
   const Statistics& statistics() const { return statistics_; }
 
  private:
-  struct Kept;    ///< a kept contact joint (object_islands.cpp)
-  struct Island;  ///< one island's solve and its scratch (object_islands.cpp)
+  struct Kept;       ///< a kept contact joint (object_islands.cpp)
+  struct KeptJoint;  ///< a kept robot joint (object_islands.cpp)
+  struct Island;     ///< one island's solve and its scratch (object_islands.cpp)
   int Root(int id);
-  int IslandOf(const Kept& kept);
-  void SolveIsland(const std::vector<size_t>& members, dxWorld* world, dxJointGroup* group,
-                   double step);
+  int IslandOf(size_t item);  ///< item: a kept contact, then kept joints after them
+  void SolveIsland(dxWorld* world, dxJointGroup* group, double step);
+  bool BuildIsland(dxWorld* world, double step);
+  void HandBack(dxWorld* world, dxJointGroup* group);
 
   std::vector<int> parent_;
   std::vector<char> ode_;
   std::vector<Kept> kept_;
+  std::vector<KeptJoint> joints_;
+  std::vector<dxJoint*> disabled_;
   std::vector<int> local_;  ///< world id -> index in the island being solved, or -1
   std::unique_ptr<Island> island_;
   Statistics statistics_;

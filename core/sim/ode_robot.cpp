@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/geometry/mass_properties.h"
 #include "core/robot/kinematics.h"
@@ -22,6 +24,10 @@ constexpr double kStopWrapMargin = 0.1;
 constexpr double kAtStopTolerance = 1e-9;
 // fastest correction of a joint beyond its range (rad/s or m/s)
 constexpr double kMaxStopCorrectionSpeed = 0.5;
+// dry joint friction's CFM ((rad/s)/(N·m) or (m/s)/N): a sticking joint creeps 1e-9 rad/s per
+// N·m it holds. Not 0: every row of the Newton solver is soft (ode_joint_rows.h), and both
+// solvers then solve the same rows
+constexpr double kDryFrictionCfm = 1e-9;
 // ODE rejects massless bodies: a massless moving link gets this mass (kg), as in Klamp't
 constexpr double kMinimumLinkMass = 1e-3;
 
@@ -62,6 +68,33 @@ bool IsStandardFloatingBase(const RobotDesc& robot, int first, int last) {
     }
   }
   return true;
+}
+
+// every link after the links below it (a post-order of the tree)
+std::vector<int> ChildrenFirst(const RobotDesc& robot) {
+  const int count = static_cast<int>(robot.links.size());
+  std::vector<std::vector<int>> children(count);
+  std::vector<int> roots;
+  for (int i = 0; i < count; ++i) {
+    const int parent = robot.links[i].parent;
+    (parent >= 0 && parent < count ? children[parent] : roots).push_back(i);
+  }
+  std::vector<int> order;
+  std::vector<std::pair<int, size_t>> stack;  // a link and its next child
+  for (int root : roots) {
+    stack.emplace_back(root, 0);
+    while (!stack.empty()) {
+      const int link = stack.back().first;
+      const size_t next = stack.back().second++;
+      if (next < children[link].size()) {
+        stack.emplace_back(children[link][next], 0);
+      } else {
+        order.push_back(link);
+        stack.pop_back();
+      }
+    }
+  }
+  return order;
 }
 
 }  // namespace
@@ -112,6 +145,7 @@ OdeRobot::OdeRobot(dWorldID world, const RobotDesc& robot, Diagnostics& diagnost
   }
   BuildBodies(world, build, diagnostics);
   BuildJoints(world, build);
+  children_first_ = ChildrenFirst(robot);
   SetConfig(robot.InitialConfig());
   SetVelocity(robot.InitialVelocity());
 }
@@ -139,6 +173,7 @@ void OdeRobot::BuildBodies(dWorldID world, const VecX& q, Diagnostics& diagnosti
     const Link& carrier = links_[owner[k]];
     const Pose o_from_k = frames[owner[k]].inverse() * frames[k];
     links_[k].body = carrier.body;
+    links_[k].carrier = owner[k];
     links_[k].rotation_in_body = o_from_k.linear();
     links_[k].com = o_from_k.inverse() * carrier.com;
   }
@@ -182,6 +217,7 @@ void OdeRobot::CreateBody(dWorldID world, int o, const std::vector<int>& owner,
   Link& link = links_[o];
   link.body = dBodyCreate(world);
   link.owns_body = true;
+  link.carrier = o;
   dBodySetFiniteRotationMode(link.body, 1);
   // a translating floating base has no rotational DOFs: its body never turns
   if (o == floating_link_ && !floating_rotates()) dBodySetMaxAngularSpeed(link.body, 0.0);
@@ -221,6 +257,10 @@ void OdeRobot::BuildJoints(dWorldID world, const VecX& q) {
       dJointAttach(link.joint, link.body, parent);
       dJointSetHingeAnchor(link.joint, origin.x(), origin.y(), origin.z());
       dJointSetHingeAxis(link.joint, axis.x(), axis.y(), axis.z());
+      // as setAxes (ode/src/joints/joint.cpp) keeps it: in the parent body's axes, normalized
+      link.hinge_axis2 =
+          parent != nullptr ? Vec3(ToMat3(dBodyGetRotation(parent)).transpose() * axis.normalized())
+                            : axis;
       link.servo = dJointCreateAMotor(world, nullptr);
       dJointAttach(link.servo, link.body, parent);
       dJointSetAMotorMode(link.servo, dAMotorUser);
@@ -231,6 +271,7 @@ void OdeRobot::BuildJoints(dWorldID world, const VecX& q) {
       dJointSetAMotorParam(link.servo, dParamFMax, 0.0);
       dJointSetAMotorParam(link.servo, dParamFMax2, 0.0);
     } else {
+      hinges_only_ = false;
       link.joint = dJointCreateSlider(world, nullptr);
       dJointAttach(link.joint, link.body, parent);
       dJointSetSliderAxis(link.joint, axis.x(), axis.y(), axis.z());
@@ -501,9 +542,9 @@ void OdeRobot::SetServos(const std::vector<ServoMotorCommand>& motors) {
   }
 }
 
-// The joint's own motor: dry friction as a hard velocity-0 row bounded by μ_D (+ μ_V |dq| when
-// the servo does not already damp with μ_V), or pure viscous friction as an implicit damper
-// (velocity 0, cfm 1 / μ_V).
+// The joint's own motor: dry friction as a velocity-0 row bounded by μ_D (+ μ_V |dq| when the
+// servo does not already damp with μ_V) of CFM kDryFrictionCfm, or pure viscous friction as an
+// implicit damper (velocity 0, cfm 1 / μ_V).
 void OdeRobot::SetJointFriction(const std::vector<DriverDesc>& drivers, const VecX& q,
                                 const VecX& dq, const std::vector<ServoMotorCommand>& motors) {
   for (const DriverDesc& driver : drivers) {
@@ -516,7 +557,7 @@ void OdeRobot::SetJointFriction(const std::vector<DriverDesc>& drivers, const Ve
     }
     const double dry = std::max(0.0, driver.dry_friction);
     const double viscous = viscous_in_servo ? 0.0 : std::max(0.0, driver.viscous_friction);
-    double fmax = 0.0, cfm = 0.0;
+    double fmax = 0.0, cfm = kDryFrictionCfm;
     if (dry > 0.0) {
       fmax = dry + viscous * std::abs(dq[i]);
     } else if (viscous > 0.0) {

@@ -2,44 +2,65 @@
 #include "core/sim/profile_cholesky.h"
 
 #include <algorithm>
-#include <cmath>
+
+#include <Eigen/Cholesky>
 
 namespace lamina::core {
 
-bool ProfileCholesky::Factor(Matrix* a, const std::vector<int>& first) {
-  Matrix& l = *a;
-  const int n = static_cast<int>(l.rows());
-  for (int i = 0; i < n; ++i) {
-    for (int j = first[i]; j <= i; ++j) {
-      // L(i,k) L(j,k) over the columns both rows have
-      const int k0 = std::max(first[i], first[j]);
-      double s = l(i, j) - l.row(i).segment(k0, j - k0).dot(l.row(j).segment(k0, j - k0));
-      if (j < i) {
-        l(i, j) = s / l(j, j);
-      } else {
-        if (!(s > 0.0) || !std::isfinite(s)) return false;
-        l(i, i) = std::sqrt(s);
-      }
-    }
+namespace {
+
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+
+}  // namespace
+
+void ProfileCholesky::Reset(const std::vector<int>& first) {
+  first_ = first;
+  offset_.resize(first.size());
+  int next = 0;
+  for (size_t i = 0; i < first.size(); ++i) {
+    offset_[i] = next - first[i];
+    next += static_cast<int>(i) - first[i] + 1;
   }
-  factor_ = a;
-  first_ = &first;
+  values_.resize(static_cast<size_t>(next));
+  for (Block& b : values_) b.setZero();
+}
+
+bool ProfileCholesky::Factor() {
+  const int n = blocks();
+  Block sum;
+  for (int i = 0; i < n; ++i) {
+    for (int j = first_[i]; j < i; ++j) {
+      // L(i,j) = (A(i,j) − Σ L(i,k) L(j,k)ᵀ) L(j,j)⁻ᵀ over the block columns both rows have
+      sum = block(i, j);
+      for (int k = std::max(first_[i], first_[j]); k < j; ++k)
+        sum.noalias() -= block(i, k) * block(j, k).transpose();
+      block(j, j).transpose().triangularView<Eigen::Upper>().solveInPlace<Eigen::OnTheRight>(sum);
+      block(i, j) = sum;
+    }
+    sum = block(i, i);
+    for (int k = first_[i]; k < i; ++k) sum.noalias() -= block(i, k) * block(i, k).transpose();
+    Eigen::LLT<Block> llt(sum);
+    if (llt.info() != Eigen::Success || !llt.matrixLLT().allFinite()) return false;
+    block(i, i) = llt.matrixL();
+  }
   return true;
 }
 
 void ProfileCholesky::Solve(Eigen::VectorXd* b) const {
-  const Matrix& l = *factor_;
-  const std::vector<int>& first = *first_;
   Eigen::VectorXd& x = *b;
-  const int n = static_cast<int>(l.rows());
+  const int n = blocks();
   for (int i = 0; i < n; ++i) {  // L y = b
-    const int k0 = first[i];
-    x(i) = (x(i) - l.row(i).segment(k0, i - k0).dot(x.segment(k0, i - k0))) / l(i, i);
+    Vec6 y = x.segment<6>(6 * i);
+    for (int k = first_[i]; k < i; ++k) y.noalias() -= block(i, k) * x.segment<6>(6 * k);
+    block(i, i).triangularView<Eigen::Lower>().solveInPlace(y);
+    x.segment<6>(6 * i) = y;
   }
-  for (int i = n - 1; i >= 0; --i) {  // Lᵀ x = y, column by column of Lᵀ (row i of L)
-    x(i) /= l(i, i);
-    const int k0 = first[i];
-    x.segment(k0, i - k0) -= x(i) * l.row(i).segment(k0, i - k0).transpose();
+  for (int i = n - 1; i >= 0; --i) {  // Lᵀ x = y, block column by block column of Lᵀ
+    Vec6 y = x.segment<6>(6 * i);
+    block(i, i).transpose().triangularView<Eigen::Upper>().solveInPlace(y);
+    x.segment<6>(6 * i) = y;
+    for (int k = first_[i]; k < i; ++k)
+      x.segment<6>(6 * k).noalias() -= block(i, k).transpose() * y;
   }
 }
 

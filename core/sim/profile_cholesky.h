@@ -1,31 +1,42 @@
 // SPDX-License-Identifier: MIT
-// Cholesky factorization of a symmetric positive definite matrix that only touches its profile
-// (envelope): row i's entries from its first nonzero column `first[i]` to the diagonal. The
-// factor has no fill outside the profile, so a chain of bodies (a stack: each touches the next)
-// costs Σ width² instead of n³/3: 60 unknowns of a 10-box stack, rows 6 to 12 wide, take about
-// 7 000 multiply-adds instead of 72 000. Used by the Newton solver (newton_solver.h).
+// Cholesky factorization of a symmetric positive definite matrix of 6 × 6 blocks (one per rigid
+// body: linear, angular) stored and factored only in its block profile (envelope): block row i's
+// blocks from its first nonzero block column `first[i]` to the diagonal. The factor has no fill
+// outside the profile, so a chain of bodies (a stack: each touches the next) costs about
+// n · 2 · 6³ multiply-adds instead of (6n)³/3, and a robot's tree with every link before its
+// parent stays as narrow (object_islands.h); the work is done in fixed-size 6 × 6 products.
+// Used by the Newton solver (newton_solver.h).
 #pragma once
 
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/StdVector>
 
 namespace lamina::core {
 
 class ProfileCholesky {
  public:
-  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  using Block = Eigen::Matrix<double, 6, 6>;
 
-  /// Factors the lower triangle of `a` within the profile `first` (first[i] <= i, and entries
-  /// left of first[i] are zero) as L Lᵀ, in place of `a`. False when `a` is not positive
-  /// definite (a pivot <= 0 or not finite).
-  bool Factor(Matrix* a, const std::vector<int>& first);
-  /// Solves L Lᵀ x = b in place with the factor of the last Factor call.
+  /// Takes the block profile (first[i] <= i for every block row i) and sets the matrix to zero.
+  /// Storage is kept from call to call (no allocation once it has grown).
+  void Reset(const std::vector<int>& first);
+  int blocks() const { return static_cast<int>(first_.size()); }
+  /// Block (i, j) of the lower triangle, first[i] <= j <= i (the matrix, or after Factor L). A
+  /// diagonal block holds the whole symmetric block; its lower triangle is read.
+  Block& block(int i, int j) { return values_[offset_[i] + j]; }
+  const Block& block(int i, int j) const { return values_[offset_[i] + j]; }
+  /// Factors the matrix as L Lᵀ in place. False when it is not positive definite (a pivot <= 0
+  /// or not finite).
+  bool Factor();
+  /// Solves L Lᵀ x = b in place with the factor (b: 6 entries per block).
   void Solve(Eigen::VectorXd* b) const;
 
  private:
-  const Matrix* factor_ = nullptr;
-  const std::vector<int>* first_ = nullptr;
+  std::vector<int> first_;
+  std::vector<int> offset_;  ///< block (i, j) is values_[offset_[i] + j]
+  std::vector<Block, Eigen::aligned_allocator<Block>> values_;
 };
 
 }  // namespace lamina::core

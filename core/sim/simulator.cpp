@@ -423,6 +423,7 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     result = IntegrateResult::kOdeError;
     MarkOdeWorldFailed(ode_world_.get());
   }
+  islands_.Restore();  // the robot joints the Newton solver took, back in ODE
   dJointGroupEmpty(contact_group_.get());
   statistics_.time_split.solver += watch.Lap();
   if (result == IntegrateResult::kOk && !bodies_.StateIsFinite()) {

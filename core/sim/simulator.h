@@ -347,6 +347,7 @@ class Simulator {
     std::vector<double> gaps, gaps_before;  ///< joint gaps now and at the sub-step's start
     std::vector<Pose> frames;               ///< link frames, for the gaps
     std::vector<char> known;                ///< links with a frame (not virtual)
+    std::vector<int> joint_count;           ///< per owning link: the robot's joints on its body
   };
   struct RobotPlacement {  ///< where a robot is, to place it again after a rebuild
     VecX q, dq;
@@ -395,10 +396,16 @@ class Simulator {
 
   // contact joints and feedback (simulator_contacts.cpp)
   void AddContactJoints(const ContactPair& pair, const Vec3* anchor_velocities, double step);
-  /// solver "newton": the islands of free objects, before the contact joints (object_islands.h)
+  /// solver "newton": the islands of free objects and robots, before the contact joints
+  /// (object_islands.h)
   void PrepareObjectIslands();
-  /// `id` moves freely and is awake (a body the Newton solver can take)
-  bool FreeForIslands(int id) const;
+  /// The world id that stands for `id`'s ODE body in the islands (a merged link: the link that
+  /// owns the body), or -1 when it does not move freely or sleeps
+  int IslandBody(int id) const;
+  /// Robot `robot` can go to the Newton solver this step: hinges only, every body moving
+  /// freely and awake, none dragged, no joint on its bodies but its own
+  bool RobotForIslands(int robot);
+  void KeepRobotJoints(int robot);
 
   // the accuracy meter (simulator_meter.cpp)
   void SampleStepError(double step);

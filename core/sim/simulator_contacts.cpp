@@ -8,6 +8,7 @@
 #include "core/contact/surface_blend.h"
 #include "core/sim/contact_rows.h"
 #include "core/sim/ode_conversions.h"
+#include "core/sim/ode_robot.h"
 #include "core/sim/simulator.h"
 
 namespace lamina::core {
@@ -60,8 +61,8 @@ void Simulator::AddContactJoints(const ContactPair& pair, const Vec3* anchor_vel
   const Vec3 angular =
       law.surface.rolling > 0.0 ? RelativeAngularVelocity(body_a, body_b) : Vec3::Zero();
   // solver "newton": the joints of an object island are kept for its solve (object_islands.h)
-  const int free_a = FreeForIslands(pair.a) ? pair.a : -1;
-  const int free_b = FreeForIslands(pair.b) ? pair.b : -1;
+  const int free_a = IslandBody(pair.a);
+  const int free_b = IslandBody(pair.b);
   const bool keep = world_.settings.solver == SolverType::kNewton && (free_a >= 0 || free_b >= 0) &&
                     islands_.Takes(free_a >= 0 ? free_a : free_b);
   // the joint in ODE, or null when kept
@@ -92,33 +93,86 @@ void Simulator::AddContactJoints(const ContactPair& pair, const Vec3* anchor_vel
   }
 }
 
-bool Simulator::FreeForIslands(int id) const {
+int Simulator::IslandBody(int id) const {
   const BodyRecord& record = bodies_[id];
-  return record.moves_freely() && dBodyIsEnabled(record.body);
+  if (!record.moves_freely() || !dBodyIsEnabled(record.body)) return -1;
+  if (record.kind != WorldId::Kind::kRobotLink) return id;
+  return world_.RobotLinkId(record.index, robots_[record.index]->link(record.link).carrier);
 }
 
-// robot links, bodies held by a persistent ODE joint (world joints) and the dragged body stay
-// with ODE's solver, and so does every island they are in; a free body touching a sleeping one
-// too (ODE would wake it through the joint)
+// A robot goes to the Newton solver (its hinges and motors kept: object_islands.h) when its
+// joints are hinges, every body moves freely and is awake, none is dragged, and its bodies carry
+// no joint but its own (a world joint keeps it with ODE's solver).
+bool Simulator::RobotForIslands(int robot) {
+  const OdeRobot& sim_robot = *robots_[robot];
+  if (!sim_robot.hinges_only()) return false;
+  const int first = world_.RobotLinkId(robot, 0);
+  std::vector<int>& count = robot_scratch_[robot].joint_count;
+  count.assign(sim_robot.dof(), 0);
+  for (int l = 0; l < sim_robot.dof(); ++l) {
+    const OdeRobot::Link& link = sim_robot.link(l);
+    if (link.kind != OdeRobot::LinkKind::kBody) continue;
+    if (IslandBody(first + l) < 0 || (drag_.active && drag_.body == first + l)) return false;
+    if (link.joint == nullptr) continue;
+    count[link.carrier] += 2;  // the joint and its motor, on the link's body and the parent's
+    const int parent = world_.robots[robot].links[l].parent;
+    if (parent >= 0 && sim_robot.link(parent).body != nullptr)
+      count[sim_robot.link(parent).carrier] += 2;
+  }
+  for (int l = 0; l < sim_robot.dof(); ++l) {
+    const OdeRobot::Link& link = sim_robot.link(l);
+    if (link.owns_body && dBodyGetNumJoints(link.body) != count[l]) return false;
+  }
+  return true;
+}
+
+// every link before its parent, so that the island's matrix stays narrow (object_islands.h)
+void Simulator::KeepRobotJoints(int robot) {
+  const OdeRobot& sim_robot = *robots_[robot];
+  const int first = world_.RobotLinkId(robot, 0);
+  for (int l : sim_robot.children_first()) {
+    const OdeRobot::Link& link = sim_robot.link(l);
+    if (link.joint == nullptr) continue;
+    const int parent = world_.robots[robot].links[l].parent;
+    const int b = parent >= 0 && sim_robot.link(parent).body != nullptr
+                      ? first + sim_robot.link(parent).carrier
+                      : -1;
+    islands_.KeepJoint(link.joint, first + l, b, link.hinge_axis2);
+    islands_.KeepJoint(link.servo, first + l, b, Vec3::Zero());
+  }
+}
+
+// robots that cannot go to the Newton solver, bodies held by a persistent ODE joint (world
+// joints) and the dragged body stay with ODE's solver, and so does every island they are in; a
+// free body touching a sleeping one too (ODE would wake it through the joint)
 void Simulator::PrepareObjectIslands() {
   islands_.Begin(bodies_.size());
+  for (int r = 0; r < robot_count(); ++r) {
+    if (RobotForIslands(r)) {
+      KeepRobotJoints(r);
+      continue;
+    }
+    const int first = world_.RobotLinkId(r, 0);
+    for (int l = 0; l < robots_[r]->dof(); ++l) {
+      const int id = IslandBody(first + l);
+      if (id >= 0) islands_.MarkOde(id);
+    }
+  }
   for (int id = 0; id < bodies_.size(); ++id) {
     const BodyRecord& record = bodies_[id];
-    if (record.body == nullptr) continue;
+    if (record.body == nullptr || record.kind == WorldId::Kind::kRobotLink) continue;
     if (!record.is_object() || dBodyGetNumJoints(record.body) > 0 ||
         (drag_.active && drag_.body == id)) {
       islands_.MarkOde(id);
     }
   }
   for (const ContactPair& pair : contacts_.pairs()) {
-    const bool free_a = FreeForIslands(pair.a), free_b = FreeForIslands(pair.b);
-    if (free_a && free_b) {
-      islands_.Link(pair.a, pair.b);
-    } else if (free_a != free_b) {
-      const BodyRecord& other = bodies_[free_a ? pair.b : pair.a];
-      if (other.body != nullptr && !dBodyIsEnabled(other.body)) {
-        islands_.MarkOde(free_a ? pair.a : pair.b);
-      }
+    const int a = IslandBody(pair.a), b = IslandBody(pair.b);
+    if (a >= 0 && b >= 0) {
+      islands_.Link(a, b);
+    } else if ((a >= 0) != (b >= 0)) {
+      const BodyRecord& other = bodies_[a >= 0 ? pair.b : pair.a];
+      if (other.body != nullptr && !dBodyIsEnabled(other.body)) islands_.MarkOde(a >= 0 ? a : b);
     }
   }
 }

@@ -21,13 +21,25 @@ struct Gap {
   double force = 0.0;     ///< contact force on an object, relative to the world's weight
 };
 
-Gap Compare(const core::Simulator& a, const core::Simulator& b) {
+Gap Compare(core::Simulator& a, core::Simulator& b) {  // (body() is not const)
   Gap gap;
   for (int k = 0; k < a.object_count(); ++k) {
     gap.position = std::max(
         gap.position, (a.GetObjectPose(k).translation() - b.GetObjectPose(k).translation()).norm());
     const core::Twist va = a.GetObjectVelocity(k), vb = b.GetObjectVelocity(k);
     gap.velocity = std::max(gap.velocity, (va.linear - vb.linear).norm());
+  }
+  // robots: every link's frame and velocity (the joint values read from ODE's hinges carry the
+  // joints' misalignment, about 1e-8 rad, with a sign that rounding decides)
+  for (int r = 0; r < a.robot_count(); ++r) {
+    for (int l = 0; l < a.world().robots[r].dof(); ++l) {
+      const int id = a.world().RobotLinkId(r, l);
+      gap.position = std::max(gap.position, (a.body(id).GetTransform().translation() -
+                                             b.body(id).GetTransform().translation())
+                                                .norm());
+      gap.velocity = std::max(
+          gap.velocity, (a.body(id).GetVelocity().linear - b.body(id).GetVelocity().linear).norm());
+    }
   }
   double weight = 0.0;
   for (const core::RigidObjectDesc& object : a.world().objects) weight += object.mass * 9.8;
@@ -51,6 +63,9 @@ Gap LockStep(const std::string& world_file, double step, int steps, core::SimSta
       terrain.sim.surface.friction = friction;
     for (core::RigidObjectDesc& object : loaded.world.objects)
       object.sim.surface.friction = friction;
+    for (core::RobotDesc& robot : loaded.world.robots) {
+      for (core::LinkDesc& link : robot.links) link.sim.surface.friction = friction;
+    }
   }
   core::Simulator exact(loaded.world, {core::SolverType::kStep, 20});
   core::Simulator fast(loaded.world, {core::SolverType::kNewton, 20});
@@ -80,6 +95,7 @@ struct Case {
   double position;     ///< largest gap allowed (m)
   double velocity;     ///< m/s
   bool newton = true;  ///< false: every island is ODE's (robots, world joints), the runs are one
+  double friction = -1.0;  ///< >= 0: every surface's friction coefficient
 };
 
 // Resting, stacked, rolling, bouncing: both solvers meet the same rows and ODE's Dantzig solver
@@ -98,8 +114,17 @@ const Case kCases[] = {
     {"accuracy/incline.xml", 0.001, 500, 1e-8, 1e-6},
     {"accuracy/sliding_block_22_5.xml", 0.001, 1000, 1e-8, 1e-6},
     {"examples/door_drawer.xml", 0.001, 500, 0.0, 0.0, false},
-    {"examples/sensors.xml", 0.001, 500, 1e-12, 1e-10},  // a robot and a free object
     {"examples/two_blocks.xml", 0.001, 500, 1e-12, 1e-10},
+    // robots (ode_joint_rows.h): their hinges, servos and joint friction
+    {"examples/sensors.xml", 0.001, 500, 1e-12, 1e-10},    // a robot and a free object
+    {"stress/chain_robot.xml", 0.001, 500, 1e-11, 1e-10},  // 1.9e-12 m, 1.5e-11 m/s
+    // HRP-2 standing: without friction 5.9e-15 m, 4.1e-12 m/s; with it its feet's friction
+    // saturates in places, as on the incline (1.6e-9 m, 9.6e-7 m/s measured)
+    {"klampt/hrp2_plane.xml", 0.001, 300, 1e-12, 1e-10, true, 0.0},
+    {"klampt/hrp2_plane.xml", 0.001, 300, 1e-8, 5e-6},
+    // (its wheels land at 22 ms, sliding: with friction the runs part there by 0.03 rad/s, as
+    // the sliding cases above do by less)
+    {"klampt/athlete_plane.xml", 0.001, 300, 1e-12, 1e-10, true, 0.0},
 };
 
 class NewtonIslandsWorldTest : public testing::TestWithParam<Case> {};
@@ -107,7 +132,7 @@ class NewtonIslandsWorldTest : public testing::TestWithParam<Case> {};
 TEST_P(NewtonIslandsWorldTest, StepsAsDWorldStepDoes) {
   const Case& c = GetParam();
   core::SimStatistics statistics;
-  const Gap gap = LockStep(c.world, c.step, c.steps, &statistics);
+  const Gap gap = LockStep(c.world, c.step, c.steps, &statistics, nullptr, c.friction);
   std::printf(
       "%s: gap %g m, %g m/s, %g of the weight; islands %ld, fallbacks %ld, Newton "
       "steps %ld\n",
@@ -138,7 +163,7 @@ INSTANTIATE_TEST_SUITE_P(Worlds, NewtonIslandsWorldTest, testing::ValuesIn(kCase
                              const bool first = i == 0 || name[i - 1] == '_';
                              camel += first ? static_cast<char>(std::toupper(name[i])) : name[i];
                            }
-                           return camel;
+                           return param_info.param.friction == 0.0 ? camel + "Frictionless" : camel;
                          });
 
 // A kinematic pusher (infinite mass, its velocity in the rows' right-hand side) shoves a box that
@@ -169,6 +194,38 @@ TEST(NewtonIslandsTest, KinematicPushersHeldForcesAndTheMouseSpringStepAsDWorldS
   EXPECT_LE(gap.position, 1e-12);  // the dragged box is dWorldStep's, the resting pusher Newton's
   EXPECT_LE(gap.velocity, 1e-10);
   EXPECT_EQ(statistics.newton_islands, 300);  // the pusher's, every step
+}
+
+// The TX90's wrist driven into its stops by constant torques (hinge stop rows: the stop ERP,
+// one-sided bounds) and its arm falling under torque mode (no servo rows, joint friction only):
+// the same steps as dWorldStep's.
+TEST(NewtonIslandsTest, RobotJointsDrivenIntoTheirStopsStepAsDWorldStepDoes) {
+  const WorldSetup drive = [](core::Simulator* simulator) {
+    core::RobotController& controller = simulator->controller(0);
+    core::VecX torque = core::VecX::Zero(static_cast<int>(controller.drivers().size()));
+    torque.tail<3>().setConstant(1.0);  // N·m on the wrist
+    ASSERT_TRUE(controller.SetTorque(torque));
+  };
+  core::SimStatistics statistics;
+  const Gap gap = LockStep("examples/sensors.xml", 0.001, 1500, &statistics, drive, 0.0);
+  std::printf("stops: gap %g m, %g m/s\n", gap.position, gap.velocity);
+  EXPECT_LE(gap.position, 1e-10);  // 3.9e-12 m measured
+  EXPECT_LE(gap.velocity, 1e-8);   // 6.6e-10 m/s
+  EXPECT_EQ(statistics.newton_fallbacks, 0);
+  // the wrist reached a stop (within the stop's ERP correction)
+  test::LoadedWorld loaded;
+  test::LoadWorld(test::WorldsPath("examples/sensors.xml"), &loaded);
+  core::Simulator simulator(loaded.world, {core::SolverType::kNewton, 20});
+  drive(&simulator);
+  simulator.Simulate(1.5);
+  const core::RobotDesc& robot = simulator.world().robots[0];
+  const core::VecX q = simulator.GetRobotConfig(0);
+  int at_stop = 0;
+  for (int l = 0; l < robot.dof(); ++l) {
+    const double distance = std::min(q[l] - robot.links[l].q_min, robot.links[l].q_max - q[l]);
+    if (distance < 1e-3) ++at_stop;
+  }
+  EXPECT_GE(at_stop, 1);
 }
 
 }  // namespace

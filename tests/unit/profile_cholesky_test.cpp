@@ -10,47 +10,71 @@
 namespace lamina::core {
 namespace {
 
-// an SPD matrix with the profile `first`: B Bᵀ of a lower-triangular B within the profile, plus
-// a diagonal (B Bᵀ keeps B's profile)
-ProfileCholesky::Matrix RandomSpd(const std::vector<int>& first, std::mt19937* random) {
+// an SPD matrix with the block profile `first` (6 × 6 blocks): B Bᵀ of a lower-triangular B
+// within the profile, plus a diagonal (B Bᵀ keeps B's profile)
+Eigen::MatrixXd RandomSpd(const std::vector<int>& first, std::mt19937* random) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  const int n = static_cast<int>(first.size());
+  const int n = 6 * static_cast<int>(first.size());
   Eigen::MatrixXd b = Eigen::MatrixXd::Zero(n, n);
   for (int i = 0; i < n; ++i) {
-    for (int j = first[i]; j <= i; ++j) b(i, j) = unit(*random);
+    for (int j = 6 * first[i / 6]; j <= i; ++j) b(i, j) = unit(*random);
     b(i, i) = 1.0 + std::abs(b(i, i));
   }
   return b * b.transpose();
 }
 
-TEST(ProfileCholeskyTest, SolvesAsEigensDenseCholeskyOnChainsAndBlocks) {
+// `dense` within the block profile
+void Load(const Eigen::MatrixXd& dense, const std::vector<int>& first, ProfileCholesky* a) {
+  a->Reset(first);
+  for (int i = 0; i < a->blocks(); ++i) {
+    for (int j = first[i]; j <= i; ++j) a->block(i, j) = dense.block<6, 6>(6 * i, 6 * j);
+  }
+}
+
+TEST(ProfileCholeskyTest, SolvesAsEigensDenseCholeskyOnChainsBlocksAndTrees) {
   std::mt19937 random(3);
-  for (int trial = 0; trial < 50; ++trial) {
+  for (int trial = 0; trial < 60; ++trial) {
     const int bodies = 1 + trial % 9;
-    std::vector<int> first(6 * bodies);
-    for (int i = 0; i < 6 * bodies; ++i) {
-      const int body = i / 6;
-      // a chain, with every third body also tied to the first
-      first[i] = 6 * (body % 3 == 2 ? 0 : std::max(body - 1, 0));
+    std::vector<int> first(bodies);
+    for (int body = 0; body < bodies; ++body) {
+      if (trial % 2 == 0) {
+        // a chain, with every third body also tied to the first
+        first[body] = body % 3 == 2 ? 0 : std::max(body - 1, 0);
+      } else {
+        // a robot's tree, every link before its parent: chains of two, the last body the root
+        first[body] = body + 1 == bodies ? 0 : body - body % 2;
+      }
     }
-    ProfileCholesky::Matrix a = RandomSpd(first, &random);
-    const Eigen::MatrixXd dense = a;
-    Eigen::VectorXd x = Eigen::VectorXd::Random(a.rows());
+    const Eigen::MatrixXd dense = RandomSpd(first, &random);
+    ProfileCholesky a;
+    Load(dense, first, &a);
+    Eigen::VectorXd x = Eigen::VectorXd::Random(dense.rows());
     const Eigen::VectorXd expected = dense.llt().solve(x);
-    ProfileCholesky cholesky;
-    ASSERT_TRUE(cholesky.Factor(&a, first));
-    cholesky.Solve(&x);
+    ASSERT_TRUE(a.Factor());
+    a.Solve(&x);
     EXPECT_LE((x - expected).norm(), 1e-10 * (1.0 + expected.norm())) << "trial " << trial;
+    // the factor itself: L Lᵀ = A, L as Eigen's within the profile
+    const Eigen::MatrixXd l = dense.llt().matrixL();
+    for (int i = 0; i < bodies; ++i) {
+      for (int j = first[i]; j < i; ++j) {
+        EXPECT_LE((a.block(i, j) - l.block<6, 6>(6 * i, 6 * j)).norm(), 1e-10) << i << ", " << j;
+      }
+      const ProfileCholesky::Block diagonal = a.block(i, i).triangularView<Eigen::Lower>();
+      EXPECT_LE((diagonal - l.block<6, 6>(6 * i, 6 * i)).norm(), 1e-10) << i;
+    }
   }
 }
 
 TEST(ProfileCholeskyTest, RefusesAMatrixThatIsNotPositiveDefinite) {
-  ProfileCholesky::Matrix a(2, 2);
-  a << 1.0, 2.0, 2.0, 1.0;  // eigenvalues 3 and -1
-  ProfileCholesky cholesky;
-  EXPECT_FALSE(cholesky.Factor(&a, {0, 0}));
-  a << 1.0, 0.0, 0.0, std::nan("");
-  EXPECT_FALSE(cholesky.Factor(&a, {0, 1}));
+  ProfileCholesky a;
+  Eigen::MatrixXd dense = Eigen::MatrixXd::Identity(12, 12);
+  dense(7, 6) = dense(6, 7) = 2.0;  // eigenvalues 3 and -1 in the second block
+  Load(dense, {0, 0}, &a);
+  EXPECT_FALSE(a.Factor());
+  dense = Eigen::MatrixXd::Identity(12, 12);
+  dense(11, 11) = std::nan("");
+  Load(dense, {0, 1}, &a);
+  EXPECT_FALSE(a.Factor());
 }
 
 }  // namespace

@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: MIT
+#include "core/sim/ode_joint_rows.h"
+
+#include <cmath>
+
+#include <ode/ode.h>
+
+#include "core/sim/ode_conversions.h"
+
+namespace lamina::core {
+
+namespace {
+
+// what the rows of one joint share
+struct JointContext {
+  int ia, ib;
+  bool has_b;  ///< the second body is a body (not the world)
+  double cfm;  ///< the world's
+};
+
+Vec6 Stack(const Vec3& linear, const Vec3& angular) {
+  Vec6 j;
+  j << linear, angular;
+  return j;
+}
+
+void AddRow(const JointContext& c, const Vec6& ja, const Vec6& jb, double rhs, double cfm,
+            double lo, double hi, std::vector<NewtonRow>* rows) {
+  NewtonRow row;
+  row.a = c.ia;
+  row.b = c.has_b ? c.ib : -1;
+  row.ja = ja;
+  row.jb = c.has_b ? jb : Vec6::Zero();
+  row.rhs = rhs;
+  row.cfm = cfm;
+  row.lo = lo;
+  row.hi = hi;
+  rows->push_back(row);
+}
+
+// an angular row along `axis`: w_a·axis − w_b·axis
+void AngularRow(const JointContext& c, const Vec3& axis, double rhs, double cfm, double lo,
+                double hi, std::vector<NewtonRow>* rows) {
+  AddRow(c, Stack(Vec3::Zero(), axis), Stack(Vec3::Zero(), -axis), rhs, cfm, lo, hi, rows);
+}
+
+// setBall (joint_internal.h): the anchor seen from both bodies meets; the right-hand side pulls
+// the second body's anchor onto the first's at the world ERP
+void BallRows(dJointID joint, const JointContext& c, double k, std::vector<NewtonRow>* rows) {
+  dVector3 anchor1, anchor2;
+  dJointGetHingeAnchor(joint, anchor1);
+  dJointGetHingeAnchor2(joint, anchor2);
+  const Vec3 arm1 = ToVec3(anchor1) - ToVec3(dBodyGetPosition(dJointGetBody(joint, 0)));
+  dBodyID second = dJointGetBody(joint, 1);
+  const Vec3 arm2 =
+      second != nullptr ? Vec3(ToVec3(anchor2) - ToVec3(dBodyGetPosition(second))) : Vec3::Zero();
+  const Vec3 error = ToVec3(anchor2) - ToVec3(anchor1);
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 e = Vec3::Unit(i);
+    AddRow(c, Stack(e, arm1.cross(e)), Stack(-e, -arm2.cross(e)), k * error(i), c.cfm, -kInf,
+           kInf, rows);
+  }
+}
+
+// the stop row of addLimot for an unpowered hinge: pushes back at the stop ERP, one-sided
+void HingeStopRow(dJointID joint, const JointContext& c, const Vec3& axis, double step,
+                  std::vector<NewtonRow>* rows) {
+  const double lo = dJointGetHingeParam(joint, dParamLoStop);
+  const double hi = dJointGetHingeParam(joint, dParamHiStop);
+  const double angle = dJointGetHingeAngle(joint);
+  if (!((lo >= -M_PI || hi <= M_PI) && lo <= hi)) return;  // getInfo1's test
+  const bool low = angle <= lo;
+  if (!low && angle < hi) return;
+  const double error = low ? angle - lo : angle - hi;
+  const double rhs = -dJointGetHingeParam(joint, dParamStopERP) / step * error;
+  const double cfm = dJointGetHingeParam(joint, dParamStopCFM);
+  if (lo == hi) {
+    AngularRow(c, axis, rhs, cfm, -kInf, kInf, rows);
+  } else {
+    AngularRow(c, axis, rhs, cfm, low ? 0.0 : -kInf, low ? kInf : 0.0, rows);
+  }
+}
+
+bool HingeRows(dJointID joint, const JointContext& c, const Vec3& axis2, double erp, double step,
+               std::vector<NewtonRow>* rows) {
+  if (dJointGetHingeParam(joint, dParamFMax) > 0.0 || dJointGetHingeParam(joint, dParamBounce) > 0.0)
+    return false;
+  const double k = erp / step;
+  BallRows(joint, c, k, rows);
+  dVector3 axis1;
+  dJointGetHingeAxis(joint, axis1);
+  dVector3 p, q;
+  dPlaneSpace(axis1, p, q);
+  const Vec3 ax1 = ToVec3(axis1);
+  dBodyID second = dJointGetBody(joint, 1);
+  const Vec3 ax2 = second != nullptr ? Vec3(ToMat3(dBodyGetRotation(second)) * axis2) : axis2;
+  const Vec3 misalignment = ax1.cross(ax2);
+  AngularRow(c, ToVec3(p), k * misalignment.dot(ToVec3(p)), c.cfm, -kInf, kInf, rows);
+  AngularRow(c, ToVec3(q), k * misalignment.dot(ToVec3(q)), c.cfm, -kInf, kInf, rows);
+  HingeStopRow(joint, c, ax1, step, rows);
+  return true;
+}
+
+// one row per powered axis, bounded by its fmax
+bool AngularMotorRows(dJointID joint, const JointContext& c, std::vector<NewtonRow>* rows) {
+  if (dJointGetAMotorMode(joint) != dAMotorUser) return false;
+  const int axes = dJointGetAMotorNumAxes(joint);
+  for (int i = 0; i < axes; ++i) {
+    const int group = dParamGroup * i;
+    if (std::isfinite(dJointGetAMotorParam(joint, dParamLoStop + group)) ||
+        std::isfinite(dJointGetAMotorParam(joint, dParamHiStop + group)) ||
+        (dJointGetAMotorParam(joint, dParamFMax + group) > 0.0 &&
+         !(dJointGetAMotorParam(joint, dParamCFM + group) > 0.0))) {
+      return false;  // stops, or a hard row (newton_solver.h: every row is soft)
+    }
+  }
+  for (int i = 0; i < axes; ++i) {
+    const int group = dParamGroup * i;
+    const double fmax = dJointGetAMotorParam(joint, dParamFMax + group);
+    if (!(fmax > 0.0)) continue;
+    dVector3 axis;
+    dJointGetAMotorAxis(joint, i, axis);
+    AngularRow(c, ToVec3(axis), dJointGetAMotorParam(joint, dParamVel + group),
+               dJointGetAMotorParam(joint, dParamCFM + group), -fmax, fmax, rows);
+  }
+  return true;
+}
+
+}  // namespace
+
+bool JointRows(dJointID joint, int ia, int ib, const Vec3& hinge_axis2, dWorldID world,
+               double step, std::vector<NewtonRow>* rows) {
+  const JointContext c{ia, ib, dJointGetBody(joint, 1) != nullptr, dWorldGetCFM(world)};
+  const size_t before = rows->size();
+  bool known = false;
+  switch (dJointGetType(joint)) {
+    case dJointTypeHinge:
+      known = HingeRows(joint, c, hinge_axis2, dWorldGetERP(world), step, rows);
+      break;
+    case dJointTypeAMotor:
+      known = AngularMotorRows(joint, c, rows);
+      break;
+    default:
+      break;
+  }
+  if (!known) rows->resize(before);
+  return known;
+}
+
+}  // namespace lamina::core
