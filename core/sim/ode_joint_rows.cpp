@@ -57,8 +57,8 @@ void BallRows(dJointID joint, const JointContext& c, double k, std::vector<Newto
   const Vec3 error = ToVec3(anchor2) - ToVec3(anchor1);
   for (int i = 0; i < 3; ++i) {
     const Vec3 e = Vec3::Unit(i);
-    AddRow(c, Stack(e, arm1.cross(e)), Stack(-e, -arm2.cross(e)), k * error(i), c.cfm, -kInf,
-           kInf, rows);
+    AddRow(c, Stack(e, arm1.cross(e)), Stack(-e, -arm2.cross(e)), k * error(i), c.cfm, -kInf, kInf,
+           rows);
   }
 }
 
@@ -83,7 +83,8 @@ void HingeStopRow(dJointID joint, const JointContext& c, const Vec3& axis, doubl
 
 bool HingeRows(dJointID joint, const JointContext& c, const Vec3& axis2, double erp, double step,
                std::vector<NewtonRow>* rows) {
-  if (dJointGetHingeParam(joint, dParamFMax) > 0.0 || dJointGetHingeParam(joint, dParamBounce) > 0.0)
+  if (dJointGetHingeParam(joint, dParamFMax) > 0.0 ||
+      dJointGetHingeParam(joint, dParamBounce) > 0.0)
     return false;
   const double k = erp / step;
   BallRows(joint, c, k, rows);
@@ -128,8 +129,8 @@ bool AngularMotorRows(dJointID joint, const JointContext& c, std::vector<NewtonR
 
 }  // namespace
 
-bool JointRows(dJointID joint, int ia, int ib, const Vec3& hinge_axis2, dWorldID world,
-               double step, std::vector<NewtonRow>* rows) {
+bool JointRows(dJointID joint, int ia, int ib, const Vec3& hinge_axis2, dWorldID world, double step,
+               std::vector<NewtonRow>* rows) {
   const JointContext c{ia, ib, dJointGetBody(joint, 1) != nullptr, dWorldGetCFM(world)};
   const size_t before = rows->size();
   bool known = false;

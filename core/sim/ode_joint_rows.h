@@ -31,7 +31,7 @@ namespace lamina::core {
 /// hinge's axis as ODE keeps it for its second body (in that body's axes; world axes without
 /// one), which ODE's API does not return. World ERP/CFM are read from `world`; `step` in s.
 /// Returns false, appending nothing, for a joint or a state outside what is replicated (above).
-bool JointRows(dxJoint* joint, int ia, int ib, const Vec3& hinge_axis2, dxWorld* world,
-               double step, std::vector<NewtonRow>* rows);
+bool JointRows(dxJoint* joint, int ia, int ib, const Vec3& hinge_axis2, dxWorld* world, double step,
+               std::vector<NewtonRow>* rows);
 
 }  // namespace lamina::core

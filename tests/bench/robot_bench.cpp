@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Robots standing on their own: ATHLETE dropped on fractal terrain (athlete_fractal_1.xml) and
 // the HRP-2 humanoid on a plane (hrp2_plane.xml, 30 hinges with joint friction, its servos holding
-// the zero pose), each with dWorldStep and with dWorldQuickStep (20 iterations): every iteration
+// the zero pose), each with dWorldStep, the Newton solver and dWorldQuickStep (20 iterations):
+// every iteration
 // simulates 5 s from the start on a fresh simulator; the counters give the real-time factor, the
 // time split and how far the base moved over the last 2 s (the bar: < 1 cm; Klamp't's ATHLETE
 // creeps downhill). An iteration whose base moves more than that fails the benchmark.
@@ -63,6 +64,7 @@ void RegisterStanding(const std::string& world_name) {
   std::string errors;
   const bool loaded = LoadWorld(WorldsPath("klampt/" + world_name + ".xml"), world.get(), &errors);
   const SolverCase solvers[] = {{"step", {core::SolverType::kStep, 20}},
+                                {"newton", {core::SolverType::kNewton, 20}},
                                 {"quick20", {core::SolverType::kQuickStep, 20}}};
   for (const SolverCase& solver : solvers) {
     const std::string name = "Robot/" + world_name + "/" + solver.name;

@@ -261,6 +261,26 @@ TEST(RobotWorldsTest, Hrp2LoadsWithItsRoundedInertiasAndStands) {
   EXPECT_EQ(simulator.statistics().instability_corrections, 0);
 }
 
+// The Newton solver takes the humanoid whole (its hinges, servos and joint friction:
+// object_islands.h) and it stands as with dWorldStep: the base still over the last 2 s of 5
+TEST(RobotWorldsTest, Hrp2StandsWithTheNewtonSolver) {
+  test::LoadedWorld loaded;
+  test::LoadWorld(test::WorldsPath("klampt/hrp2_plane.xml"), &loaded);
+  ASSERT_TRUE(loaded.ok) << loaded.diagnostics.FormatAll();
+  core::Simulator simulator(loaded.world, {core::SolverType::kNewton, 20});
+  simulator.Simulate(3.0);
+  const VecX settled = simulator.GetRobotConfig(0);
+  simulator.Simulate(2.0);
+  ASSERT_NE(simulator.statistics().worst_status, core::StepStatus::kError);
+  const VecX q = simulator.GetRobotConfig(0);
+  EXPECT_LT((q.head<3>() - settled.head<3>()).norm(), 1e-4);  // 1e-6 m measured
+  EXPECT_NEAR(q[2], 0.0, 0.006);
+  EXPECT_LT(q.segment(3, 3).cwiseAbs().maxCoeff(), 0.01);
+  const core::SimStatistics& statistics = simulator.statistics();
+  EXPECT_GE(statistics.newton_islands, statistics.steps);  // the robot's island, every step
+  EXPECT_EQ(statistics.newton_fallbacks, 0);
+}
+
 // sphere.rob: a sphere on a translating floating base (3 virtual links) held by translation
 // drivers (force along x, y, z on the base body) against gravity
 TEST(RobotWorldsTest, TranslationDriversHoldAFloatingSphere) {

@@ -202,9 +202,9 @@ TEST(LiveSessionTest, TheSolverChoiceRunsTheNewtonSolverWithoutEditingTheWorld) 
   EXPECT_TRUE(frame->solver_chosen);
 }
 
-// A world with a robot: the Newton solver would leave the robot to dWorldStep, so the choice is
-// QuickStep.
-TEST(LiveSessionTest, TheSolverChoiceRunsQuickStepInAWorldWithARobot) {
+// A world with a robot: the Newton solver takes its hinges, servos and friction too (the same
+// answer as dWorldStep), so the choice is the Newton solver there as well.
+TEST(LiveSessionTest, TheSolverChoiceRunsTheNewtonSolverInAWorldWithARobot) {
   LiveSession session(true);
   session.SetPhysicsBudget(0.0);
   session.SetSpeed(4.0);
@@ -212,10 +212,10 @@ TEST(LiveSessionTest, TheSolverChoiceRunsQuickStepInAWorldWithARobot) {
   std::shared_ptr<const SessionFrame> frame =
       WaitFor(&session, [](const SessionFrame& f) { return f.solver_chosen; });
   ASSERT_TRUE(frame->solver_chosen);
-  EXPECT_EQ(frame->solver.type, core::SolverType::kQuickStep);
+  EXPECT_EQ(frame->solver.type, core::SolverType::kNewton);
   const std::vector<std::string> messages = session.TakeMessages();
   ASSERT_EQ(messages.size(), 1u);
-  EXPECT_NE(messages[0].find("QuickStep"), std::string::npos) << messages[0];
+  EXPECT_NE(messages[0].find("Newton"), std::string::npos) << messages[0];
 }
 
 // Choosing a solver in the settings is the user's decision: the choice ends for the world, and

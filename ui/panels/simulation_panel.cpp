@@ -84,9 +84,8 @@ void DrawSolver(const PanelContext& context) {
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
         "When the exact solver cannot keep real time within 80 %% of a core, play with the\n"
-        "Newton solver instead (the same answer, faster), or with QuickStep in a world with\n"
-        "robots (faster, softer); the world's file is not changed. Off: always the world's "
-        "solver.");
+        "Newton solver instead (the same answer, faster); the world's file is not changed.\n"
+        "Off: always the world's solver.");
   }
 }
 

@@ -192,19 +192,11 @@ void LiveSession::MeasureSolver(double step_wall, double simulated, double speed
   if (solver.type != core::SolverType::kStep) return;
   choice_.Add(step_wall, simulated, speed);
   if (!choice_.too_slow()) return;
-  // without robots every island is one the Newton solver takes: the exact answer, faster; with
-  // robots, QuickStep (the Newton solver leaves robots to dWorldStep)
-  const bool newton = simulator.robot_count() == 0;
-  chosen_ = core::SolverSettings{newton ? core::SolverType::kNewton : core::SolverType::kQuickStep,
-                                 solver.quick_step_iterations};
+  // the Newton solver: the exact solver's answer, faster (robots with sliders, objects held by
+  // world joints and the dragged body stay with dWorldStep inside it: object_islands.h)
+  chosen_ = core::SolverSettings{core::SolverType::kNewton, solver.quick_step_iterations};
   simulator.SetSolver(*chosen_);
-  char instead[80];
-  if (newton) {
-    std::snprintf(instead, sizeof instead, "the Newton solver (the same answer)");
-  } else {
-    std::snprintf(instead, sizeof instead, "QuickStep (%d iterations)",
-                  chosen_->quick_step_iterations);
-  }
+  const char* instead = "the Newton solver (the same answer)";
   char text[240];
   std::snprintf(text, sizeof text,
                 "the exact solver reached %.2fx real time on this machine: playing with %s "

@@ -97,8 +97,8 @@ struct SessionFrame {
   std::vector<core::PairReadout> sampled_contacts;
 
   /// The solver the simulation runs now, and whether the real-time choice (solver_choice.h)
-  /// put QuickStep in place of the world's exact solver; exact_factor is the real-time factor
-  /// the exact solver reached when it was measured (0: not measured).
+  /// put the Newton solver in place of the world's exact solver; exact_factor is the real-time
+  /// factor the exact solver reached when it was measured (0: not measured).
   core::SolverSettings solver;
   bool solver_chosen = false;
   bool auto_solver = false;  ///< the real-time choice is on
@@ -155,7 +155,7 @@ class LiveSession {
   /// in lockstep. Off puts the world's own solver back. Choosing a solver in the settings also
   /// ends it for that world (the user's decision wins).
   void SetAutoSolver(bool on);
-  /// The share of one core the physics may take before the choice switches to QuickStep
+  /// The share of one core the physics may take before the choice switches to the Newton solver
   /// (SolverChoice::kPhysicsBudget unless set; 0: any measured cost is too much). Takes effect
   /// for the next world loaded.
   void SetPhysicsBudget(double share_of_core);
@@ -222,7 +222,7 @@ class LiveSession {
   std::string problem_;  ///< what went wrong, until play resumes, a command runs or a world opens
   RealTimeFactorMeter meter_;
   SolverChoice choice_;
-  std::optional<core::SolverSettings> chosen_;  ///< QuickStep, chosen for real time
+  std::optional<core::SolverSettings> chosen_;  ///< the Newton solver, chosen for real time
   core::SolverSettings world_solver_;           ///< the document's when the world was adopted
   bool user_chose_solver_ = false;              ///< the solver row was edited: no choice made
   bool auto_solver_used_ = false;               ///< auto_solver_ as the loop last acted on it

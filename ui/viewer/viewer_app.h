@@ -40,8 +40,8 @@ struct ViewerOptions {
   bool lockstep = false;
   /// The panels shown at start (--panels; ParsePanelList), when set.
   std::optional<PanelVisibility> panels;
-  /// QuickStep in place of an exact solver too slow for real time (solver_choice.h); only with
-  /// the physics on its own thread.
+  /// The Newton solver in place of an exact solver too slow for real time (solver_choice.h); only
+  /// with the physics on its own thread.
   bool solver_choice = true;
   /// When set: a JSON line per frame with the selection, the drag, the selected body's state and
   /// contacts, for scripted UI tests (docs/editor.md, "Scripted tests").
