@@ -289,11 +289,12 @@ bool NewtonSolver::Solve(const std::vector<NewtonBody>& bodies, const std::vecto
   q_.assign(m, 0.0);
   cfm_.resize(m);
   regime_.assign(m, 0);
-  for (size_t i = 0; i < m; ++i) {
-    cfm_[i] = rows[i].cfm;
-    x_[i] = rows[i].rhs - RowVelocity(rows[i], v_);
-  }
+  for (size_t i = 0; i < m; ++i) cfm_[i] = rows[i].cfm;
+  // the first round's friction bounds from the normal forces at the free velocity (with gravity
+  // on every contact it loads), the start where the step began
+  RowOffsets(rows, v_free_);
   SetBounds(rows);
+  RowOffsets(rows, v_);
   int budget = options.max_iterations;
   result->converged = false;
   result->rounds = 0;
