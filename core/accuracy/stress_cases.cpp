@@ -150,7 +150,7 @@ void AddRobotCases(std::vector<StressCase>* cases) {
   c.metric_text = "largest joint gap during the run";
   c.unit = "m";
   c.keep_out = {Below(0.0)};
-  AddRuns(c, {{kExact, 1e-3}, {kQuick, 1e-3}}, cases);
+  AddRuns(c, {{kExact, 1e-3}, {kQuick, 1e-3}, {kNewton, 1e-3}}, cases);
 
   c = {};
   c.name = "absurd_torque";
@@ -164,7 +164,7 @@ void AddRobotCases(std::vector<StressCase>* cases) {
   c.unit = "m";
   c.keep_out = {Below(0.0)};
   c.expected = StressVerdict::kFlagged;
-  AddRuns(c, {{kExact, 1e-3}, {kQuick, 1e-3}}, cases);
+  AddRuns(c, {{kExact, 1e-3}, {kQuick, 1e-3}, {kNewton, 1e-3}}, cases);
 }
 
 std::vector<StressCase> MakeCases() {
