@@ -228,5 +228,39 @@ TEST(NewtonIslandsTest, RobotJointsDrivenIntoTheirStopsStepAsDWorldStepDoes) {
   EXPECT_GE(at_stop, 1);
 }
 
+// What the Newton solver leaves to dWorldStep (object_islands.h): a robot with a slider (the
+// cart-pole's cart), and a robot while one of its links is dragged (the mouse spring is an ODE
+// joint on its body); the robot goes back to the Newton solver when the drag ends.
+TEST(NewtonIslandsTest, RobotsWithSlidersOrDraggedLinksStayWithDWorldStep) {
+  const std::unique_ptr<test::LoadedRobot> cartpole =
+      test::LoadRobot(test::WorldsPath("klampt/robots/cartpole.rob"));
+  ASSERT_FALSE(cartpole->diagnostics.HasErrors()) << cartpole->diagnostics.FormatAll();
+  core::WorldDesc world;
+  world.robots.push_back(cartpole->robot);
+  core::Simulator exact(world, {core::SolverType::kStep, 20});
+  core::Simulator fast(world, {core::SolverType::kNewton, 20});
+  for (int i = 0; i < 300; ++i) {
+    exact.Simulate(0.001);
+    fast.Simulate(0.001);
+  }
+  EXPECT_EQ(fast.statistics().newton_islands, 0);
+  EXPECT_EQ(fast.GetRobotConfig(0), exact.GetRobotConfig(0));  // the same steps, bit for bit
+
+  test::LoadedWorld loaded;
+  test::LoadWorld(test::WorldsPath("stress/chain_robot.xml"), &loaded);
+  ASSERT_TRUE(loaded.ok);
+  core::Simulator chain(loaded.world, {core::SolverType::kNewton, 20});
+  const int link = loaded.world.RobotLinkId(0, 20);
+  const core::Vec3 point = chain.body(link).GetTransform().translation();
+  ASSERT_TRUE(chain.StartDrag(link, point));
+  chain.SetDragTarget(point + core::Vec3(0.1, 0.0, 0.0));
+  chain.Simulate(0.1);
+  EXPECT_EQ(chain.statistics().newton_islands, 0);
+  chain.EndDrag();
+  chain.Simulate(0.1);
+  EXPECT_GE(chain.statistics().newton_islands, 100);  // every step once the drag has ended
+  EXPECT_EQ(chain.statistics().newton_fallbacks, 0);
+}
+
 }  // namespace
 }  // namespace lamina

@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: MIT
+// A robot's ODE joints as Newton solver rows (core/sim/ode_joint_rows.h), checked by what the
+// rows must mean rather than against ODE's code: a hinge's five rows see no velocity of the two
+// bodies moving as one, nor a turn about its axis; its stop row measures that turn and pushes
+// back at the stop ERP; a motor row is bounded by its fmax; what is not replicated is refused.
+#include "core/sim/ode_joint_rows.h"
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <ode/ode.h>
+
+#include "core/math_types.h"
+#include "core/sim/ode_handle.h"
+
+namespace lamina::core {
+namespace {
+
+constexpr double kStep = 0.001;
+
+// two bodies 1 m apart on z, in a world of ERP 0.5 and CFM 1e-6
+struct TwoBodies {
+  OdeWorldPtr owner = CreateOdeWorld();
+  dWorldID world = owner.get();
+  dBodyID child = dBodyCreate(world);
+  dBodyID parent = dBodyCreate(world);
+  dJointID hinge = nullptr;
+  Vec3 axis2 = Vec3::Zero();  ///< the hinge's axis in the parent's axes (as OdeRobot keeps it)
+
+  TwoBodies() {
+    dWorldSetERP(world, 0.5);
+    dWorldSetCFM(world, 1e-6);
+    dBodySetPosition(child, 0.0, 0.0, -0.5);
+    dBodySetPosition(parent, 0.0, 0.0, 0.5);
+  }
+
+  // a hinge about y through the origin
+  void Hinge() {
+    hinge = dJointCreateHinge(world, nullptr);
+    dJointAttach(hinge, child, parent);
+    dJointSetHingeAnchor(hinge, 0.0, 0.0, 0.0);
+    dJointSetHingeAxis(hinge, 0.0, 1.0, 0.0);
+    axis2 = Vec3::UnitY();
+  }
+};
+
+// the velocity a row sees when the child moves with twist `a` and the parent with `b` (linear
+// velocity of the centre of mass, angular velocity)
+double Seen(const NewtonRow& row, const Vec6& a, const Vec6& b) {
+  return row.ja.dot(a) + (row.b >= 0 ? row.jb.dot(b) : 0.0);
+}
+
+// the twist of a body whose centre is at `centre` in a rigid motion (v at the origin, ω)
+Vec6 RigidMotion(const Vec3& centre, const Vec3& v, const Vec3& omega) {
+  Vec6 twist;
+  twist << v + omega.cross(centre), omega;
+  return twist;
+}
+
+TEST(OdeJointRowsTest, AHingesRowsSeeNoMotionOfBothBodiesTogetherNorATurnAboutItsAxis) {
+  TwoBodies bodies;
+  bodies.Hinge();
+  std::vector<NewtonRow> rows;
+  ASSERT_TRUE(JointRows(bodies.hinge, 0, 1, bodies.axis2, bodies.world, kStep, &rows));
+  ASSERT_EQ(rows.size(), 5u);  // no stops, no motor
+  const Vec3 child(0.0, 0.0, -0.5), parent(0.0, 0.0, 0.5);
+  const Vec3 v(0.3, -0.2, 0.1), omega(1.0, 2.0, -0.5);
+  for (const NewtonRow& row : rows) {
+    EXPECT_EQ(row.a, 0);
+    EXPECT_EQ(row.b, 1);
+    EXPECT_EQ(row.lo, -kInf);
+    EXPECT_EQ(row.hi, kInf);
+    EXPECT_DOUBLE_EQ(row.cfm, 1e-6);
+    EXPECT_NEAR(row.rhs, 0.0, 1e-12);  // the joint is where it was built
+    // both bodies in one rigid motion
+    EXPECT_NEAR(Seen(row, RigidMotion(child, v, omega), RigidMotion(parent, v, omega)), 0.0,
+                1e-12);
+    // the child turning about the hinge axis through the anchor, the parent still
+    EXPECT_NEAR(Seen(row, RigidMotion(child, Vec3::Zero(), 3.0 * Vec3::UnitY()), Vec6::Zero()),
+                0.0, 1e-12);
+  }
+  // and every other motion of the child is seen by some row
+  for (const Vec3& omega_child : {Vec3(Vec3::UnitX()), Vec3(Vec3::UnitZ())}) {
+    double seen = 0.0;
+    for (const NewtonRow& row : rows) {
+      seen += std::abs(Seen(row, RigidMotion(child, Vec3::Zero(), omega_child), Vec6::Zero()));
+    }
+    EXPECT_GT(seen, 0.5);
+  }
+}
+
+TEST(OdeJointRowsTest, AHingePulledApartIsPulledBackAtTheWorldErp) {
+  TwoBodies bodies;
+  bodies.Hinge();
+  dBodySetPosition(bodies.parent, 0.002, 0.0, 0.5);  // the parent's anchor 2 mm along x
+  std::vector<NewtonRow> rows;
+  ASSERT_TRUE(JointRows(bodies.hinge, 0, 1, bodies.axis2, bodies.world, kStep, &rows));
+  // row x: the child's anchor velocity less the parent's, asked to close the gap in 1/ERP steps
+  EXPECT_NEAR(rows[0].rhs, 0.5 / kStep * 0.002, 1e-9);
+  EXPECT_NEAR(rows[1].rhs, 0.0, 1e-12);
+  EXPECT_NEAR(rows[2].rhs, 0.0, 1e-12);
+}
+
+TEST(OdeJointRowsTest, AHingeBeyondItsStopGetsAOneSidedStopRow) {
+  TwoBodies bodies;
+  bodies.Hinge();
+  dJointSetHingeParam(bodies.hinge, dParamLoStop, -0.1);
+  dJointSetHingeParam(bodies.hinge, dParamHiStop, 0.1);
+  dJointSetHingeParam(bodies.hinge, dParamStopERP, 0.2);
+  std::vector<NewtonRow> rows;
+  ASSERT_TRUE(JointRows(bodies.hinge, 0, 1, bodies.axis2, bodies.world, kStep, &rows));
+  EXPECT_EQ(rows.size(), 5u);  // inside its range
+  // the child turned 0.15 rad about the axis (about the anchor, the joint stays together)
+  dMatrix3 rotation;
+  dRFromAxisAndAngle(rotation, 0.0, 1.0, 0.0, 0.15);
+  dBodySetRotation(bodies.child, rotation);
+  const double angle = dJointGetHingeAngle(bodies.hinge);
+  ASSERT_NEAR(std::abs(angle), 0.15, 1e-12);
+  Vec3 centre = Eigen::AngleAxisd(0.15, Vec3::UnitY()) * Vec3(0.0, 0.0, -0.5);
+  dBodySetPosition(bodies.child, centre.x(), centre.y(), centre.z());
+  rows.clear();
+  ASSERT_TRUE(JointRows(bodies.hinge, 0, 1, bodies.axis2, bodies.world, kStep, &rows));
+  ASSERT_EQ(rows.size(), 6u);
+  const NewtonRow& stop = rows.back();
+  // it reads the hinge's rate, pushes back 0.2 of the 0.05 rad overrun per step, one-sided
+  const double rate = Seen(stop, RigidMotion(centre, Vec3::Zero(), Vec3::UnitY()), Vec6::Zero());
+  EXPECT_NEAR(std::abs(rate), 1.0, 1e-12);
+  EXPECT_NEAR(stop.rhs, -0.2 / kStep * (angle - (angle > 0 ? 0.1 : -0.1)), 1e-9);
+  EXPECT_EQ(angle > 0 ? stop.lo : stop.hi, angle > 0 ? -kInf : kInf);
+  EXPECT_EQ(angle > 0 ? stop.hi : stop.lo, 0.0);
+}
+
+TEST(OdeJointRowsTest, AMotorAxisIsARowBoundedByItsFmax) {
+  TwoBodies bodies;
+  dJointID motor = dJointCreateAMotor(bodies.world, nullptr);
+  dJointAttach(motor, bodies.child, nullptr);  // to the world
+  dJointSetAMotorMode(motor, dAMotorUser);
+  dJointSetAMotorNumAxes(motor, 2);
+  dJointSetAMotorAxis(motor, 0, 1, 0.0, 1.0, 0.0);
+  dJointSetAMotorAxis(motor, 1, 1, 0.0, 1.0, 0.0);
+  std::vector<NewtonRow> rows;
+  ASSERT_TRUE(JointRows(motor, 0, -1, Vec3::Zero(), bodies.world, kStep, &rows));
+  EXPECT_TRUE(rows.empty());  // fmax 0: no row
+  dJointSetAMotorParam(motor, dParamFMax2, 5.0);
+  dJointSetAMotorParam(motor, dParamVel2, 1.5);
+  dJointSetAMotorParam(motor, dParamCFM2, 0.01);
+  ASSERT_TRUE(JointRows(motor, 0, -1, Vec3::Zero(), bodies.world, kStep, &rows));
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].b, -1);
+  EXPECT_EQ(rows[0].ja.tail<3>(), Vec3::UnitY());
+  EXPECT_EQ(rows[0].ja.head<3>(), Vec3::Zero());
+  EXPECT_DOUBLE_EQ(rows[0].rhs, 1.5);
+  EXPECT_DOUBLE_EQ(rows[0].cfm, 0.01);
+  EXPECT_DOUBLE_EQ(rows[0].lo, -5.0);
+  EXPECT_DOUBLE_EQ(rows[0].hi, 5.0);
+  // a hard motor row (CFM 0) is not one the Newton solver takes: refused, nothing appended
+  dJointSetAMotorParam(motor, dParamCFM2, 0.0);
+  rows.clear();
+  EXPECT_FALSE(JointRows(motor, 0, -1, Vec3::Zero(), bodies.world, kStep, &rows));
+  EXPECT_TRUE(rows.empty());
+}
+
+TEST(OdeJointRowsTest, WhatIsNotReplicatedIsRefused) {
+  TwoBodies bodies;
+  bodies.Hinge();
+  std::vector<NewtonRow> rows;
+  dJointSetHingeParam(bodies.hinge, dParamFMax, 1.0);  // ODE's own hinge motor
+  EXPECT_FALSE(JointRows(bodies.hinge, 0, 1, bodies.axis2, bodies.world, kStep, &rows));
+  dJointSetHingeParam(bodies.hinge, dParamFMax, 0.0);
+  dJointSetHingeParam(bodies.hinge, dParamBounce, 0.5);  // a bouncing stop
+  EXPECT_FALSE(JointRows(bodies.hinge, 0, 1, bodies.axis2, bodies.world, kStep, &rows));
+  dJointID slider = dJointCreateSlider(bodies.world, nullptr);
+  dJointAttach(slider, bodies.child, bodies.parent);
+  dJointSetSliderAxis(slider, 0.0, 0.0, 1.0);
+  EXPECT_FALSE(JointRows(slider, 0, 1, Vec3::Zero(), bodies.world, kStep, &rows));
+  EXPECT_TRUE(rows.empty());
+}
+
+}  // namespace
+}  // namespace lamina::core
