@@ -75,11 +75,10 @@ TEST(OdeJointRowsTest, AHingesRowsSeeNoMotionOfBothBodiesTogetherNorATurnAboutIt
     EXPECT_DOUBLE_EQ(row.cfm, 1e-6);
     EXPECT_NEAR(row.rhs, 0.0, 1e-12);  // the joint is where it was built
     // both bodies in one rigid motion
-    EXPECT_NEAR(Seen(row, RigidMotion(child, v, omega), RigidMotion(parent, v, omega)), 0.0,
-                1e-12);
+    EXPECT_NEAR(Seen(row, RigidMotion(child, v, omega), RigidMotion(parent, v, omega)), 0.0, 1e-12);
     // the child turning about the hinge axis through the anchor, the parent still
-    EXPECT_NEAR(Seen(row, RigidMotion(child, Vec3::Zero(), 3.0 * Vec3::UnitY()), Vec6::Zero()),
-                0.0, 1e-12);
+    EXPECT_NEAR(Seen(row, RigidMotion(child, Vec3::Zero(), 3.0 * Vec3::UnitY()), Vec6::Zero()), 0.0,
+                1e-12);
   }
   // and every other motion of the child is seen by some row
   for (const Vec3& omega_child : {Vec3(Vec3::UnitX()), Vec3(Vec3::UnitZ())}) {
