@@ -24,7 +24,7 @@ struct ObjectIslands::KeptJoint {
   dJointID joint;
   int a, b;  ///< world ids of the first and second body, -1: the world
   dBodyID body_a, body_b;
-  Vec3 hinge_axis2;
+  JointFrame frame;
 };
 
 // one island's solve; the vectors keep their storage from island to island
@@ -79,8 +79,8 @@ void ObjectIslands::Keep(const dContact& contact, int a, int b, dBodyID body_a, 
   kept_.push_back({contact, a, b, body_a, body_b, feedback});
 }
 
-void ObjectIslands::KeepJoint(dJointID joint, int a, int b, const Vec3& hinge_axis2) {
-  joints_.push_back({joint, a, b, dJointGetBody(joint, 0), dJointGetBody(joint, 1), hinge_axis2});
+void ObjectIslands::KeepJoint(dJointID joint, int a, int b, const JointFrame& frame) {
+  joints_.push_back({joint, a, b, dJointGetBody(joint, 0), dJointGetBody(joint, 1), frame});
   if (b >= 0) Link(a, b);
 }
 
@@ -208,8 +208,8 @@ bool ObjectIslands::BuildIsland(dWorldID world, double step) {
   for (size_t j : island.joint_members) {
     const KeptJoint& kept = joints_[j];
     const int ib = kept.b >= 0 ? local_[kept.b] : -1;
-    known = known &&
-            JointRows(kept.joint, local_[kept.a], ib, kept.hinge_axis2, world, step, &island.rows);
+    known =
+        known && JointRows(kept.joint, local_[kept.a], ib, kept.frame, world, step, &island.rows);
   }
   for (int id : island.ids) local_[id] = -1;
   return known;

@@ -11,7 +11,7 @@
 //   the swap of a joint whose first body is the fixed world), so the answer is dWorldStep's to the
 //   solver's tolerance where ODE's Dantzig solver is exact (newton_solver.h: where friction
 //   saturates, this answer is the consistent one).
-// - A robot's hinges and motors (ode_robot.h) are kept too: their rows are ODE's
+// - A robot's joints and motors (ode_robot.h) are kept too: their rows are ODE's
 //   (ode_joint_rows.h), and when the island's solve converges the joints are disabled for ODE's
 //   step, which then only integrates the bodies, and enabled again after it (Restore).
 // - An island with a body held by another persistent ODE joint (a world joint, the mouse
@@ -25,8 +25,8 @@
 #include <memory>
 #include <vector>
 
-#include "core/math_types.h"
 #include "core/sim/ode_fwd.h"
+#include "core/sim/ode_joint_rows.h"
 
 namespace lamina::core {
 
@@ -57,9 +57,9 @@ class ObjectIslands {
   void Keep(const dContact& contact, int a, int b, dxBody* body_a, dxBody* body_b,
             dJointFeedback* feedback);
   /// Keeps a robot's hinge or motor `joint` between its first body (world id `a`) and its
-  /// second (`b`, -1: the world), and links them into one island. `hinge_axis2`: ode_joint_rows.h.
+  /// second (`b`, -1: the world), and links them into one island. `frame`: ode_joint_rows.h.
   /// Joints kept in children-first order keep the solver's matrix narrow.
-  void KeepJoint(dxJoint* joint, int a, int b, const Vec3& hinge_axis2);
+  void KeepJoint(dxJoint* joint, int a, int b, const JointFrame& frame);
   /// Solves every island of the kept contacts and joints, adds the forces to the bodies and
   /// disables the kept joints of the solved islands; an island that does not converge gets its
   /// contact joints in `group` (and keeps its joints).

@@ -127,19 +127,135 @@ bool AngularMotorRows(dJointID joint, const JointContext& c, std::vector<NewtonR
   return true;
 }
 
+// ODE's quaternion (w, x, y, z)
+Eigen::Quaterniond Quaternion(const double* q) {
+  return {q[0], q[1], q[2], q[3]};
+}
+
+// setFixedOrientation (joint_internal.h): the bodies' angular velocities equal, the right-hand
+// side turning the second body back to its rotation relative to the first at build
+void FixedOrientationRows(dJointID joint, const JointContext& c, const JointFrame& frame, double k,
+                          std::vector<NewtonRow>* rows) {
+  dBodyID first = dJointGetBody(joint, 0), second = dJointGetBody(joint, 1);
+  const Eigen::Quaterniond relative(frame.relative(0), frame.relative(1), frame.relative(2),
+                                    frame.relative(3));
+  const Eigen::Quaterniond q1 = Quaternion(dBodyGetQuaternion(first));
+  const Eigen::Quaterniond error =
+      second != nullptr
+          ? Eigen::Quaterniond(q1.conjugate() * Quaternion(dBodyGetQuaternion(second))) *
+                relative.conjugate()
+          : Eigen::Quaterniond(q1.conjugate() * relative.conjugate());
+  const Vec3 half_turn = error.w() < 0.0 ? Vec3(-error.vec()) : Vec3(error.vec());
+  const Vec3 turn = ToMat3(dBodyGetRotation(first)) * half_turn;
+  for (int i = 0; i < 3; ++i)
+    AngularRow(c, Vec3::Unit(i), 2.0 * k * turn(i), c.cfm, -kInf, kInf, rows);
+}
+
+// half the line between the bodies' centres: a linear row between two bodies acts at its middle
+// (addLimot's torque decoupling), so that it makes no couple
+Vec3 HalfwayArm(dJointID joint) {
+  dBodyID second = dJointGetBody(joint, 1);
+  if (second == nullptr) return Vec3::Zero();
+  return 0.5 *
+         (ToVec3(dBodyGetPosition(second)) - ToVec3(dBodyGetPosition(dJointGetBody(joint, 0))));
+}
+
+// a linear row along `axis` through the middle of the bodies
+void LinearRow(const JointContext& c, const Vec3& axis, const Vec3& halfway, double rhs, double cfm,
+               double lo, double hi, std::vector<NewtonRow>* rows) {
+  const Vec3 decoupling = halfway.cross(axis);
+  AddRow(c, Stack(axis, decoupling), Stack(-axis, decoupling), rhs, cfm, lo, hi, rows);
+}
+
+// the stop row of addLimot for an unpowered slider (getInfo1 re-tests the stops every step)
+void SliderStopRow(dJointID joint, const JointContext& c, const Vec3& axis, double step,
+                   std::vector<NewtonRow>* rows) {
+  const double lo = dJointGetSliderParam(joint, dParamLoStop);
+  const double hi = dJointGetSliderParam(joint, dParamHiStop);
+  if (!((lo > -kInf || hi < kInf) && lo <= hi)) return;
+  const double position = dJointGetSliderPosition(joint);
+  const bool low = position <= lo;
+  if (!low && position < hi) return;
+  const double error = low ? position - lo : position - hi;
+  const double rhs = -dJointGetSliderParam(joint, dParamStopERP) / step * error;
+  const double cfm = dJointGetSliderParam(joint, dParamStopCFM);
+  const Vec3 halfway = HalfwayArm(joint);
+  if (lo == hi) {
+    LinearRow(c, axis, halfway, rhs, cfm, -kInf, kInf, rows);
+  } else {
+    LinearRow(c, axis, halfway, rhs, cfm, low ? 0.0 : -kInf, low ? kInf : 0.0, rows);
+  }
+}
+
+// three rows keeping the rotations, two keeping the first body's centre on the axis through the
+// second body's offset point (with (ω1 + ω2)/2 for ω1), the stop row
+bool SliderRows(dJointID joint, const JointContext& c, const JointFrame& frame, double erp,
+                double step, std::vector<NewtonRow>* rows) {
+  if (dJointGetSliderParam(joint, dParamFMax) > 0.0 ||
+      dJointGetSliderParam(joint, dParamBounce) > 0.0) {
+    return false;
+  }
+  const double k = erp / step;
+  FixedOrientationRows(joint, c, frame, k, rows);
+  dVector3 axis1;
+  dJointGetSliderAxis(joint, axis1);
+  dVector3 p, q;
+  dPlaneSpace(axis1, p, q);
+  const Vec3 position1 = ToVec3(dBodyGetPosition(dJointGetBody(joint, 0)));
+  dBodyID second = dJointGetBody(joint, 1);
+  Vec3 gap = frame.offset - position1;  // from the first body's centre to where it belongs
+  Vec3 between = Vec3::Zero();
+  if (second != nullptr) {
+    between = ToVec3(dBodyGetPosition(second)) - position1;
+    gap = between + ToMat3(dBodyGetRotation(second)) * frame.offset;
+  }
+  for (const Vec3& across : {ToVec3(p), ToVec3(q)}) {
+    const Vec3 arm = 0.5 * between.cross(across);
+    AddRow(c, Stack(across, arm), Stack(-across, arm), k * across.dot(gap), c.cfm, -kInf, kInf,
+           rows);
+  }
+  SliderStopRow(joint, c, ToVec3(axis1), step, rows);
+  return true;
+}
+
+// one row per powered axis, through the middle of the bodies, bounded by its fmax (ODE never
+// tests a linear motor's stops)
+bool LinearMotorRows(dJointID joint, const JointContext& c, const JointFrame& frame,
+                     std::vector<NewtonRow>* rows) {
+  const int axes = dJointGetLMotorNumAxes(joint);
+  const Vec3 axis = ToMat3(dBodyGetRotation(dJointGetBody(joint, 0))) * frame.axis1;
+  const Vec3 halfway = HalfwayArm(joint);
+  for (int i = 0; i < axes; ++i) {
+    const int group = dParamGroup * i;
+    const double fmax = dJointGetLMotorParam(joint, dParamFMax + group);
+    if (!(fmax > 0.0)) continue;
+    const double cfm = dJointGetLMotorParam(joint, dParamCFM + group);
+    if (!(cfm > 0.0)) return false;  // a hard row
+    LinearRow(c, axis, halfway, dJointGetLMotorParam(joint, dParamVel + group), cfm, -fmax, fmax,
+              rows);
+  }
+  return true;
+}
+
 }  // namespace
 
-bool JointRows(dJointID joint, int ia, int ib, const Vec3& hinge_axis2, dWorldID world, double step,
+bool JointRows(dJointID joint, int ia, int ib, const JointFrame& frame, dWorldID world, double step,
                std::vector<NewtonRow>* rows) {
   const JointContext c{ia, ib, dJointGetBody(joint, 1) != nullptr, dWorldGetCFM(world)};
   const size_t before = rows->size();
   bool known = false;
   switch (dJointGetType(joint)) {
     case dJointTypeHinge:
-      known = HingeRows(joint, c, hinge_axis2, dWorldGetERP(world), step, rows);
+      known = HingeRows(joint, c, frame.axis2, dWorldGetERP(world), step, rows);
+      break;
+    case dJointTypeSlider:
+      known = SliderRows(joint, c, frame, dWorldGetERP(world), step, rows);
       break;
     case dJointTypeAMotor:
       known = AngularMotorRows(joint, c, rows);
+      break;
+    case dJointTypeLMotor:
+      known = LinearMotorRows(joint, c, frame, rows);
       break;
     default:
       break;

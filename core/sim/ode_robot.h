@@ -12,6 +12,7 @@
 #include "core/control/robot_controller.h"
 #include "core/diagnostics.h"
 #include "core/model/world_desc.h"
+#include "core/sim/ode_joint_rows.h"
 #include "core/sim/robot_joint_state.h"
 
 namespace lamina::core {
@@ -33,9 +34,8 @@ class OdeRobot {
     dJointID joint = nullptr;            ///< hinge or slider to the parent's body (or the world)
     dJointID servo = nullptr;            ///< motor along the joint for the implicit PD
     int carrier = -1;  ///< the link that owns `body` (itself, or the one it is welded into)
-    /// a hinge's axis as ODE keeps it for the parent's body (its axes; world axes without one),
-    /// which ODE's API does not return (ode_joint_rows.h)
-    Vec3 hinge_axis2 = Vec3::UnitZ();
+    /// what ODE keeps of `joint` and `servo` and does not return (ode_joint_rows.h)
+    JointFrame frame;
     double reference = 0.0;       ///< joint value where the ODE joint reads zero
     double mass = 0.0;            ///< owners: the body's mass (kg)
     Mat3 inertia = Mat3::Zero();  ///< owners: about the COM, in the link axes
@@ -55,8 +55,6 @@ class OdeRobot {
   /// The links in an order where every link comes before its parent (the Newton solver's
   /// matrix stays narrow when a robot's bodies come in it: object_islands.h).
   const std::vector<int>& children_first() const { return children_first_; }
-  /// Every joint is a hinge (the Newton solver has no slider rows: ode_joint_rows.h).
-  bool hinges_only() const { return hinges_only_; }
   /// A 6-link floating base rotates; a 3-link one (x, y, z) only translates.
   bool floating_rotates() const { return floating_link_ - floating_first_ == 5; }
 
@@ -109,7 +107,6 @@ class OdeRobot {
   int floating_first_ = -1;  ///< first virtual link of the floating base
   VecX model_config_;        ///< values of welded links
   std::vector<int> children_first_;
-  bool hinges_only_ = true;
 };
 
 }  // namespace lamina::core

@@ -402,8 +402,8 @@ class Simulator {
   /// The world id that stands for `id`'s ODE body in the islands (a merged link: the link that
   /// owns the body), or -1 when it does not move freely or sleeps
   int IslandBody(int id) const;
-  /// Robot `robot` can go to the Newton solver this step: hinges only, every body moving
-  /// freely and awake, none dragged, no joint on its bodies but its own
+  /// Robot `robot` can go to the Newton solver this step: every body moving freely and awake,
+  /// none dragged, no joint on its bodies but its own
   bool RobotForIslands(int robot);
   void KeepRobotJoints(int robot);
 

@@ -100,12 +100,11 @@ int Simulator::IslandBody(int id) const {
   return world_.RobotLinkId(record.index, robots_[record.index]->link(record.link).carrier);
 }
 
-// A robot goes to the Newton solver (its hinges and motors kept: object_islands.h) when its
-// joints are hinges, every body moves freely and is awake, none is dragged, and its bodies carry
-// no joint but its own (a world joint keeps it with ODE's solver).
+// A robot goes to the Newton solver (its joints and motors kept: object_islands.h) when every
+// body moves freely and is awake, none is dragged, and its bodies carry no joint but its own (a
+// world joint keeps it with ODE's solver).
 bool Simulator::RobotForIslands(int robot) {
   const OdeRobot& sim_robot = *robots_[robot];
-  if (!sim_robot.hinges_only()) return false;
   const int first = world_.RobotLinkId(robot, 0);
   std::vector<int>& count = robot_scratch_[robot].joint_count;
   count.assign(sim_robot.dof(), 0);
@@ -137,8 +136,8 @@ void Simulator::KeepRobotJoints(int robot) {
     const int b = parent >= 0 && sim_robot.link(parent).body != nullptr
                       ? first + sim_robot.link(parent).carrier
                       : -1;
-    islands_.KeepJoint(link.joint, first + l, b, link.hinge_axis2);
-    islands_.KeepJoint(link.servo, first + l, b, Vec3::Zero());
+    islands_.KeepJoint(link.joint, first + l, b, link.frame);
+    islands_.KeepJoint(link.servo, first + l, b, link.frame);
   }
 }
 

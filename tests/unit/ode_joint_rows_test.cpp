@@ -27,7 +27,6 @@ struct TwoBodies {
   dBodyID child = dBodyCreate(world);
   dBodyID parent = dBodyCreate(world);
   dJointID hinge = nullptr;
-  Vec3 axis2 = Vec3::Zero();  ///< the hinge's axis in the parent's axes (as OdeRobot keeps it)
 
   TwoBodies() {
     dWorldSetERP(world, 0.5);
@@ -42,7 +41,12 @@ struct TwoBodies {
     dJointAttach(hinge, child, parent);
     dJointSetHingeAnchor(hinge, 0.0, 0.0, 0.0);
     dJointSetHingeAxis(hinge, 0.0, 1.0, 0.0);
-    axis2 = Vec3::UnitY();
+  }
+  // the hinge's axis in the parent's axes, as OdeRobot records it
+  static JointFrame HingeFrame() {
+    JointFrame frame;
+    frame.axis2 = Vec3::UnitY();
+    return frame;
   }
 };
 
@@ -63,7 +67,7 @@ TEST(OdeJointRowsTest, AHingesRowsSeeNoMotionOfBothBodiesTogetherNorATurnAboutIt
   TwoBodies bodies;
   bodies.Hinge();
   std::vector<NewtonRow> rows;
-  ASSERT_TRUE(JointRows(bodies.hinge, 0, 1, bodies.axis2, bodies.world, kStep, &rows));
+  ASSERT_TRUE(JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kStep, &rows));
   ASSERT_EQ(rows.size(), 5u);  // no stops, no motor
   const Vec3 child(0.0, 0.0, -0.5), parent(0.0, 0.0, 0.5);
   const Vec3 v(0.3, -0.2, 0.1), omega(1.0, 2.0, -0.5);
@@ -95,7 +99,7 @@ TEST(OdeJointRowsTest, AHingePulledApartIsPulledBackAtTheWorldErp) {
   bodies.Hinge();
   dBodySetPosition(bodies.parent, 0.002, 0.0, 0.5);  // the parent's anchor 2 mm along x
   std::vector<NewtonRow> rows;
-  ASSERT_TRUE(JointRows(bodies.hinge, 0, 1, bodies.axis2, bodies.world, kStep, &rows));
+  ASSERT_TRUE(JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kStep, &rows));
   // row x: the child's anchor velocity less the parent's, asked to close the gap in 1/ERP steps
   EXPECT_NEAR(rows[0].rhs, 0.5 / kStep * 0.002, 1e-9);
   EXPECT_NEAR(rows[1].rhs, 0.0, 1e-12);
@@ -109,7 +113,7 @@ TEST(OdeJointRowsTest, AHingeBeyondItsStopGetsAOneSidedStopRow) {
   dJointSetHingeParam(bodies.hinge, dParamHiStop, 0.1);
   dJointSetHingeParam(bodies.hinge, dParamStopERP, 0.2);
   std::vector<NewtonRow> rows;
-  ASSERT_TRUE(JointRows(bodies.hinge, 0, 1, bodies.axis2, bodies.world, kStep, &rows));
+  ASSERT_TRUE(JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kStep, &rows));
   EXPECT_EQ(rows.size(), 5u);  // inside its range
   // the child turned 0.15 rad about the axis (about the anchor, the joint stays together)
   dMatrix3 rotation;
@@ -120,7 +124,7 @@ TEST(OdeJointRowsTest, AHingeBeyondItsStopGetsAOneSidedStopRow) {
   Vec3 centre = Eigen::AngleAxisd(0.15, Vec3::UnitY()) * Vec3(0.0, 0.0, -0.5);
   dBodySetPosition(bodies.child, centre.x(), centre.y(), centre.z());
   rows.clear();
-  ASSERT_TRUE(JointRows(bodies.hinge, 0, 1, bodies.axis2, bodies.world, kStep, &rows));
+  ASSERT_TRUE(JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kStep, &rows));
   ASSERT_EQ(rows.size(), 6u);
   const NewtonRow& stop = rows.back();
   // it reads the hinge's rate, pushes back 0.2 of the 0.05 rad overrun per step, one-sided
@@ -140,12 +144,12 @@ TEST(OdeJointRowsTest, AMotorAxisIsARowBoundedByItsFmax) {
   dJointSetAMotorAxis(motor, 0, 1, 0.0, 1.0, 0.0);
   dJointSetAMotorAxis(motor, 1, 1, 0.0, 1.0, 0.0);
   std::vector<NewtonRow> rows;
-  ASSERT_TRUE(JointRows(motor, 0, -1, Vec3::Zero(), bodies.world, kStep, &rows));
+  ASSERT_TRUE(JointRows(motor, 0, -1, JointFrame{}, bodies.world, kStep, &rows));
   EXPECT_TRUE(rows.empty());  // fmax 0: no row
   dJointSetAMotorParam(motor, dParamFMax2, 5.0);
   dJointSetAMotorParam(motor, dParamVel2, 1.5);
   dJointSetAMotorParam(motor, dParamCFM2, 0.01);
-  ASSERT_TRUE(JointRows(motor, 0, -1, Vec3::Zero(), bodies.world, kStep, &rows));
+  ASSERT_TRUE(JointRows(motor, 0, -1, JointFrame{}, bodies.world, kStep, &rows));
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].b, -1);
   EXPECT_EQ(rows[0].ja.tail<3>(), Vec3::UnitY());
@@ -157,7 +161,7 @@ TEST(OdeJointRowsTest, AMotorAxisIsARowBoundedByItsFmax) {
   // a hard motor row (CFM 0) is not one the Newton solver takes: refused, nothing appended
   dJointSetAMotorParam(motor, dParamCFM2, 0.0);
   rows.clear();
-  EXPECT_FALSE(JointRows(motor, 0, -1, Vec3::Zero(), bodies.world, kStep, &rows));
+  EXPECT_FALSE(JointRows(motor, 0, -1, JointFrame{}, bodies.world, kStep, &rows));
   EXPECT_TRUE(rows.empty());
 }
 
@@ -166,15 +170,102 @@ TEST(OdeJointRowsTest, WhatIsNotReplicatedIsRefused) {
   bodies.Hinge();
   std::vector<NewtonRow> rows;
   dJointSetHingeParam(bodies.hinge, dParamFMax, 1.0);  // ODE's own hinge motor
-  EXPECT_FALSE(JointRows(bodies.hinge, 0, 1, bodies.axis2, bodies.world, kStep, &rows));
+  EXPECT_FALSE(JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kStep, &rows));
   dJointSetHingeParam(bodies.hinge, dParamFMax, 0.0);
   dJointSetHingeParam(bodies.hinge, dParamBounce, 0.5);  // a bouncing stop
-  EXPECT_FALSE(JointRows(bodies.hinge, 0, 1, bodies.axis2, bodies.world, kStep, &rows));
+  EXPECT_FALSE(JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kStep, &rows));
+  EXPECT_TRUE(rows.empty());
+  dJointID ball = dJointCreateBall(bodies.world, nullptr);  // a joint type OdeRobot never makes
+  dJointAttach(ball, bodies.child, bodies.parent);
+  EXPECT_FALSE(JointRows(ball, 0, 1, JointFrame{}, bodies.world, kStep, &rows));
+  EXPECT_TRUE(rows.empty());
+}
+
+// a slider along z between the two bodies, as OdeRobot records it (both bodies unrotated: the
+// relative rotation is the identity, the child's centre 1 m below the parent's)
+JointFrame SliderFrameOf(dJointID slider) {
+  JointFrame frame;
+  frame.offset = Vec3(0.0, 0.0, -1.0);
+  frame.axis1 = Vec3::UnitZ();
+  dJointSetSliderAxis(slider, 0.0, 0.0, 1.0);
+  return frame;
+}
+
+TEST(OdeJointRowsTest, ASlidersRowsSeeNoMotionOfBothBodiesTogetherNorASlideAlongItsAxis) {
+  TwoBodies bodies;
   dJointID slider = dJointCreateSlider(bodies.world, nullptr);
   dJointAttach(slider, bodies.child, bodies.parent);
-  dJointSetSliderAxis(slider, 0.0, 0.0, 1.0);
-  EXPECT_FALSE(JointRows(slider, 0, 1, Vec3::Zero(), bodies.world, kStep, &rows));
-  EXPECT_TRUE(rows.empty());
+  const JointFrame frame = SliderFrameOf(slider);
+  std::vector<NewtonRow> rows;
+  ASSERT_TRUE(JointRows(slider, 0, 1, frame, bodies.world, kStep, &rows));
+  ASSERT_EQ(rows.size(), 5u);
+  const Vec3 child(0.0, 0.0, -0.5), parent(0.0, 0.0, 0.5);
+  for (const NewtonRow& row : rows) {
+    EXPECT_NEAR(row.rhs, 0.0, 1e-12);
+    EXPECT_NEAR(Seen(row, RigidMotion(child, Vec3(0.3, -0.2, 0.1), Vec3(1.0, 2.0, -0.5)),
+                     RigidMotion(parent, Vec3(0.3, -0.2, 0.1), Vec3(1.0, 2.0, -0.5))),
+                0.0, 1e-12);
+    EXPECT_NEAR(Seen(row, RigidMotion(child, 0.7 * Vec3::UnitZ(), Vec3::Zero()), Vec6::Zero()), 0.0,
+                1e-12);
+  }
+  // pulled off its axis by 1 mm along x, it is pulled back at the world ERP
+  dBodySetPosition(bodies.child, 0.001, 0.0, -0.5);
+  rows.clear();
+  ASSERT_TRUE(JointRows(slider, 0, 1, frame, bodies.world, kStep, &rows));
+  double pulled = 0.0;
+  for (const NewtonRow& row : rows) {
+    pulled += row.rhs * Seen(row, RigidMotion(child, Vec3::UnitX(), Vec3::Zero()), Vec6::Zero());
+  }
+  EXPECT_NEAR(pulled, -0.5 / kStep * 0.001,
+              1e-9);  // Σ rhs·(J e_x): the rows ask −ERP·gap/h along x
+}
+
+TEST(OdeJointRowsTest, ASliderBeyondItsStopAndALinearMotorGetLinearRowsThroughTheMiddle) {
+  TwoBodies bodies;
+  dJointID slider = dJointCreateSlider(bodies.world, nullptr);
+  dJointAttach(slider, bodies.child, bodies.parent);
+  const JointFrame frame = SliderFrameOf(slider);
+  dJointSetSliderParam(slider, dParamLoStop, -0.1);
+  dJointSetSliderParam(slider, dParamHiStop, 0.1);
+  dJointSetSliderParam(slider, dParamStopERP, 0.2);
+  // 0.15 m down (0.05 m past the low stop), and 0.2 m aside: the centres are not on one line
+  // along the axis
+  dBodySetPosition(bodies.child, 0.2, 0.0, -0.65);
+  std::vector<NewtonRow> rows;
+  ASSERT_TRUE(JointRows(slider, 0, 1, frame, bodies.world, kStep, &rows));
+  ASSERT_EQ(rows.size(), 6u);
+  const NewtonRow& stop = rows.back();
+  EXPECT_EQ(stop.lo, 0.0);  // pushes the child up only
+  EXPECT_EQ(stop.hi, kInf);
+  EXPECT_NEAR(stop.rhs, 0.2 / kStep * 0.05, 1e-9);
+  // equal and opposite forces along the axis at the bodies' middle: the pair turning as one is
+  // unseen (forces at the centres would see it, and put a couple on the pair)
+  EXPECT_EQ(stop.ja.head<3>(), Vec3::UnitZ());
+  EXPECT_EQ(stop.jb.head<3>(), -Vec3::UnitZ());
+  const Vec3 child(0.2, 0.0, -0.65), parent(0.0, 0.0, 0.5), omega(0.4, -1.0, 0.3);
+  EXPECT_NEAR(
+      Seen(stop, RigidMotion(child, Vec3::Zero(), omega), RigidMotion(parent, Vec3::Zero(), omega)),
+      0.0, 1e-12);
+
+  dJointID motor = dJointCreateLMotor(bodies.world, nullptr);
+  dJointAttach(motor, bodies.child, bodies.parent);
+  dJointSetLMotorNumAxes(motor, 2);
+  dJointSetLMotorAxis(motor, 0, 1, 0.0, 0.0, 1.0);
+  dJointSetLMotorAxis(motor, 1, 1, 0.0, 0.0, 1.0);
+  dJointSetLMotorParam(motor, dParamFMax, 40.0);
+  dJointSetLMotorParam(motor, dParamVel, -0.25);
+  dJointSetLMotorParam(motor, dParamCFM, 0.001);
+  rows.clear();
+  ASSERT_TRUE(JointRows(motor, 0, 1, frame, bodies.world, kStep, &rows));
+  ASSERT_EQ(rows.size(), 1u);  // the second axis has no fmax
+  EXPECT_EQ(rows[0].ja.head<3>(), Vec3::UnitZ());
+  EXPECT_NEAR(Seen(rows[0], RigidMotion(child, Vec3::Zero(), omega),
+                   RigidMotion(parent, Vec3::Zero(), omega)),
+              0.0, 1e-12);
+  EXPECT_DOUBLE_EQ(rows[0].rhs, -0.25);
+  EXPECT_DOUBLE_EQ(rows[0].cfm, 0.001);
+  EXPECT_DOUBLE_EQ(rows[0].lo, -40.0);
+  EXPECT_DOUBLE_EQ(rows[0].hi, 40.0);
 }
 
 }  // namespace

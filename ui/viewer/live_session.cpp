@@ -192,8 +192,8 @@ void LiveSession::MeasureSolver(double step_wall, double simulated, double speed
   if (solver.type != core::SolverType::kStep) return;
   choice_.Add(step_wall, simulated, speed);
   if (!choice_.too_slow()) return;
-  // the Newton solver: the exact solver's answer, faster (robots with sliders, objects held by
-  // world joints and the dragged body stay with dWorldStep inside it: object_islands.h)
+  // the Newton solver: the exact solver's answer, faster (objects held by world joints and the
+  // dragged body stay with dWorldStep inside it: object_islands.h)
   chosen_ = core::SolverSettings{core::SolverType::kNewton, solver.quick_step_iterations};
   simulator.SetSolver(*chosen_);
   const char* instead = "the Newton solver (the same answer)";

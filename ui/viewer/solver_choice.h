@@ -3,9 +3,9 @@
 // (dWorldStep), the cost of its steps is measured: wall seconds spent stepping per simulated
 // second. Once kEvidence simulated seconds show that keeping up with the wall clock (times
 // the playback speed) would take more than kPhysicsBudget of one core, the editor runs the world
-// with the Newton solver instead and says so (it takes objects and robots with hinges, with the
-// exact solver's answer: stacks, mass ratios and standing humanoids still hold; robots with
-// sliders and bodies held by world joints stay with dWorldStep inside it); the world's own
+// with the Newton solver instead and says so (it takes objects and robots, with the exact
+// solver's answer: stacks, mass ratios and standing humanoids still hold; bodies held by world
+// joints stay with dWorldStep inside it); the world's own
 // setting is left as it is (the file keeps what it says, and saving writes it unchanged). On
 // rough ground a humanoid's contacts and joint friction can take the Newton solver more steps
 // than dWorldStep's pivots (docs/simulator.md): it then plays no faster, but still holds, where
