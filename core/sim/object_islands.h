@@ -46,7 +46,8 @@ class ObjectIslands {
 
   /// Starts a step over world ids 0 … count-1.
   void Begin(int count);
-  /// `id`'s island is ODE's (a robot link, a body with a persistent ODE joint, dragged).
+  /// `id`'s island is ODE's (a body with a persistent ODE joint, dragged, a robot the Newton
+  /// solver does not take).
   void MarkOde(int id) { ode_[Root(id)] = 1; }
   /// A contact between two free bodies: one island.
   void Link(int a, int b);
@@ -56,7 +57,7 @@ class ObjectIslands {
   /// the fixed world or a kinematic body), reporting into `feedback` when not null.
   void Keep(const dContact& contact, int a, int b, dxBody* body_a, dxBody* body_b,
             dJointFeedback* feedback);
-  /// Keeps a robot's hinge or motor `joint` between its first body (world id `a`) and its
+  /// Keeps a robot's joint or motor `joint` between its first body (world id `a`) and its
   /// second (`b`, -1: the world), and links them into one island. `frame`: ode_joint_rows.h.
   /// Joints kept in children-first order keep the solver's matrix narrow.
   void KeepJoint(dxJoint* joint, int a, int b, const JointFrame& frame);

@@ -62,23 +62,29 @@ void BallRows(dJointID joint, const JointContext& c, double k, std::vector<Newto
   }
 }
 
-// the stop row of addLimot for an unpowered hinge: pushes back at the stop ERP, one-sided
+// the law of addLimot's stop row for an unpowered joint whose coordinate (hinge angle, slider
+// position) is `value`: pushes back at the stop ERP and CFM, one-sided unless both stops meet
+struct StopLaw {
+  double rhs, cfm, lo, hi;
+};
+StopLaw Stop(double value, double lo, double hi, double erp, double cfm, double step) {
+  const bool low = value <= lo;
+  const double rhs = -erp / step * (low ? value - lo : value - hi);
+  if (lo == hi) return {rhs, cfm, -kInf, kInf};
+  return {rhs, cfm, low ? 0.0 : -kInf, low ? kInf : 0.0};
+}
+
+// the hinge's stop row, when getInfo1's test finds it at a stop
 void HingeStopRow(dJointID joint, const JointContext& c, const Vec3& axis, double step,
                   std::vector<NewtonRow>* rows) {
   const double lo = dJointGetHingeParam(joint, dParamLoStop);
   const double hi = dJointGetHingeParam(joint, dParamHiStop);
-  const double angle = dJointGetHingeAngle(joint);
   if (!((lo >= -M_PI || hi <= M_PI) && lo <= hi)) return;  // getInfo1's test
-  const bool low = angle <= lo;
-  if (!low && angle < hi) return;
-  const double error = low ? angle - lo : angle - hi;
-  const double rhs = -dJointGetHingeParam(joint, dParamStopERP) / step * error;
-  const double cfm = dJointGetHingeParam(joint, dParamStopCFM);
-  if (lo == hi) {
-    AngularRow(c, axis, rhs, cfm, -kInf, kInf, rows);
-  } else {
-    AngularRow(c, axis, rhs, cfm, low ? 0.0 : -kInf, low ? kInf : 0.0, rows);
-  }
+  const double angle = dJointGetHingeAngle(joint);
+  if (angle > lo && angle < hi) return;
+  const StopLaw law = Stop(angle, lo, hi, dJointGetHingeParam(joint, dParamStopERP),
+                           dJointGetHingeParam(joint, dParamStopCFM), step);
+  AngularRow(c, axis, law.rhs, law.cfm, law.lo, law.hi, rows);
 }
 
 bool HingeRows(dJointID joint, const JointContext& c, const Vec3& axis2, double erp, double step,
@@ -167,24 +173,17 @@ void LinearRow(const JointContext& c, const Vec3& axis, const Vec3& halfway, dou
   AddRow(c, Stack(axis, decoupling), Stack(-axis, decoupling), rhs, cfm, lo, hi, rows);
 }
 
-// the stop row of addLimot for an unpowered slider (getInfo1 re-tests the stops every step)
+// the slider's stop row (getInfo1 tests its stops whenever one is finite)
 void SliderStopRow(dJointID joint, const JointContext& c, const Vec3& axis, double step,
                    std::vector<NewtonRow>* rows) {
   const double lo = dJointGetSliderParam(joint, dParamLoStop);
   const double hi = dJointGetSliderParam(joint, dParamHiStop);
   if (!((lo > -kInf || hi < kInf) && lo <= hi)) return;
   const double position = dJointGetSliderPosition(joint);
-  const bool low = position <= lo;
-  if (!low && position < hi) return;
-  const double error = low ? position - lo : position - hi;
-  const double rhs = -dJointGetSliderParam(joint, dParamStopERP) / step * error;
-  const double cfm = dJointGetSliderParam(joint, dParamStopCFM);
-  const Vec3 halfway = HalfwayArm(joint);
-  if (lo == hi) {
-    LinearRow(c, axis, halfway, rhs, cfm, -kInf, kInf, rows);
-  } else {
-    LinearRow(c, axis, halfway, rhs, cfm, low ? 0.0 : -kInf, low ? kInf : 0.0, rows);
-  }
+  if (position > lo && position < hi) return;
+  const StopLaw law = Stop(position, lo, hi, dJointGetSliderParam(joint, dParamStopERP),
+                           dJointGetSliderParam(joint, dParamStopCFM), step);
+  LinearRow(c, axis, HalfwayArm(joint), law.rhs, law.cfm, law.lo, law.hi, rows);
 }
 
 // three rows keeping the rotations, two keeping the first body's centre on the axis through the
