@@ -34,6 +34,7 @@ struct AccuracyOptions {
   std::string worlds;
   std::string out = "accuracy";
   std::string markdown;
+  std::string peers;
 };
 
 void Error(const std::string& message) {
@@ -61,8 +62,9 @@ bool PickSolvers(const AccuracyOptions& options, core::AccuracyGrid* grid) {
   grid->solvers.clear();
   for (const std::string& label : options.solvers) {
     const auto solver = core::ParseAccuracySolver(label);
-    if (!solver) {
-      Error("--solvers: '" + label + "' is not exact, quickN (N iterations) or either with -fixed");
+    if (!solver || !solver->peer.empty()) {
+      Error("--solvers: '" + label + "' is not exact, newton, quickN (N iterations) or one of " +
+            "those with -fixed" + (solver ? " (MuJoCo and Bullet runs come from --peers)" : ""));
       return false;
     }
     grid->solvers.push_back(*solver);
@@ -160,6 +162,32 @@ bool WriteOutputs(const std::vector<core::AccuracyRun>& runs,
   return ok;
 }
 
+// The runs of tests/bench/peers' lamina-peers in `file` (its runs.json) of the scenes in `grid`,
+// after Lamina's.
+bool AddPeerRuns(const std::string& file, const core::AccuracyGrid& grid,
+                 std::vector<core::AccuracyRun>* runs) {
+  if (file.empty()) return true;
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    Error("--peers: cannot read " + file);
+    return false;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::string error;
+  std::vector<core::AccuracyRun> peers;
+  if (!core::ReadAccuracyRunsJson(text.str(), file, &peers, &error)) {
+    Error("--peers: " + error);
+    return false;
+  }
+  for (const core::AccuracyRun& run : peers) {
+    for (const core::AccuracyScene* scene : grid.scenes) {
+      if (scene->name == run.scene) runs->push_back(run);
+    }
+  }
+  return true;
+}
+
 void PrintBars(const std::vector<core::BarVerdict>& bars) {
   for (const core::BarVerdict& bar : bars) {
     const char* verdict = bar.check.pass ? "pass  " : bar.known_failure ? "known " : "FAIL  ";
@@ -173,7 +201,8 @@ int RunAccuracy(const AccuracyOptions& options) {
   const std::string worlds = options.worlds.empty() ? WorldsDir() + "/accuracy" : options.worlds;
   std::function<void(const core::AccuracyProgress&)> progress;
   if (!options.quiet && isatty(STDERR_FILENO)) progress = PrintProgress;
-  const auto runs = core::RunAccuracySweep(*grid, worlds, options.threads, progress);
+  auto runs = core::RunAccuracySweep(*grid, worlds, options.threads, progress);
+  if (!AddPeerRuns(options.peers, *grid, &runs)) return 1;
   const auto bars = core::JudgeAccuracyBars(runs);
   PrintBars(bars);
   if (!WriteOutputs(runs, bars, options)) return 1;
@@ -198,8 +227,8 @@ Subcommand AddAccuracyCommand(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   command
       ->add_option("--solvers", options->solvers,
-                   "exact, quickN, each optionally -fixed (no adaptive stepping); default "
-                   "exact,quick20,quick40,quick100,exact-fixed")
+                   "exact, newton, quickN, each optionally -fixed (no adaptive stepping); default "
+                   "exact,newton,quick20,quick40,quick100,exact-fixed")
       ->delimiter(',');
   command->add_flag("--bars", options->bars,
                     "only the runs the pass bars need (each scene's bar steps, exact solver)");
@@ -212,6 +241,11 @@ Subcommand AddAccuracyCommand(CLI::App& app) {
   command->add_option("--out", options->out, "folder for runs.csv, runs.json and the plots")
       ->capture_default_str();
   command->add_option("--markdown", options->markdown, "also write the report page here");
+  command
+      ->add_option("--peers", options->peers,
+                   "also plot these MuJoCo and Bullet runs (lamina-peers' runs.json, "
+                   "tests/bench/peers)")
+      ->check(CLI::ExistingFile);
   command->add_flag("-q,--quiet", options->quiet, "no progress bar");
   return {command, [options] { return RunAccuracy(*options); }};
 }

@@ -3,7 +3,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
@@ -74,7 +76,16 @@ SeriesData Data(const std::vector<const AccuracyRun*>& series) {
 }
 
 std::string SlopeText(double slope) {
-  return std::isfinite(slope) ? Num(std::round(slope * 100) / 100) : "–";
+  // + 0.0: a slope that rounds to -0 prints as 0
+  return std::isfinite(slope) ? Num(std::round(slope * 100) / 100 + 0.0) : "–";
+}
+
+// Bars judge Lamina's runs: a scene only another engine ran has none to judge.
+bool HasLaminaRuns(const std::vector<AccuracyRun>& runs, const std::string& scene) {
+  for (const AccuracySolver& solver : SolversOf(runs, scene)) {
+    if (solver.peer.empty()) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -82,7 +93,7 @@ std::string SlopeText(double slope) {
 std::vector<BarVerdict> JudgeAccuracyBars(const std::vector<AccuracyRun>& runs) {
   std::vector<BarVerdict> verdicts;
   for (const AccuracyScene& scene : AccuracyScenes()) {
-    if (SolversOf(runs, scene.name).empty()) continue;
+    if (!HasLaminaRuns(runs, scene.name)) continue;
     for (const AccuracyBar& bar : scene.bars) {
       const auto found = FindAccuracyRuns(runs, scene.name, DefaultAccuracySolver(), bar.steps);
       verdicts.push_back({scene.name, bar.text, bar.check(found), bar.known_failure});
@@ -128,6 +139,63 @@ nlohmann::json RunJson(const AccuracyRun& r) {
 
 }  // namespace
 
+namespace {
+
+double ReadNumber(const nlohmann::json& value) {
+  return value.is_null() ? std::nan("") : value.get<double>();
+}
+
+// One entry of "runs"; throws nlohmann's type errors and std::invalid_argument with the field.
+AccuracyRun ReadRun(const nlohmann::json& j) {
+  AccuracyRun r;
+  r.scene = j.at("scene").get<std::string>();
+  if (FindAccuracyScene(r.scene) == nullptr)
+    throw std::invalid_argument("scene: no scene '" + r.scene + "'");
+  const std::string label = j.at("solver").get<std::string>();
+  const std::optional<AccuracySolver> solver = ParseAccuracySolver(label);
+  if (!solver) throw std::invalid_argument("solver: '" + label + "' names no solver");
+  r.solver = *solver;
+  r.step = j.at("step").get<double>();
+  r.result.error = ReadNumber(j.at("error"));
+  r.cpu_seconds = j.at("cpu_s").get<double>();
+  r.real_time_factor = ReadNumber(j.at("real_time_factor"));
+  r.steps = j.at("steps").get<long>();
+  r.rollbacks = j.at("rollbacks").get<long>();
+  r.min_step = j.at("min_step").get<double>();
+  r.corrections = j.at("corrections").get<long>();
+  r.nonfinite = j.at("nonfinite").get<long>();
+  r.unreliable = j.at("unreliable").get<long>();
+  r.status = j.at("status").get<std::string>();
+  r.failure = j.at("failure").get<std::string>();
+  r.result.note = j.at("note").get<std::string>();
+  for (const auto& [name, value] : j.at("metrics").items())
+    r.result.metrics.push_back({name, ReadNumber(value)});
+  return r;
+}
+
+}  // namespace
+
+bool ReadAccuracyRunsJson(const std::string& text, const std::string& source,
+                          std::vector<AccuracyRun>* runs, std::string* error) {
+  const nlohmann::json json = nlohmann::json::parse(text, nullptr, false);
+  if (json.is_discarded() || !json.is_object() || !json.contains("runs") ||
+      !json["runs"].is_array()) {
+    *error = source + ": not JSON with a \"runs\" array";
+    return false;
+  }
+  std::vector<AccuracyRun> read;
+  for (std::size_t i = 0; i < json["runs"].size(); ++i) {
+    try {
+      read.push_back(ReadRun(json["runs"][i]));
+    } catch (const std::exception& e) {
+      *error = source + ": runs[" + std::to_string(i) + "]: " + e.what();
+      return false;
+    }
+  }
+  runs->insert(runs->end(), read.begin(), read.end());
+  return true;
+}
+
 std::string AccuracyJson(const std::vector<AccuracyRun>& runs,
                          const std::vector<BarVerdict>& bars) {
   nlohmann::json json = {{"runs", nlohmann::json::array()}, {"bars", nlohmann::json::array()}};
@@ -156,7 +224,8 @@ std::string AccuracySceneSvg(const AccuracyScene& scene, const std::vector<Accur
     const SeriesData data = Data(SeriesRuns(runs, scene.name, solver));
     const std::vector<double>& x = axis == PlotAxis::kCpuTime ? data.time : data.step;
     const double slope = LogLogSlope(x, data.error);
-    plot.series.push_back({solver.Label() + " (slope " + SlopeText(slope) + ")", x, data.error});
+    plot.series.push_back({solver.Label() + " (slope " + SlopeText(slope) + ")", x, data.error,
+                           !solver.peer.empty()});
   }
   return LogLogSvg(plot);
 }
@@ -235,10 +304,11 @@ std::string Method() {
 ## Method
 
 - **Runs.** Each scene runs for its stated time at each largest step h with each solver:
-  `exact` is ODE's `dWorldStep` (a direct LCP solve), `quickN` is `dWorldQuickStep` with N
-  iterations; both use adaptive stepping (a step that goes wrong is rolled back and retaken at
-  half the length) unless the label ends in `-fixed`. Scenes leave out steps below their stated
-  smallest step where a run would take minutes.
+  `exact` is ODE's `dWorldStep` (a direct LCP solve), `newton` Lamina's Newton solver on the
+  islands it takes (docs/simulator.md), `quickN` is `dWorldQuickStep` with N iterations; all use
+  adaptive stepping (a step that goes wrong is rolled back and retaken at half the length) unless
+  the label ends in `-fixed`. Scenes leave out steps below their stated smallest step where a run
+  would take minutes.
 - **Error.** Each scene's probe watches every accepted step and compares with the analytic answer
   computed from the world file (masses, friction, restitution, initial velocities), in physical
   units. The slope in the legends and tables is the least-squares slope of log(error) against
@@ -252,6 +322,27 @@ std::string Method() {
 - **Bars.** Each scene states pass bars on its runs with the default solver (exact, adaptive).
   `make test` runs the same bars (tests/physics/accuracy_bars_test.cpp).
 )";
+}
+
+std::string PeersMethod() {
+  return R"(- **Peers** (dashed). `mujoco` and `bulletN` are other engines' runs, made by
+  `make peers` (tests/bench/peers) with Debian 12's MuJoCo 2.2.2 and Bullet 3.24: MuJoCo with
+  its defaults (semi-implicit Euler, Newton solver, pyramidal cone, soft contacts of time constant
+  0.02 s, damping ratio 1) and Bullet in double precision (sequential impulse with N iterations,
+  its other defaults), both at fixed steps. Each gets the scene's world with the boundary layer
+  made solid (every shape grown by its padding) and every pair's blended friction and
+  restitution (MuJoCo has no restitution: a pair with e > 0 gets the damping ratio of a
+  spring–damper that rebounds with e). After each of its steps a Lamina simulation of the world
+  is set to the engine's state, so the scene's own probe measures it. Their time is that of their
+  step calls alone. Scenes with meshes or soft contact have no peer runs. Not judged by the bars.
+)";
+}
+
+bool HasPeerRuns(const std::vector<AccuracyRun>& runs) {
+  for (const AccuracyRun& run : runs) {
+    if (!run.solver.peer.empty()) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -268,7 +359,8 @@ std::string AccuracyMarkdown(const std::vector<AccuracyRun>& runs,
   for (const AccuracyScene& scene : AccuracyScenes()) {
     if (!SolversOf(runs, scene.name).empty()) md += SceneSection(scene, runs, context);
   }
-  return md + "## Runs that failed or lost their state\n\n" + FailedRuns(runs) + Method();
+  return md + "## Runs that failed or lost their state\n\n" + FailedRuns(runs) + Method() +
+         (HasPeerRuns(runs) ? PeersMethod() : "");
 }
 
 }  // namespace lamina::core

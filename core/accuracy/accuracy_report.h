@@ -25,6 +25,11 @@ std::vector<BarVerdict> JudgeAccuracyBars(const std::vector<AccuracyRun>& runs);
 std::string AccuracyCsv(const std::vector<AccuracyRun>& runs);
 /// {"runs": [...], "bars": [...]}.
 std::string AccuracyJson(const std::vector<AccuracyRun>& runs, const std::vector<BarVerdict>& bars);
+/// Appends the runs of an AccuracyJson text (`source` names it in messages) to `runs`; on bad
+/// JSON, a missing or mistyped field, an unknown scene or solver label, nothing is appended and
+/// `error` says what and where ("peers.json: runs[3].solver: ..."). A null number reads as NaN.
+bool ReadAccuracyRunsJson(const std::string& text, const std::string& source,
+                          std::vector<AccuracyRun>* runs, std::string* error);
 
 enum class PlotAxis { kCpuTime, kStep };
 /// The scene's error against CPU time or against the step, one series per solver.

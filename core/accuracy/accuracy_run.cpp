@@ -75,6 +75,10 @@ AccuracyRun NewRun(const AccuracyScene& scene, const AccuracySolver& solver, dou
 AccuracyRun RunAccuracySceneOn(const AccuracyScene& scene, WorldDesc world,
                                const AccuracySolver& solver, double step) {
   AccuracyRun run = NewRun(scene, solver, step);
+  if (!solver.peer.empty()) {
+    run.failure = solver.Label() + " is another engine's: tests/bench/peers runs it";
+    return run;
+  }
   try {
     if (scene.adjust) scene.adjust(&world);
     ApplySolver(solver, step, &world);
@@ -103,6 +107,8 @@ AccuracyRun RunAccuracyScene(const AccuracyScene& scene, const std::string& worl
 }
 
 std::string AccuracySolver::Label() const {
+  if (peer == "bullet") return peer + std::to_string(iterations);
+  if (!peer.empty()) return peer;
   std::string label = type == SolverType::kStep     ? "exact"
                       : type == SolverType::kNewton ? "newton"
                                                     : "quick" + std::to_string(iterations);
@@ -114,11 +120,11 @@ AccuracyGrid FullAccuracyGrid() {
   for (const AccuracyScene& scene : AccuracyScenes()) grid.scenes.push_back(&scene);
   const SolverType quick = SolverType::kQuickStep;
   grid.solvers = {{},
-                  {SolverType::kNewton, 20, true},
-                  {quick, 20, true},
-                  {quick, 40, true},
-                  {quick, 100, true},
-                  {SolverType::kStep, 20, false}};
+                  {SolverType::kNewton, 20, true, ""},
+                  {quick, 20, true, ""},
+                  {quick, 40, true, ""},
+                  {quick, 100, true, ""},
+                  {SolverType::kStep, 20, false, ""}};
   grid.steps = {1e-5, 4e-5, 1e-4, 4e-4, 1e-3, 4e-3, 1e-2};
   return grid;
 }

@@ -15,7 +15,37 @@ const std::vector<AccuracyScene>& AccuracyScenes() {
   return scenes;
 }
 
+namespace {
+
+// The iterations after `prefix` in `name` ("quick40" -> 40); nullopt unless 1 … 10000.
+std::optional<int> IterationsAfter(const std::string& name, const std::string& prefix) {
+  if (!name.starts_with(prefix) || name.size() == prefix.size()) return std::nullopt;
+  if (name.size() > prefix.size() + 5) return std::nullopt;
+  for (std::size_t i = prefix.size(); i < name.size(); ++i) {
+    if (name[i] < '0' || name[i] > '9') return std::nullopt;
+  }
+  const int iterations = std::stoi(name.substr(prefix.size()));
+  if (iterations < 1 || iterations > 10000) return std::nullopt;
+  return iterations;
+}
+
+std::optional<AccuracySolver> ParsePeer(const std::string& name) {
+  AccuracySolver solver;
+  if (name == "mujoco") {
+    solver.peer = name;
+    return solver;
+  }
+  const std::optional<int> iterations = IterationsAfter(name, "bullet");
+  if (!iterations) return std::nullopt;
+  solver.peer = "bullet";
+  solver.iterations = *iterations;
+  return solver;
+}
+
+}  // namespace
+
 std::optional<AccuracySolver> ParseAccuracySolver(const std::string& label) {
+  if (const std::optional<AccuracySolver> peer = ParsePeer(label)) return peer;
   AccuracySolver solver;
   std::string name = label;
   const std::string fixed = "-fixed";
@@ -28,13 +58,10 @@ std::optional<AccuracySolver> ParseAccuracySolver(const std::string& label) {
     solver.type = SolverType::kNewton;
     return solver;
   }
-  if (!name.starts_with("quick") || name.size() == 5 || name.size() > 10) return std::nullopt;
-  for (std::size_t i = 5; i < name.size(); ++i) {
-    if (name[i] < '0' || name[i] > '9') return std::nullopt;
-  }
+  const std::optional<int> iterations = IterationsAfter(name, "quick");
+  if (!iterations) return std::nullopt;
   solver.type = SolverType::kQuickStep;
-  solver.iterations = std::stoi(name.substr(5));
-  if (solver.iterations < 1 || solver.iterations > 10000) return std::nullopt;
+  solver.iterations = *iterations;
   return solver;
 }
 

@@ -47,19 +47,24 @@ class AccuracyProbe {
   virtual ProbeResult Finish(const Simulator& simulator) = 0;
 };
 
-/// The solver a run uses.
+/// The solver a run uses: one of Lamina's, or another engine's (a peer: tests/bench/peers runs
+/// the scenes through MuJoCo and Bullet, and the report plots those runs on the same axes).
 struct AccuracySolver {
   SolverType type = SolverType::kStep;
-  int iterations = 20;   ///< QuickStep only
-  bool adaptive = true;  ///< adaptive time stepping (rollback and halving)
+  int iterations = 20;   ///< QuickStep, and the Bullet peer's solver iterations
+  bool adaptive = true;  ///< adaptive time stepping (rollback and halving); Lamina only
+  /// "" for Lamina; "mujoco" (its defaults: Euler, Newton solver, pyramidal cone) or "bullet"
+  /// (btSequentialImpulseConstraintSolver with `iterations`) for a peer's run
+  std::string peer;
 
-  /// "exact", "newton", "quick20", ..., with "-fixed" when adaptive stepping is off.
+  /// "exact", "newton", "quick20", ..., with "-fixed" when adaptive stepping is off; a peer's
+  /// "mujoco" or "bullet10".
   std::string Label() const;
   bool operator==(const AccuracySolver&) const = default;
 };
 
-/// The solver a label names ("exact", "exact-fixed", "newton", "quick40", "quick40-fixed"); nullopt
-/// for anything else (iterations must be 1 … 10000).
+/// The solver a label names ("exact", "exact-fixed", "newton", "quick40", "quick40-fixed",
+/// "mujoco", "bullet10"); nullopt for anything else (iterations must be 1 … 10000).
 std::optional<AccuracySolver> ParseAccuracySolver(const std::string& label);
 
 /// The solver of a scene's bars and of the editor's default: exact, adaptive.

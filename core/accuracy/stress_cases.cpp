@@ -15,8 +15,8 @@ namespace {
 using Probe = std::function<std::unique_ptr<AccuracyProbe>(const WorldDesc&)>;
 
 const AccuracySolver kExact{};
-const AccuracySolver kQuick{SolverType::kQuickStep, 20, true};
-const AccuracySolver kNewton{SolverType::kNewton, 20, true};
+const AccuracySolver kQuick{SolverType::kQuickStep, 20, true, ""};
+const AccuracySolver kNewton{SolverType::kNewton, 20, true, ""};
 
 Probe SceneProbe(const char* scene) {
   return FindAccuracyScene(scene)->probe;

@@ -102,6 +102,10 @@ std::string Axes(const LogLogPlot& plot, const Frame& f) {
   return svg;
 }
 
+std::string Dashes(const PlotSeries& s) {
+  return s.dashed ? " stroke-dasharray=\"6 4\"" : "";
+}
+
 std::string SeriesSvg(const PlotSeries& s, const Frame& f, const char* colour) {
   std::string points, marks;
   for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
@@ -110,8 +114,8 @@ std::string SeriesSvg(const PlotSeries& s, const Frame& f, const char* colour) {
     points += px + "," + py + " ";
     marks += "<circle cx=\"" + px + "\" cy=\"" + py + "\" r=\"3\" fill=\"" + colour + "\"/>\n";
   }
-  return "<polyline fill=\"none\" stroke=\"" + std::string(colour) +
-         "\" stroke-width=\"1.5\" points=\"" + points + "\"/>\n" + marks;
+  return "<polyline fill=\"none\" stroke=\"" + std::string(colour) + "\" stroke-width=\"1.5\"" +
+         Dashes(s) + " points=\"" + points + "\"/>\n" + marks;
 }
 
 int Hidden(const PlotSeries& s) {
@@ -129,7 +133,7 @@ std::string Legend(const LogLogPlot& plot, const Frame& f) {
     const double x = f.width - kRight + 10.0;
     const char* colour = kColours[i % std::size(kColours)];
     svg += Line(x, y - 4, x + 18, y - 4,
-                ("stroke=\"" + std::string(colour) + "\" stroke-width=\"2\"").c_str());
+                ("stroke=\"" + std::string(colour) + "\" stroke-width=\"2\"" + Dashes(s)).c_str());
     const int hidden = Hidden(s);
     const std::string extra = hidden > 0 ? " (" + std::to_string(hidden) + " at 0)" : "";
     svg += Text(x + 24, y, s.label + extra, "start");

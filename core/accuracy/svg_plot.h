@@ -13,6 +13,7 @@ namespace lamina::core {
 struct PlotSeries {
   std::string label;
   std::vector<double> x, y;  ///< same length; drawn in this order
+  bool dashed = false;       ///< drawn dashed (the report's runs of other engines)
 };
 
 struct LogLogPlot {

@@ -212,6 +212,17 @@ void Simulator::DispatchStep(const StepEvent& event) {
   std::erase_if(observers_, [](const auto& entry) { return !entry.second; });
 }
 
+void Simulator::MirrorStep(double h, int contact_joints, const std::vector<ContactPair>& contacts) {
+  if (!(h > 0.0) || !std::isfinite(h))
+    throw std::invalid_argument("Simulator::MirrorStep: step " + std::to_string(h) +
+                                " s is not > 0 and finite");
+  time_ += h;
+  const std::vector<int> none;
+  const StepEvent event{*this, time_, h, 0u, contact_joints, 0, 0, none, contacts, feedback_};
+  AccumulateStep(event, &statistics_);
+  if (!observers_.empty()) DispatchStep(event);
+}
+
 // ---- state ------------------------------------------------------------------------------
 
 SimState Simulator::GetState() const {

@@ -186,6 +186,13 @@ class Simulator {
   /// call.
   int AddStepObserver(StepObserver observer);
   void RemoveStepObserver(int id);
+  /// A step another engine took (tests/bench/peers: MuJoCo and Bullet run the accuracy scenes,
+  /// and a Simulator of the same world mirrors their states so that the same probes judge
+  /// them). Call it after setting the poses and velocities the other engine reached: nothing is
+  /// integrated or collided; the time advances by `h` (> 0, finite; std::invalid_argument
+  /// otherwise), the statistics count an accepted step with `contact_joints` and `contacts`
+  /// (their max_depth: the other engine's deepest penetration, m) and the observers see it.
+  void MirrorStep(double h, int contact_joints, const std::vector<ContactPair>& contacts);
 
   /// Body by Klamp't world id (terrains, then objects, then robots and their links).
   SimBody body(int id) { return SimBody(this, id); }

@@ -68,6 +68,24 @@ TEST(AccuracyReportTest, SolverLabelsRoundTrip) {
   }
 }
 
+TEST(AccuracyReportTest, PeerLabelsRoundTripAndNameNoLaminaSolver) {
+  const auto mujoco = ParseAccuracySolver("mujoco");
+  ASSERT_TRUE(mujoco);
+  EXPECT_EQ(mujoco->peer, "mujoco");
+  const auto bullet = ParseAccuracySolver("bullet10");
+  ASSERT_TRUE(bullet);
+  EXPECT_EQ(bullet->peer, "bullet");
+  EXPECT_EQ(bullet->iterations, 10);
+  EXPECT_EQ(bullet->Label(), "bullet10");
+  EXPECT_FALSE(*bullet == *ParseAccuracySolver("bullet20"));
+  for (const char* bad : {"bullet", "bullet0", "mujoco-fixed", "bullet10-fixed", "mujoco2"}) {
+    EXPECT_FALSE(ParseAccuracySolver(bad)) << bad;
+  }
+  // Lamina's runner refuses a peer's label rather than running exact under its name
+  const AccuracyRun run = RunAccuracySceneOn(*FindAccuracyScene("pendulum"), {}, *mujoco, 1e-3);
+  EXPECT_THAT(run.failure, HasSubstr("tests/bench/peers"));
+}
+
 AccuracyRun MakeRun(const std::string& scene, double step, double error) {
   AccuracyRun run;
   run.scene = scene;
@@ -118,6 +136,71 @@ TEST(AccuracyReportTest, BarGridRunsEachScenesBarStepsOnly) {
   ASSERT_EQ(grid.solvers.size(), 1u);
   EXPECT_EQ(grid.solvers[0], DefaultAccuracySolver());
   EXPECT_EQ(grid.scenes.size(), AccuracyScenes().size());
+}
+
+}  // namespace
+}  // namespace lamina::core
+
+namespace lamina::core {
+namespace {
+
+AccuracyRun PeerRun() {
+  AccuracyRun run;
+  run.scene = "box_stack";
+  run.solver = *ParseAccuracySolver("bullet10");
+  run.step = 4e-3;
+  run.result.error = std::numeric_limits<double>::infinity();
+  run.result.metrics = {{"deepest overlap m", 1.25e-3}, {"top box moved m", 0.5}};
+  run.result.note = "it fell";
+  run.cpu_seconds = 0.125;
+  run.real_time_factor = 40;
+  run.steps = 1250;
+  run.min_step = 4e-3;
+  run.status = "normal";
+  return run;
+}
+
+TEST(AccuracyReportTest, RunsReadBackFromTheirJson) {
+  std::vector<AccuracyRun> runs = {MakeRun("pendulum", 1e-3, 0.5)};
+  std::string error;
+  ASSERT_TRUE(ReadAccuracyRunsJson(AccuracyJson({PeerRun()}, {}), "peers.json", &runs, &error))
+      << error;
+  ASSERT_EQ(runs.size(), 2u);
+  const AccuracyRun& read = runs[1];
+  const AccuracyRun written = PeerRun();
+  EXPECT_EQ(read.scene, written.scene);
+  EXPECT_EQ(read.solver, written.solver);
+  EXPECT_EQ(read.step, written.step);
+  EXPECT_TRUE(std::isnan(read.result.error));  // inf was written as null
+  EXPECT_EQ(read.result.note, written.result.note);
+  EXPECT_EQ(read.cpu_seconds, written.cpu_seconds);
+  EXPECT_EQ(read.real_time_factor, written.real_time_factor);
+  EXPECT_EQ(read.steps, written.steps);
+  EXPECT_EQ(read.min_step, written.min_step);
+  EXPECT_EQ(read.status, written.status);
+  EXPECT_EQ(RunMetric(read, "deepest overlap m"), 1.25e-3);
+  EXPECT_EQ(RunMetric(read, "top box moved m"), 0.5);
+}
+
+TEST(AccuracyReportTest, ABadRunsFileSaysWhereAndAddsNothing) {
+  std::vector<AccuracyRun> runs;
+  std::string error;
+  EXPECT_FALSE(ReadAccuracyRunsJson("{\"runs\": [", "a.json", &runs, &error));
+  EXPECT_EQ(error, "a.json: not JSON with a \"runs\" array");
+  nlohmann::json json = nlohmann::json::parse(AccuracyJson({PeerRun(), PeerRun()}, {}));
+  json["runs"][1]["solver"] = "havok";
+  EXPECT_FALSE(ReadAccuracyRunsJson(json.dump(), "b.json", &runs, &error));
+  EXPECT_EQ(error, "b.json: runs[1]: solver: 'havok' names no solver");
+  json["runs"][1]["solver"] = "mujoco";
+  json["runs"][0]["scene"] = "moon_landing";
+  EXPECT_FALSE(ReadAccuracyRunsJson(json.dump(), "c.json", &runs, &error));
+  EXPECT_EQ(error, "c.json: runs[0]: scene: no scene 'moon_landing'");
+  json["runs"][0]["scene"] = "box_stack";
+  json["runs"][0].erase("cpu_s");
+  EXPECT_FALSE(ReadAccuracyRunsJson(json.dump(), "d.json", &runs, &error));
+  EXPECT_THAT(error, HasSubstr("d.json: runs[0]: "));
+  EXPECT_THAT(error, HasSubstr("cpu_s"));
+  EXPECT_TRUE(runs.empty());
 }
 
 }  // namespace
