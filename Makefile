@@ -14,7 +14,7 @@ BENCH_FLAGS ?= --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
 PREFIX ?= /usr/local
 
-.PHONY: all deps configure build run test test-asan install bench bench-python accuracy format \
+.PHONY: all deps configure build run test test-asan install bench bench-python accuracy peers format \
         format-check clean
 
 all: build
@@ -65,9 +65,21 @@ bench-python: build
 	PYTHONPATH=$(BUILD)/python /usr/bin/python3 tests/bench/python_overhead.py --quickstep
 
 # docs/accuracy.md with its plots, runs.csv and runs.json in docs/accuracy/: every scene of
-# worlds/accuracy at steps 1e-5 ... 1e-2 s with the exact and QuickStep solvers, on every core
+# worlds/accuracy at steps 1e-5 ... 1e-2 s with the exact, Newton and QuickStep solvers, on every
+# core; with MuJoCo's and Bullet's runs of docs/accuracy/peers (`make peers`) on the same plots
+PEER_RUNS = docs/accuracy/peers/runs.json
 accuracy: build
-	$(BUILD)/bin/lamina-headless accuracy --out docs/accuracy --markdown docs/accuracy.md
+	$(BUILD)/bin/lamina-headless accuracy --out docs/accuracy --markdown docs/accuracy.md \
+	  $(if $(wildcard $(PEER_RUNS)),--peers $(PEER_RUNS))
+
+# the accuracy scenes through MuJoCo and Bullet (tests/bench/peers): installs Debian's
+# libmujoco-dev and libbullet-dev, builds lamina-peers and writes docs/accuracy/peers; then
+# `make accuracy` plots those runs beside Lamina's. Never part of `make test`.
+peers: deps
+	@bash cmake/setup-deps.sh peers
+	cmake -S . -B $(BUILD) -G Ninja -DLAMINA_BUILD_PEERS=ON $(CMAKE_FLAGS)
+	cmake --build $(BUILD) -j$(JOBS) --target lamina-peers
+	$(BUILD)/bin/lamina-peers --out docs/accuracy/peers
 
 SOURCES = $(shell git ls-files '*.cpp' '*.h')
 

@@ -5,10 +5,13 @@
 #   setup-deps.sh          what the build and `make test` need
 #   setup-deps.sh slurm    Slurm and munge for the cluster test (tests/cluster), installed by that
 #                          test when they are missing (22.05 in Debian 12; nothing starts by itself)
+#   setup-deps.sh peers    MuJoCo 2.2.2 and Bullet 3.24 for lamina-peers (`make peers`)
 set -euo pipefail
 
 if [[ ${1:-} == slurm ]]; then
   packages=(slurmctld slurmd slurm-client munge)
+elif [[ ${1:-} == peers ]]; then
+  packages=(libmujoco-dev libbullet-dev)
 else
   packages=(
     build-essential cmake ninja-build pkg-config
