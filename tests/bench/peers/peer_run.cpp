@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "core/accuracy/probe_support.h"
@@ -37,9 +38,7 @@ bool Mirror(const PeerReadout& readout, double step, core::Simulator* mirror) {
 
 // How far the engine's state before any step is from the world's initial state (m, m/s, rad/s
 // and rotation-matrix entries mixed: a check of the frame conversions, which must give ~1e-12).
-double StartMismatch(const core::WorldDesc& world, PeerEngine* engine) {
-  PeerReadout readout;
-  engine->Read(&readout);
+double StartMismatch(const core::WorldDesc& world, const PeerReadout& readout) {
   double worst = readout.objects.size() == world.objects.size() ? 0.0 : 1.0;
   for (std::size_t i = 0; i < readout.objects.size() && i < world.objects.size(); ++i) {
     const core::RigidObjectDesc& object = world.objects[i];
@@ -120,9 +119,18 @@ AccuracyRun RunPeerScene(const core::AccuracyScene& scene, const std::string& wo
       run.failure = "not expressed: " + why;
       return run;
     }
-    const double mismatch = StartMismatch(world, engine.get());
-    if (!(mismatch < 1e-9)) {
-      run.failure = "the engine starts " + std::to_string(mismatch) + " from the world's state";
+    // the engine must start where the world does, its surfaces touching at most (the worlds
+    // place their bodies on their padding): a check of the conversions
+    PeerReadout start;
+    engine->Read(&start);
+    const double mismatch = StartMismatch(world, start);
+    if (!(mismatch < 1e-9) || !(start.deepest < 1e-6)) {
+      char text[160];
+      std::snprintf(
+          text, sizeof text,
+          "the engine starts %.3g from the world's state, its surfaces overlapping %.3g m",
+          mismatch, start.deepest);
+      run.failure = text;
       return run;
     }
     Measure(scene, world, engine.get(), step, &run);

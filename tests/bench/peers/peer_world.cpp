@@ -31,7 +31,7 @@ bool ShapeOf(const GeometryDesc& geometry, double padding, PeerShape* shape, std
   shape->pose = Pose::Identity();
   shape->pose.translation() = placed.translation();
   shape->pose.linear() = linear * p.pose.linear();
-  const double grow = padding + geometry.margin;
+  const double grow = padding + geometry.margin;  // 0 padding for a preshrunk body
   if (p.type == PrimitiveType::kBox) {
     shape->kind = PeerShape::Kind::kBox;
     shape->half_size = geometry.scale.cwiseProduct(p.size) / 2 + Vec3::Constant(grow);
@@ -54,8 +54,10 @@ bool AddBody(const std::string& name, const GeometryDesc& geometry, const core::
   if (sim.surface.rolling_friction > 0 || sim.surface.spinning_friction > 0)
     return Refuse(name + ": rolling or spinning friction", why);
   if (geometry.empty()) return true;
+  // a preshrunk body's padded surface is its geometry as described
+  const double padding = sim.preshrink == core::Preshrink::kNone ? sim.padding : 0.0;
   PeerShape shape;
-  if (!ShapeOf(geometry, sim.padding, &shape, why)) return Refuse(name + ": " + *why, why);
+  if (!ShapeOf(geometry, padding, &shape, why)) return Refuse(name + ": " + *why, why);
   body->shapes.push_back(shape);
   return true;
 }

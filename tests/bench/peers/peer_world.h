@@ -6,7 +6,8 @@
 //
 // Differences from the Lamina world they come from, all stated in docs/accuracy.md "Peers":
 // - The boundary layer becomes solid: a shape grows by its body's padding (a box's half sizes, a
-//   sphere's radius), so the peers' surfaces are where Lamina's padded surfaces touch. A padded
+//   sphere's radius), so the peers' surfaces are where Lamina's padded surfaces touch; a
+//   preshrunk body's shape stays as described, which is where its padded surface lies. A padded
 //   box is rounded at its edges in Lamina and sharp here.
 // - Each touching pair gets Lamina's blended surface (BlendSurfaces: the harmonic mean of the
 //   frictions, the mean of the restitutions) exactly, not the engine's own combination rule.
