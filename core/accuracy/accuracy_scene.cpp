@@ -7,10 +7,12 @@ namespace lamina::core {
 
 const std::vector<AccuracyScene>& AccuracyScenes() {
   static const std::vector<AccuracyScene> scenes = {
-      BallisticBoxScene(), SlidingBlockScene(0.0), SlidingBlockScene(22.5), SlidingBlockScene(45.0),
-      BouncingBallScene(), PendulumScene(),        InclineScene(),          SlideToRollScene(),
-      BoxStackScene(),     HeavyOnLightScene(100), HeavyOnLightScene(1000), ChainScene(),
-      StiffnessScene(),    HighSpeedScene(),       MeshJitterScene(),
+      BallisticBoxScene(),     SlidingBlockScene(0.0),   SlidingBlockScene(22.5),
+      SlidingBlockScene(45.0), BouncingBallScene("0.5"), BouncingBallScene("0.9"),
+      BouncingBallScene("1"),  PendulumScene(),          InclineScene(),
+      SlideToRollScene(false), SlideToRollScene(true),   BoxStackScene(),
+      HeavyOnLightScene(100),  HeavyOnLightScene(1000),  ChainScene(),
+      StiffnessScene(),        HighSpeedScene(),         MeshJitterScene(),
   };
   return scenes;
 }

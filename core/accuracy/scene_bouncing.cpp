@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Bouncing ball (numerics §6 scene 6): a 0.1 m, 1 kg sphere dropped from rest onto a rigid floor
-// with restitution 0.5 on both sides (the pair's is their mean, 0.5). Heights count from the
-// contact level, where the padded surfaces touch (floor top z = 0, plus the radius and both
-// paddings): the ball falls H and rises e²·H after the first bounce.
+// with restitution e = 0.5, 0.9 or 1 on both sides (the pair's is their mean, e). Heights count
+// from the contact level, where the padded surfaces touch (floor top z = 0, plus the radius and
+// both paddings): the ball falls H and rises e²·H after the first bounce. The runs last 0.1 s
+// past the first apex (t = (1 + e)·√(2H/g) = 0.68, 0.86 and 0.90 s) rounded up: 0.8, 1 and 1.1 s.
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "core/accuracy/probe_support.h"
 #include "core/accuracy/scenes.h"
@@ -13,8 +15,6 @@
 
 namespace lamina::core {
 namespace {
-
-constexpr double kDuration = 0.8;
 
 // The centre height at which the padded ball touches the padded floor (floor top at z = 0).
 double ContactLevel(const WorldDesc& world) {
@@ -57,6 +57,12 @@ class BouncingProbe : public AccuracyProbe {
   Phase phase_ = Phase::kFalling;
 };
 
+// "0.9" -> "0_9"
+std::string Underscored(std::string text) {
+  std::replace(text.begin(), text.end(), '.', '_');
+  return text;
+}
+
 BarCheck ReboundWithin(const std::vector<const AccuracyRun*>& runs) {
   BarCheck check;
   if (!RunsUsable(runs, &check)) return check;
@@ -66,18 +72,22 @@ BarCheck ReboundWithin(const std::vector<const AccuracyRun*>& runs) {
 
 }  // namespace
 
-AccuracyScene BouncingBallScene() {
+AccuracyScene BouncingBallScene(const std::string& restitution) {
   AccuracyScene scene;
-  scene.name = "bouncing_ball";
-  scene.world = "bouncing_ball.xml";
-  scene.title = "Bouncing ball, restitution 0.5";
+  const std::string suffix = restitution == "0.5" ? "" : "_" + Underscored(restitution);
+  scene.name = "bouncing_ball" + suffix;
+  scene.world = scene.name + ".xml";
+  scene.title = "Bouncing ball, restitution " + restitution;
+  const double e = std::stod(restitution);
+  // to the first apex, rounded up to 0.1 s, and 0.1 s more
+  scene.duration = std::ceil((1.0 + e) * std::sqrt(2.0 / 9.8) * 10.0) / 10.0 + 0.1;
   scene.setup =
       "0.1 m, 1 kg sphere dropped 1 m (from the contact level) onto a rigid floor, "
-      "restitution 0.5 on both, 2.5 mm padding on the ball; 0.8 s";
+      "restitution " +
+      restitution + " on both, 2.5 mm padding on the ball; " + Measured(scene.duration, "s");
   scene.metric = "height of the first rebound against e²·H";
   scene.unit = "m";
-  scene.answer = "e²·H = 0.25 m above the contact level";
-  scene.duration = kDuration;
+  scene.answer = "e²·H = " + Measured(e * e, "m") + " above the contact level";
   scene.min_step = 1e-5;
   scene.probe = [](const WorldDesc& world) { return std::make_unique<BouncingProbe>(world); };
   scene.bars = {{"rebound height within 1 % of e²H at 1 ms", {1e-3}, ReboundWithin}};

@@ -3,6 +3,8 @@
 // report's order). Each file states its scene's setup, answer and bars in its own comment.
 #pragma once
 
+#include <string>
+
 #include "core/accuracy/accuracy_scene.h"
 
 namespace lamina::core {
@@ -10,10 +12,13 @@ namespace lamina::core {
 AccuracyScene BallisticBoxScene();
 /// The block sliding to rest at `degrees` from the contact frame's first axis (0, 22.5, 45).
 AccuracyScene SlidingBlockScene(double degrees);
-AccuracyScene BouncingBallScene();
+/// The ball with restitution `restitution` ("0.5", "0.9" or "1": the world file's suffix).
+AccuracyScene BouncingBallScene(const std::string& restitution);
 AccuracyScene PendulumScene();
 AccuracyScene InclineScene();
-AccuracyScene SlideToRollScene();
+/// The bowling ball launched without spin, or (`spin`) with Drake's side spin of 8π rad/s about
+/// its launch direction, which hooks it.
+AccuracyScene SlideToRollScene(bool spin);
 AccuracyScene BoxStackScene();
 /// The heavy box (`ratio` kg: 100 or 1000) on the 1 kg box.
 AccuracyScene HeavyOnLightScene(int ratio);
