@@ -12,7 +12,8 @@ const std::vector<AccuracyScene>& AccuracyScenes() {
       BouncingBallScene("1"),  PendulumScene(),          InclineScene(),
       SlideToRollScene(false), SlideToRollScene(true),   BoxStackScene(),
       HeavyOnLightScene(100),  HeavyOnLightScene(1000),  ChainScene(),
-      StiffnessScene(),        HighSpeedScene(),         MeshJitterScene(),
+      StiffnessScene(),        StiffnessDropScene(),     HighSpeedScene(),
+      MeshJitterScene(),
   };
   return scenes;
 }

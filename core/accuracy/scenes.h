@@ -24,6 +24,7 @@ AccuracyScene BoxStackScene();
 AccuracyScene HeavyOnLightScene(int ratio);
 AccuracyScene ChainScene();
 AccuracyScene StiffnessScene();
+AccuracyScene StiffnessDropScene();
 AccuracyScene HighSpeedScene();
 AccuracyScene MeshJitterScene();
 
