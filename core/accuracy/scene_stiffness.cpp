@@ -187,9 +187,12 @@ std::vector<DropBlock> ReadDrops(const WorldDesc& world) {
         BlendSurfaces(object.sim.surface, world.terrains.at(i).sim.surface);
     const double drop = DropHeight(world, static_cast<int>(i));
     const double v0 = std::sqrt(2.0 * g * drop);
-    drops.push_back({object.name,
-                     SpringDamperLanding(object.mass, layer.stiffness, layer.damping, g, v0), drop,
-                     (object.pose * object.com).z()});
+    DropBlock block;
+    block.name = object.name;
+    block.expected = SpringDamperLanding(object.mass, layer.stiffness, layer.damping, g, v0);
+    block.drop = drop;
+    block.start_z = (object.pose * object.com).z();
+    drops.push_back(block);
   }
   return drops;
 }

@@ -6,6 +6,7 @@
 // pairs collide, each an explicit <pair> with Lamina's blended friction; a pair with restitution
 // e > 0 gets the damping ratio ζ = −ln e / √(π² + ln² e) of a spring–damper that rebounds with e
 // (MuJoCo has no restitution coefficient).
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -138,10 +139,12 @@ class MujocoModelWriter {
     return xml;
   }
 
+  // e = 1 would need ζ = 0, which MuJoCo refuses (it falls back to its default solref): ζ stays
+  // at least 1e-6, a rebound of e = 0.999997
   static std::string SolRef(double restitution) {
     if (restitution <= 0.0) return "";
     const double log_e = std::log(restitution);
-    const double zeta = -log_e / std::sqrt(M_PI * M_PI + log_e * log_e);
+    const double zeta = std::max(1e-6, -log_e / std::sqrt(M_PI * M_PI + log_e * log_e));
     return " solref=\"0.02 " + Num(zeta) + "\"";
   }
 
@@ -150,8 +153,13 @@ class MujocoModelWriter {
 
 std::mutex load_mutex;  // MuJoCo's XML parser is not documented as thread-safe
 
+// MuJoCo's warnings would go to the terminal and to MUJOCO_LOG.TXT in the working folder; the
+// run reads the one that matters from mjData (MujocoPeer::Trouble) instead.
+void QuietWarning(const char*) {}
+
 mjModel* LoadFromMemory(const std::string& xml, std::string* why) {
   const std::lock_guard<std::mutex> lock(load_mutex);
+  mju_user_warning = QuietWarning;
   auto vfs = std::make_unique<mjVFS>();
   mj_defaultVFS(vfs.get());
   mj_makeEmptyFileVFS(vfs.get(), "peer.xml", static_cast<int>(xml.size()));
@@ -172,6 +180,14 @@ class MujocoPeer : public PeerEngine {
   }
 
   bool Build(const PeerWorld& world, double step, std::string* why) override {
+    for (const PeerPair& pair : world.pairs) {
+      if (pair.restitution >= 1.0) {
+        *why =
+            "restitution 1: MuJoCo's contacts are spring-dampers, and one without damping "
+            "(damping ratio 0) is refused";
+        return false;
+      }
+    }
     MujocoModelWriter writer(world);
     model_ = LoadFromMemory(writer.Write(step), why);
     if (model_ == nullptr) return false;
@@ -186,6 +202,12 @@ class MujocoPeer : public PeerEngine {
   }
 
   void Step() override { mj_step(model_, data_); }
+
+  std::string Trouble() const override {
+    if (data_->warning[mjWARN_BADQACC].number == 0) return "";
+    return "MuJoCo found bad accelerations at t = " + Num(data_->time) +
+           " s and reset the simulation";
+  }
 
   void Read(PeerReadout* readout) override {
     mj_kinematics(model_, data_);

@@ -65,6 +65,11 @@ void Measure(const core::AccuracyScene& scene, const core::WorldDesc& world, Pee
   const long steps = StepCount(scene, step);
   for (long i = 0; i < steps; ++i) {
     engine->Step();
+    if (const std::string trouble = engine->Trouble(); !trouble.empty()) {
+      run->failure = trouble;
+      run->status = "error";
+      break;
+    }
     engine->Read(&readout);
     if (!Mirror(readout, step, &mirror)) {
       run->failure = "a state became non-finite at t = " + std::to_string((i + 1) * step) + " s";
@@ -75,7 +80,7 @@ void Measure(const core::AccuracyScene& scene, const core::WorldDesc& world, Pee
   run->result = probe->Finish(mirror);
   run->steps = mirror.statistics().steps;
   run->min_step = step;
-  run->status = "normal";
+  if (run->status.empty()) run->status = "normal";
 }
 
 // The timed run: the same steps on a fresh build, nothing read back.

@@ -39,6 +39,9 @@ class PeerEngine {
   virtual void Step() = 0;
   /// The state after the last step (may do work the timing leaves out).
   virtual void Read(PeerReadout* readout) = 0;
+  /// What went wrong in the engine's own judgement ("" while nothing did): MuJoCo resets a
+  /// simulation whose accelerations became bad, after which its states are no answer.
+  virtual std::string Trouble() const { return ""; }
 };
 
 /// "mujoco" or "bullet" with `iterations`; nullptr for another name.
