@@ -49,6 +49,7 @@ test-asan:
 	$(MAKE) test BUILD=build-asan CTEST_FLAGS="-LE 'physics|bench'" CMAKE_FLAGS="-DCMAKE_BUILD_TYPE=Debug \
 	  -DLAMINA_SANITIZE='address;undefined' -DLAMINA_BUILD_EDITOR=OFF -DLAMINA_BUILD_HEADLESS=OFF \
 	  -DLAMINA_BUILD_BENCHMARKS=OFF -DLAMINA_BUILD_PYTHON=OFF -DLAMINA_BUILD_PHYSICS_TESTS=OFF \
+	  -DLAMINA_BUILD_PEERS=OFF \
 	  $(CMAKE_FLAGS)"
 
 # timings from one run: every benchmark repeated, the console shows medians (and the spread);

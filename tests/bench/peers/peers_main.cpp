@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // lamina-peers: the accuracy scenes (docs/accuracy.md) through MuJoCo and Bullet, measured by the
 // scenes' own probes, written as the accuracy report's runs.json and runs.csv so that
-// `lamina-headless accuracy --peers runs.json` plots them beside Lamina's solvers. Built only
-// with -DLAMINA_BUILD_PEERS=ON (`make peers` installs Debian's libmujoco-dev and libbullet-dev
-// and runs it); never part of `make test`.
+// `lamina-headless accuracy --peers runs.json` plots them beside Lamina's solvers. Built when
+// Debian's libmujoco-dev and libbullet-dev are installed (`make peers` installs them and runs it);
+// never part of `make test`.
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
