@@ -19,7 +19,7 @@ else
     liburdfdom-dev liburdfdom-headers-dev libtinyxml2-dev libimgui-dev libglfw3-dev
     libosmesa6-dev libegl-dev libstb-dev libgtest-dev libgmock-dev libbenchmark-dev
     libcli11-dev nlohmann-json3-dev
-    pybind11-dev python3-pybind11 python3-pytest python3-numpy python3-dev
+    pybind11-dev python3-pybind11 python3-pytest python3-numpy python3-pil python3-dev
     xvfb xauth xdotool clang-format lld
   )
 fi
