@@ -30,6 +30,9 @@ bool Mirror(const PeerReadout& readout, double step, core::Simulator* mirror) {
     mirror->SetObjectPose(static_cast<int>(i), readout.objects[i].pose);
     mirror->SetObjectVelocity(static_cast<int>(i), readout.objects[i].velocity);
   }
+  // the engine's deepest penetration reaches the statistics as one pair of no bodies (a probe that
+  // reads a body's own pairs, as the soft-layer scenes' do, finds none: those scenes have no peer
+  // runs)
   std::vector<core::ContactPair> pairs(1);
   pairs[0].max_depth = readout.deepest;
   mirror->MirrorStep(step, readout.contacts, pairs);
