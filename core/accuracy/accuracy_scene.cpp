@@ -13,7 +13,8 @@ const std::vector<AccuracyScene>& AccuracyScenes() {
       SlideToRollScene(false), SlideToRollScene(true),   BoxStackScene(),
       HeavyOnLightScene(100),  HeavyOnLightScene(1000),  ChainScene(),
       StiffnessScene(),        StiffnessDropScene(),     HighSpeedScene(),
-      MeshJitterScene(),
+      MeshJitterScene(""),     MeshJitterScene("pad0"),  MeshJitterScene("pad1"),
+      MeshJitterScene("pad5"),
   };
   return scenes;
 }

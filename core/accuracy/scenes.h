@@ -26,6 +26,8 @@ AccuracyScene ChainScene();
 AccuracyScene StiffnessScene();
 AccuracyScene StiffnessDropScene();
 AccuracyScene HighSpeedScene();
-AccuracyScene MeshJitterScene();
+/// The mesh cube on the mesh floor; `variant` "" (2.5 mm padding), "pad0", "pad1" or "pad5"
+/// (padding 0, 1, 5 mm).
+AccuracyScene MeshJitterScene(const std::string& variant);
 
 }  // namespace lamina::core
