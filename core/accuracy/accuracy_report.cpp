@@ -219,7 +219,7 @@ std::string AccuracySceneSvg(const AccuracyScene& scene, const std::vector<Accur
   LogLogPlot plot;
   plot.title = scene.title;
   plot.x_label = axis == PlotAxis::kCpuTime ? "CPU time of the run (s)" : "largest step h (s)";
-  plot.y_label = "error (" + scene.unit + ")";
+  plot.y_label = scene.unit.empty() ? "relative error" : "error (" + scene.unit + ")";
   for (const AccuracySolver& solver : SolversOf(runs, scene.name)) {
     const SeriesData data = Data(SeriesRuns(runs, scene.name, solver));
     const std::vector<double>& x = axis == PlotAxis::kCpuTime ? data.time : data.step;

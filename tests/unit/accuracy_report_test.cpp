@@ -160,6 +160,17 @@ AccuracyRun PeerRun() {
   return run;
 }
 
+TEST(AccuracyReportTest, APlotLabelsItsErrorWithTheSceneUnitOrAsRelative) {
+  std::vector<AccuracyRun> runs = {MakeRun("bouncing_ball", 1e-3, 0.01),
+                                   MakeRun("slide_to_roll", 1e-3, 1e-8)};
+  EXPECT_THAT(AccuracySceneSvg(*FindAccuracyScene("bouncing_ball"), runs, PlotAxis::kStep),
+              HasSubstr(">error (m)<"));
+  const std::string unitless =
+      AccuracySceneSvg(*FindAccuracyScene("slide_to_roll"), runs, PlotAxis::kStep);
+  EXPECT_THAT(unitless, HasSubstr(">relative error<"));
+  EXPECT_THAT(unitless, ::testing::Not(HasSubstr("error ()")));
+}
+
 TEST(AccuracyReportTest, RunsReadBackFromTheirJson) {
   std::vector<AccuracyRun> runs = {MakeRun("pendulum", 1e-3, 0.5)};
   std::string error;
