@@ -180,7 +180,7 @@ std::vector<Job> MakeJobs(const AccuracyGrid& grid) {
 
 std::vector<AccuracyRun> RunAccuracySweep(
     const AccuracyGrid& grid, const std::string& worlds_dir, int threads,
-    const std::function<void(const AccuracyProgress&)>& progress) {
+    const std::function<void(const AccuracyProgress&)>& progress, const AccuracyRunner& runner) {
   std::vector<Job> jobs = MakeJobs(grid);
   std::vector<AccuracyRun> runs(jobs.size());
   std::sort(jobs.begin(), jobs.end(), [](const Job& a, const Job& b) {
@@ -192,7 +192,7 @@ std::vector<AccuracyRun> RunAccuracySweep(
   auto work = [&] {
     for (std::size_t i = next++; i < jobs.size(); i = next++) {
       const Job& job = jobs[i];
-      runs[job.slot] = RunAccuracyScene(*job.scene, worlds_dir, job.solver, job.step);
+      runs[job.slot] = runner(*job.scene, worlds_dir, job.solver, job.step);
       const std::lock_guard<std::mutex> lock(report);
       ++done;
       if (progress) progress({done, static_cast<int>(jobs.size()), &runs[job.slot]});

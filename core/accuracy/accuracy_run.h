@@ -43,12 +43,17 @@ struct AccuracyProgress {
   const AccuracyRun* last = nullptr;
 };
 
+/// What runs one job of a sweep: RunAccuracyScene, or another engine's runner (tests/bench/peers).
+using AccuracyRunner = std::function<AccuracyRun(
+    const AccuracyScene&, const std::string& worlds_dir, const AccuracySolver&, double step)>;
+
 /// Runs the grid on `threads` threads (0: every core), the costliest runs first; results in the
 /// grid's order (scene, solver, step). `progress` (optional) is called from one thread at a time
-/// after each run.
+/// after each run. `runner` runs each job (default RunAccuracyScene).
 std::vector<AccuracyRun> RunAccuracySweep(
     const AccuracyGrid& grid, const std::string& worlds_dir, int threads,
-    const std::function<void(const AccuracyProgress&)>& progress);
+    const std::function<void(const AccuracyProgress&)>& progress,
+    const AccuracyRunner& runner = RunAccuracyScene);
 
 /// The runs of `scene` with `solver` at each of `steps` (nullptr where missing), in that order.
 std::vector<const AccuracyRun*> FindAccuracyRuns(const std::vector<AccuracyRun>& runs,

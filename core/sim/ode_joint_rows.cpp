@@ -63,15 +63,15 @@ void BallRows(dJointID joint, const JointContext& c, double k, std::vector<Newto
 }
 
 // the law of addLimot's stop row for an unpowered joint whose coordinate (hinge angle, slider
-// position) is `value`: pushes back at the stop ERP and CFM, one-sided unless both stops meet
+// position) is `value`: pushes back at the stop ERP, one-sided unless both stops meet
 struct StopLaw {
-  double rhs, cfm, lo, hi;
+  double rhs, lo, hi;
 };
-StopLaw Stop(double value, double lo, double hi, double erp, double cfm, double step) {
+StopLaw Stop(double value, double lo, double hi, double erp, double step) {
   const bool low = value <= lo;
   const double rhs = -erp / step * (low ? value - lo : value - hi);
-  if (lo == hi) return {rhs, cfm, -kInf, kInf};
-  return {rhs, cfm, low ? 0.0 : -kInf, low ? kInf : 0.0};
+  if (lo == hi) return {rhs, -kInf, kInf};
+  return {rhs, low ? 0.0 : -kInf, low ? kInf : 0.0};
 }
 
 // the hinge's stop row, when getInfo1's test finds it at a stop
@@ -82,9 +82,8 @@ void HingeStopRow(dJointID joint, const JointContext& c, const Vec3& axis, doubl
   if (!((lo >= -M_PI || hi <= M_PI) && lo <= hi)) return;  // getInfo1's test
   const double angle = dJointGetHingeAngle(joint);
   if (angle > lo && angle < hi) return;
-  const StopLaw law = Stop(angle, lo, hi, dJointGetHingeParam(joint, dParamStopERP),
-                           dJointGetHingeParam(joint, dParamStopCFM), step);
-  AngularRow(c, axis, law.rhs, law.cfm, law.lo, law.hi, rows);
+  const StopLaw law = Stop(angle, lo, hi, dJointGetHingeParam(joint, dParamStopERP), step);
+  AngularRow(c, axis, law.rhs, dJointGetHingeParam(joint, dParamStopCFM), law.lo, law.hi, rows);
 }
 
 bool HingeRows(dJointID joint, const JointContext& c, const Vec3& axis2, double erp, double step,
@@ -181,9 +180,9 @@ void SliderStopRow(dJointID joint, const JointContext& c, const Vec3& axis, doub
   if (!((lo > -kInf || hi < kInf) && lo <= hi)) return;
   const double position = dJointGetSliderPosition(joint);
   if (position > lo && position < hi) return;
-  const StopLaw law = Stop(position, lo, hi, dJointGetSliderParam(joint, dParamStopERP),
-                           dJointGetSliderParam(joint, dParamStopCFM), step);
-  LinearRow(c, axis, HalfwayArm(joint), law.rhs, law.cfm, law.lo, law.hi, rows);
+  const StopLaw law = Stop(position, lo, hi, dJointGetSliderParam(joint, dParamStopERP), step);
+  LinearRow(c, axis, HalfwayArm(joint), law.rhs, dJointGetSliderParam(joint, dParamStopCFM), law.lo,
+            law.hi, rows);
 }
 
 // three rows keeping the rotations, two keeping the first body's centre on the axis through the

@@ -11,35 +11,28 @@
 #include <cstring>
 #include <memory>
 #include <mutex>
-#include <sstream>
 
 #include <mujoco/mujoco.h>
 
+#include "core/number_text.h"
 #include "tests/bench/peers/peer_run.h"
 
 namespace lamina::peers {
 namespace {
 
+// MJCF numbers: the shortest text that reads back to the same double (core/number_text.h)
 std::string Vec(const Vec3& v) {
-  std::ostringstream text;
-  text.precision(17);
-  text << v.x() << " " << v.y() << " " << v.z();
-  return text.str();
+  return core::FormatDoubles(v.data(), 3);
 }
 
 std::string Quat(const Mat3& rotation) {
   const Eigen::Quaterniond q(rotation);
-  std::ostringstream text;
-  text.precision(17);
-  text << q.w() << " " << q.x() << " " << q.y() << " " << q.z();
-  return text.str();
+  const double wxyz[4] = {q.w(), q.x(), q.y(), q.z()};
+  return core::FormatDoubles(wxyz, 4);
 }
 
 std::string Num(double value) {
-  std::ostringstream text;
-  text.precision(17);
-  text << value;
-  return text.str();
+  return core::FormatDouble(value);
 }
 
 std::string GeomName(int body, std::size_t shape) {

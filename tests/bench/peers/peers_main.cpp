@@ -4,16 +4,14 @@
 // `lamina-headless accuracy --peers runs.json` plots them beside Lamina's solvers. Built when
 // Debian's libmujoco-dev and libbullet-dev are installed (`make peers` installs them and runs it);
 // never part of `make test`.
-#include <algorithm>
-#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
-#include <mutex>
+#include <optional>
 #include <set>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -28,7 +26,6 @@ namespace {
 
 using lamina::core::AccuracyRun;
 using lamina::core::AccuracyScene;
-using lamina::core::AccuracySolver;
 
 struct Options {
   std::vector<std::string> scenes, peers = {"mujoco", "bullet10"};
@@ -39,63 +36,37 @@ struct Options {
   bool quiet = false;
 };
 
-struct Job {
-  const AccuracyScene* scene;
-  AccuracySolver solver;
-  double step;
-};
-
-bool MakeJobs(const Options& options, std::vector<Job>* jobs) {
-  std::vector<AccuracySolver> solvers;
+// The sweep's grid: the picked scenes (every one when none is named) with the named peers at
+// the steps; nullopt with a message for a label that names no peer or a scene that does not exist.
+std::optional<lamina::core::AccuracyGrid> MakeGrid(const Options& options) {
+  lamina::core::AccuracyGrid grid;
+  grid.steps = options.steps;
   for (const std::string& label : options.peers) {
     const auto solver = lamina::core::ParseAccuracySolver(label);
     if (!solver || solver->peer.empty()) {
       std::cerr << "lamina-peers: --peers: '" << label << "' is not mujoco or bulletN\n";
-      return false;
+      return std::nullopt;
     }
-    solvers.push_back(*solver);
+    grid.solvers.push_back(*solver);
   }
   for (const AccuracyScene& scene : lamina::core::AccuracyScenes()) {
-    const bool picked =
-        options.scenes.empty() ||
-        std::find(options.scenes.begin(), options.scenes.end(), scene.name) != options.scenes.end();
-    if (!picked) continue;
-    for (const AccuracySolver& solver : solvers) {
-      for (double step : options.steps) {
-        if (step >= scene.min_step * (1 - 1e-9)) jobs->push_back({&scene, solver, step});
-      }
-    }
+    if (options.scenes.empty()) grid.scenes.push_back(&scene);
   }
-  if (jobs->empty()) std::cerr << "lamina-peers: no scene matches --scenes\n";
-  return !jobs->empty();
-}
-
-void Progress(int done, int total, const AccuracyRun& run) {
-  std::fprintf(stderr, "\r%d/%d  %-24s %-10s h=%-8g", done, total, run.scene.c_str(),
-               run.solver.Label().c_str(), run.step);
-  if (done == total) std::fprintf(stderr, "\n");
-}
-
-std::vector<AccuracyRun> RunJobs(const std::vector<Job>& jobs, const Options& options) {
-  std::vector<AccuracyRun> runs(jobs.size());
-  std::atomic<std::size_t> next{0};
-  std::mutex report;
-  int done = 0;
-  const bool show = !options.quiet && isatty(STDERR_FILENO);
-  auto work = [&] {
-    for (std::size_t i = next++; i < jobs.size(); i = next++) {
-      runs[i] =
-          lamina::peers::RunPeerScene(*jobs[i].scene, options.worlds, jobs[i].solver, jobs[i].step);
-      const std::lock_guard<std::mutex> lock(report);
-      if (show) Progress(++done, static_cast<int>(jobs.size()), runs[i]);
+  for (const std::string& name : options.scenes) {
+    const AccuracyScene* scene = lamina::core::FindAccuracyScene(name);
+    if (scene == nullptr) {
+      std::cerr << "lamina-peers: --scenes: no scene '" << name << "'\n";
+      return std::nullopt;
     }
-  };
-  const int count =
-      options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
-  std::vector<std::thread> pool;
-  for (int t = 0; t < std::max(count, 1); ++t) pool.emplace_back(work);
-  for (std::thread& thread : pool) thread.join();
-  return runs;
+    grid.scenes.push_back(scene);
+  }
+  return grid;
+}
+
+void Progress(const lamina::core::AccuracyProgress& p) {
+  std::fprintf(stderr, "\r%d/%d  %-24s %-10s h=%-8g", p.done, p.total, p.last->scene.c_str(),
+               p.last->solver.Label().c_str(), p.last->step);
+  if (p.done == p.total) std::fprintf(stderr, "\n");
 }
 
 // The runs that ran; a scene a peer cannot express is said once and left out.
@@ -141,9 +112,12 @@ int main(int argc, char** argv) {
   app.add_option("--threads", options.threads, "worker threads (default: every core)");
   app.add_flag("-q,--quiet", options.quiet, "no progress line");
   CLI11_PARSE(app, argc, argv);
-  std::vector<Job> jobs;
-  if (!MakeJobs(options, &jobs)) return 2;
-  const std::vector<AccuracyRun> runs = Report(RunJobs(jobs, options));
+  const std::optional<lamina::core::AccuracyGrid> grid = MakeGrid(options);
+  if (!grid) return 2;
+  std::function<void(const lamina::core::AccuracyProgress&)> progress;
+  if (!options.quiet && isatty(STDERR_FILENO)) progress = Progress;
+  const std::vector<AccuracyRun> runs = Report(lamina::core::RunAccuracySweep(
+      *grid, options.worlds, options.threads, progress, lamina::peers::RunPeerScene));
   std::filesystem::create_directories(options.out);
   const std::filesystem::path out(options.out);
   const bool ok = Write(out / "runs.json", lamina::core::AccuracyJson(runs, {})) &&
