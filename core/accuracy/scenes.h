@@ -15,6 +15,8 @@ AccuracyScene SlidingBlockScene(double degrees);
 /// The ball with restitution `restitution` ("0.5", "0.9" or "1": the world file's suffix).
 AccuracyScene BouncingBallScene(const std::string& restitution);
 AccuracyScene PendulumScene();
+/// Rods hinged end to end, released level: `links` 2 (the double pendulum) or 10.
+AccuracyScene LinkedPendulumScene(int links);
 AccuracyScene InclineScene();
 /// The bowling ball launched without spin, or (`spin`) with Drake's side spin of 8π rad/s about
 /// its launch direction, which hooks it.
