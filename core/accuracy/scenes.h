@@ -27,7 +27,8 @@ AccuracyScene HeavyOnLightScene(int ratio);
 AccuracyScene ChainScene();
 AccuracyScene StiffnessScene();
 AccuracyScene StiffnessDropScene();
-AccuracyScene HighSpeedScene();
+/// The balls against thin walls, or (`rods`) the thin rods falling onto thin floors.
+AccuracyScene HighSpeedScene(bool rods);
 /// The mesh cube on the mesh floor; `variant` "" (2.5 mm padding), "pad0", "pad1" or "pad5"
 /// (padding 0, 1, 5 mm).
 AccuracyScene MeshJitterScene(const std::string& variant);

@@ -1,0 +1,3 @@
+Primitive
+AABB
+-1 -1 -0.01   1 1 0
