@@ -22,7 +22,8 @@ Eigen::MatrixXd Coupling(const PlanarChain& chain) {
   Eigen::MatrixXd b = Eigen::MatrixXd::Zero(n, n);
   for (int k = 0; k < n; ++k) {
     for (int i = 0; i <= k; ++i) {
-      for (int j = 0; j <= k; ++j) b(i, j) += chain.links[k].mass * Lever(chain, k, i) * Lever(chain, k, j);
+      for (int j = 0; j <= k; ++j)
+        b(i, j) += chain.links[k].mass * Lever(chain, k, i) * Lever(chain, k, j);
     }
   }
   return b;
@@ -42,7 +43,8 @@ Eigen::MatrixXd MassMatrix(const PlanarChain& chain, const Eigen::MatrixXd& b,
 // Σ_k m_k·ℓ_ki: the gravity lever of angle i (kg·m).
 double GravityLever(const PlanarChain& chain, int i) {
   double sum = 0.0;
-  for (int k = i; k < static_cast<int>(chain.links.size()); ++k) sum += chain.links[k].mass * Lever(chain, k, i);
+  for (int k = i; k < static_cast<int>(chain.links.size()); ++k)
+    sum += chain.links[k].mass * Lever(chain, k, i);
   return sum;
 }
 
@@ -67,7 +69,8 @@ Eigen::VectorXd PlanarChain::Accelerations(const PlanarChainState& state) const 
   for (int i = 0; i < n; ++i) {
     double coriolis = 0.0;
     for (int j = 0; j < n; ++j) {
-      coriolis += b(i, j) * std::sin(state.angle[i] - state.angle[j]) * state.rate[j] * state.rate[j];
+      coriolis +=
+          b(i, j) * std::sin(state.angle[i] - state.angle[j]) * state.rate[j] * state.rate[j];
     }
     force[i] = -coriolis - g * std::sin(state.angle[i]) * GravityLever(*this, i);
   }
@@ -122,8 +125,9 @@ PlanarChainState PlanarChainTrajectory::State(double t) const {
   // cubic Hermite on the angle (values and rates), and on the rate (rates and accelerations)
   const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
   const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
-  return {h00 * a.angle + h10 * h * a.rate + h01 * b.angle + h11 * h * b.rate,
-          h00 * a.rate + h10 * h * accelerations_[i] + h01 * b.rate + h11 * h * accelerations_[i + 1]};
+  return {
+      h00 * a.angle + h10 * h * a.rate + h01 * b.angle + h11 * h * b.rate,
+      h00 * a.rate + h10 * h * accelerations_[i] + h01 * b.rate + h11 * h * accelerations_[i + 1]};
 }
 
 std::vector<Vec3> WorldPlanarChain::Centres(const Eigen::VectorXd& angle) const {
@@ -166,7 +170,8 @@ std::string ReadLink(const WorldDesc& world, int k, WorldPlanarChain* out) {
   const Vec3 com = object.pose * object.com;
   const Eigen::Vector2d hinge = planar(world.joints[k].point), centre = planar(com);
   const bool last = k + 1 == static_cast<int>(world.objects.size());
-  const Eigen::Vector2d span = last ? Eigen::Vector2d(centre - hinge) : Eigen::Vector2d(planar(world.joints[k + 1].point) - hinge);
+  const Eigen::Vector2d span = last ? Eigen::Vector2d(centre - hinge)
+                                    : Eigen::Vector2d(planar(world.joints[k + 1].point) - hinge);
   if (span.norm() < kLineTolerance) return "object " + std::to_string(k) + " has no length";
   const Eigen::Vector2d u = span.normalized();
   const Eigen::Vector2d arm = centre - hinge;
@@ -174,7 +179,8 @@ std::string ReadLink(const WorldDesc& world, int k, WorldPlanarChain* out) {
     return "object " + std::to_string(k) + "'s centre of mass is off the line of its hinges";
   }
   const Mat3 rotation = object.pose.linear();
-  PlanarLink link{object.mass, out->axis.dot(rotation * object.inertia * rotation.transpose() * out->axis),
+  PlanarLink link{object.mass,
+                  out->axis.dot(rotation * object.inertia * rotation.transpose() * out->axis),
                   arm.dot(u), last ? 0.0 : span.norm()};
   out->chain.links.push_back(link);
   out->start.angle[k] = std::atan2(u.y(), u.x());

@@ -11,7 +11,8 @@
 // direction). θ_k is the angle of link k from the down direction, positive towards
 // side = axis × down (right-handed about the hinge axis). With ℓ_ki = L_i (i < k), c_k (i = k),
 // 0 (i > k), and B_ij = Σ_{k ≥ max(i,j)} m_k·ℓ_ki·ℓ_kj, Lagrange's equations are
-//   Σ_j (B_ij·cos(θ_i − θ_j) + δ_ij·I_i)·θ̈_j = −Σ_j B_ij·sin(θ_i − θ_j)·θ̇_j² − g·sin θ_i·Σ_k m_k·ℓ_ki.
+//   Σ_j (B_ij·cos(θ_i − θ_j) + δ_ij·I_i)·θ̈_j = −Σ_j B_ij·sin(θ_i − θ_j)·θ̇_j² − g·sin θ_i·Σ_k
+//   m_k·ℓ_ki.
 // Units: kg, m, s, rad.
 #pragma once
 

@@ -60,8 +60,8 @@ class LinkedPendulumProbe : public AccuracyProbe {
     problem_ = ReadPlanarChain(world, &read);
     if (!problem_.empty()) return;
     scale_ = ReleasedEnergy(read.chain);
-    reference_ = std::make_unique<PlanarChainTrajectory>(read.chain, read.start, duration,
-                                                         kReferenceStep);
+    reference_ =
+        std::make_unique<PlanarChainTrajectory>(read.chain, read.start, duration, kReferenceStep);
     read_ = std::move(read);
   }
   void Begin(const Simulator& simulator) override { e0_ = Energy(simulator); }

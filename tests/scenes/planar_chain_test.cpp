@@ -2,6 +2,8 @@
 // The reference of the linked-pendulum accuracy scenes (core/accuracy/planar_chain.h): its
 // equations against the textbook double pendulum of point masses, its RK4 order, its energy, the
 // claim that 0.1 ms is fine enough, and reading the scenes' worlds (and refusing other worlds).
+#include "core/accuracy/planar_chain.h"
+
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -9,7 +11,6 @@
 
 #include <gtest/gtest.h>
 
-#include "core/accuracy/planar_chain.h"
 #include "tests/common/test_support.h"
 
 namespace lamina {
@@ -31,9 +32,10 @@ Eigen::Vector2d TextbookAccelerations(double m1, double m2, double l1, double l2
                                       const PlanarChainState& s) {
   const double t1 = s.angle[0], t2 = s.angle[1], w1 = s.rate[0], w2 = s.rate[1];
   const double den = 2 * m1 + m2 - m2 * std::cos(2 * t1 - 2 * t2);
-  const double a1 = (-g * (2 * m1 + m2) * std::sin(t1) - m2 * g * std::sin(t1 - 2 * t2) -
-                     2 * std::sin(t1 - t2) * m2 * (w2 * w2 * l2 + w1 * w1 * l1 * std::cos(t1 - t2))) /
-                    (l1 * den);
+  const double a1 =
+      (-g * (2 * m1 + m2) * std::sin(t1) - m2 * g * std::sin(t1 - 2 * t2) -
+       2 * std::sin(t1 - t2) * m2 * (w2 * w2 * l2 + w1 * w1 * l1 * std::cos(t1 - t2))) /
+      (l1 * den);
   const double a2 = 2 * std::sin(t1 - t2) *
                     (w1 * w1 * l1 * (m1 + m2) + g * (m1 + m2) * std::cos(t1) +
                      w2 * w2 * l2 * m2 * std::cos(t1 - t2)) /
