@@ -25,7 +25,7 @@
 // (15.6 µs at 1 ms). The tilted rod leaves its floor differently under dWorldStep and the Newton
 // solver (it ends 1.10 m against 1.04 m up, at every step size). Without friction the two agree
 // (1.2334 m), so the difference is in how they resolve friction at the impact, where the rod's
-// lower corners strike together; not followed up (docs/accuracy.md lists it).
+// lower corners strike together; not followed up.
 //
 // Bars (numerics §6 scene 11: "0 tunnelling; core penetration 0, or StatusContactUnreliable is
 // raised; minimum h ≥ 1e-6 s"): no silent tunnelling at 1 ms and at 10 ms, and the smallest
