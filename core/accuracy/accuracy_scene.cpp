@@ -32,6 +32,10 @@ const std::vector<AccuracyScene>& AccuracyScenes() {
       MeshJitterScene("pad0"),
       MeshJitterScene("pad1"),
       MeshJitterScene("pad5"),
+      ScannedTrayScene(),
+      SoftBallScene(4),
+      SoftBallScene(20),
+      SoftBallScene(100),
   };
   return scenes;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "core/accuracy/probe_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -19,6 +20,16 @@ Vec3 ObjectComVelocity(const Simulator& simulator, int object) {
   const Twist twist = simulator.GetObjectVelocity(object);
   const Vec3 arm = pose.linear() * simulator.world().objects.at(object).com;
   return twist.linear + twist.angular.cross(arm);
+}
+
+double ObjectLayerOverlap(const Simulator& simulator, const std::vector<ContactPair>& pairs,
+                          int object) {
+  const int id = simulator.world().ObjectId(object);
+  double depth = 0.0;
+  for (const ContactPair& pair : pairs) {
+    if (pair.a == id || pair.b == id) depth = std::max(depth, pair.max_depth);
+  }
+  return depth;
 }
 
 Vec3 ObjectAngularMomentum(const Simulator& simulator, int object) {

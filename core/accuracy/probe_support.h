@@ -12,11 +12,16 @@
 namespace lamina::core {
 
 class Simulator;
+struct ContactPair;
 
 /// Centre of mass of rigid object `object` (m, world).
 Vec3 ObjectCom(const Simulator& simulator, int object);
 /// Velocity of that centre of mass (m/s, world).
 Vec3 ObjectComVelocity(const Simulator& simulator, int object);
+/// Deepest layer overlap of rigid object `object` with anything in `pairs` (m; 0 without
+/// contact): a step event's contacts, or the simulator's contact_pairs() after a step.
+double ObjectLayerOverlap(const Simulator& simulator, const std::vector<ContactPair>& pairs,
+                          int object);
 /// Angular momentum about the centre of mass (kg·m²/s, world): R I Rᵀ ω.
 Vec3 ObjectAngularMomentum(const Simulator& simulator, int object);
 

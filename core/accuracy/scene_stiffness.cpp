@@ -71,16 +71,6 @@ std::vector<SoftBlock> ReadBlocks(const WorldDesc& world) {
   return blocks;
 }
 
-// Deepest layer overlap of object `object` with anything, m (0 without contact).
-double Overlap(const Simulator& simulator, const std::vector<ContactPair>& pairs, int object) {
-  const int id = simulator.world().ObjectId(object);
-  double depth = 0.0;
-  for (const ContactPair& pair : pairs) {
-    if (pair.a == id || pair.b == id) depth = std::max(depth, pair.max_depth);
-  }
-  return depth;
-}
-
 // Kinetic plus gravitational energy of one object, J.
 double MotionEnergy(const Simulator& simulator, int object) {
   const RigidObjectDesc& desc = simulator.world().objects.at(object);
@@ -98,7 +88,7 @@ class StiffnessProbe : public AccuracyProbe {
   void Observe(const StepEvent& event) override {
     for (std::size_t i = 0; i < blocks_.size(); ++i) {
       const int object = static_cast<int>(i);
-      if (Overlap(event.simulator, event.contacts, object) <= 0.0) continue;
+      if (ObjectLayerOverlap(event.simulator, event.contacts, object) <= 0.0) continue;
       SoftBlock& block = blocks_[i];
       const double e = Energy(event.simulator, event.contacts, object);
       block.growth = std::max(block.growth, e - block.lowest);
@@ -110,7 +100,8 @@ class StiffnessProbe : public AccuracyProbe {
     double growth = 0.0;
     for (std::size_t i = 0; i < blocks_.size(); ++i) {
       const SoftBlock& block = blocks_[i];
-      const double depth = Overlap(simulator, simulator.contact_pairs(), static_cast<int>(i));
+      const double depth =
+          ObjectLayerOverlap(simulator, simulator.contact_pairs(), static_cast<int>(i));
       result.error = std::max(result.error, std::abs(depth - block.expected) / block.expected);
       result.metrics.push_back({block.name + " overlap m", depth});
       growth = std::max(growth, block.growth / StaticEnergy(block));
@@ -122,7 +113,7 @@ class StiffnessProbe : public AccuracyProbe {
  private:
   double Energy(const Simulator& simulator, const std::vector<ContactPair>& pairs,
                 int object) const {
-    const double depth = Overlap(simulator, pairs, object);
+    const double depth = ObjectLayerOverlap(simulator, pairs, object);
     return MotionEnergy(simulator, object) + 0.5 * blocks_[object].stiffness * depth * depth;
   }
   // m·g·δ: the energy scale of settling into the layer, J.
@@ -205,7 +196,7 @@ class StiffnessDropProbe : public AccuracyProbe {
     for (std::size_t i = 0; i < drops_.size(); ++i) {
       const int object = static_cast<int>(i);
       DropBlock& drop = drops_[i];
-      const double depth = Overlap(event.simulator, event.contacts, object);
+      const double depth = ObjectLayerOverlap(event.simulator, event.contacts, object);
       drop.landed = drop.landed || depth > 0.0;
       drop.seen.peak = std::max(drop.seen.peak, depth);
       const double height = ObjectCom(event.simulator, object).z() - drop.start_z + drop.drop;

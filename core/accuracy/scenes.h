@@ -32,5 +32,9 @@ AccuracyScene HighSpeedScene(bool rods);
 /// The mesh cube on the mesh floor; `variant` "" (2.5 mm padding), "pad0", "pad1" or "pad5"
 /// (padding 0, 1, 5 mm).
 AccuracyScene MeshJitterScene(const std::string& variant);
+/// The open tray with a scanned bottom on the mesh floor.
+AccuracyScene ScannedTrayScene();
+/// The soft tessellated ball resting with maxContacts `max_contacts` (4, 20 or 100).
+AccuracyScene SoftBallScene(int max_contacts);
 
 }  // namespace lamina::core
