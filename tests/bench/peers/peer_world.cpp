@@ -20,7 +20,10 @@ bool Refuse(const std::string& text, std::string* why) {
 // The primitive of `geometry` in the body frame, grown by `padding`; false for anything else.
 bool ShapeOf(const GeometryDesc& geometry, double padding, PeerShape* shape, std::string* why) {
   if (geometry.kind != GeometryKind::kPrimitive)
-    return Refuse("a mesh or point cloud (MuJoCo would take its convex hull)", why);
+    return Refuse(
+        "a mesh or point cloud (the peers are given primitives only: MuJoCo would take a mesh's "
+        "convex hull)",
+        why);
   const core::Primitive& p = geometry.primitive;
   const core::Affine placed = geometry.Matrix() * p.pose;
   const double scale = geometry.scale.x();
