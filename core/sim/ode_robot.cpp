@@ -567,7 +567,10 @@ void OdeRobot::SetServos(const std::vector<ServoMotorCommand>& motors) {
 // servo does not already damp with μ_V) of CFM kDryFrictionCfm, or pure viscous friction as an
 // implicit damper (velocity 0, cfm 1 / μ_V).
 void OdeRobot::SetJointFriction(const std::vector<DriverDesc>& drivers, const VecX& q,
-                                const VecX& dq, const std::vector<ServoMotorCommand>& motors) {
+                                const VecX& dq, const std::vector<ServoMotorCommand>& motors,
+                                bool guess, const std::vector<int>& holdoff,
+                                std::vector<FrictionCommand>* commands) {
+  commands->clear();
   for (const DriverDesc& driver : drivers) {
     if (driver.type != DriverType::kNormal || driver.links.empty()) continue;
     const int i = driver.links[0];
@@ -592,7 +595,14 @@ void OdeRobot::SetJointFriction(const std::vector<DriverDesc>& drivers, const Ve
     if (q[i] <= desc.q_min + kAtStopTolerance || q[i] >= desc.q_max - kAtStopTolerance) {
       fmax = 0.0;
     }
-    SetJointMotor(i, fmax, cfm);
+    FrictionCommand command{i, fmax, cfm, dq[i], FrictionRowMode::kBounded};
+    const bool keep = i < static_cast<int>(holdoff.size()) && holdoff[i] > 0;
+    if (guess && !keep && dry > 0.0) command.mode = ChooseFrictionRow(fmax, cfm, dq[i]);
+    if (command.mode != FrictionRowMode::kBounded) commands->push_back(command);
+    const double bound = command.mode == FrictionRowMode::kUnbounded  ? dInfinity
+                         : command.mode == FrictionRowMode::kExplicit ? 0.0
+                                                                      : fmax;
+    SetJointMotor(i, bound, cfm);
   }
 }
 

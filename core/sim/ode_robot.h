@@ -12,6 +12,7 @@
 #include "core/control/robot_controller.h"
 #include "core/diagnostics.h"
 #include "core/model/world_desc.h"
+#include "core/sim/friction_rows.h"
 #include "core/sim/ode_joint_rows.h"
 #include "core/sim/robot_joint_state.h"
 
@@ -78,9 +79,13 @@ class OdeRobot {
   /// Implicit PD motors: every servo off, then the given ones on for the coming step (bounded by
   /// their fmax unless `unbounded`).
   void SetServos(const std::vector<ServoMotorCommand>& motors);
-  /// Joint friction motors: each driven link resists motion with up to dry + viscous·|dq|.
+  /// Joint friction motors: each driven link resists motion with up to dry + viscous·|dq|. With
+  /// `guess` the dry-friction rows go unbounded or become torques where their answer is known
+  /// (friction_rows.h), except on the links whose `holdoff` is above 0; `commands` receives each
+  /// guessed row (its kExplicit torques are for the caller to apply).
   void SetJointFriction(const std::vector<DriverDesc>& drivers, const VecX& q, const VecX& dq,
-                        const std::vector<ServoMotorCommand>& motors);
+                        const std::vector<ServoMotorCommand>& motors, bool guess,
+                        const std::vector<int>& holdoff, std::vector<FrictionCommand>* commands);
   /// After an accepted step: counts the turns of revolute joints.
   void AcceptStep();
 

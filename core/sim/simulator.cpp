@@ -364,8 +364,10 @@ Simulator::SubStep Simulator::TrySubStep(double* h, StepProgress* progress, bool
     progress->corrections += stopped;
     return SubStep::kRetake;
   }
-  // a servo row solved without its bound that went over it: bounded, the sub-step is retaken
-  if (BoundOverrunServos()) {
+  // a servo row solved without its bound that went over it, or a friction row whose guessed
+  // answer did not hold: bounded, the sub-step is retaken
+  const bool servo_overrun = BoundOverrunServos();
+  if (FrictionGuessesFailed() || servo_overrun) {
     RestoreState(guard_.rollback_state());
     return SubStep::kRetake;
   }

@@ -31,6 +31,7 @@
 #include "core/sim/contact_set.h"
 #include "core/sim/error_meter.h"
 #include "core/sim/friction_anchors.h"
+#include "core/sim/friction_rows.h"
 #include "core/sim/interaction.h"
 #include "core/sim/object_islands.h"
 #include "core/sim/sim_state.h"
@@ -351,6 +352,8 @@ class Simulator {
     std::vector<ServoMotorCommand> motors;
     VecX rates_after;                       ///< joint rates after a tentative step (servo check)
     std::vector<char> keep_bound;           ///< per link: its servo row stays bounded this sub-step
+    std::vector<FrictionCommand> friction;  ///< friction rows given unbounded or as torques
+    std::vector<int> friction_holdoff;  ///< per link: accepted steps its friction row stays bounded
     std::vector<double> gaps, gaps_before;  ///< joint gaps now and at the sub-step's start
     std::vector<Pose> frames;               ///< link frames, for the gaps
     std::vector<char> known;                ///< links with a frame (not virtual)
@@ -425,6 +428,7 @@ class Simulator {
   void PrepareRobotsForStep(double step);
   void MarkUnboundedServos(RobotScratch* scratch);
   bool BoundOverrunServos();
+  bool FrictionGuessesFailed();
   void AcceptRobotStep(double step);
   void CaptureRobotState(SimState* state, bool with_controllers) const;
   void RestoreRobotState(const SimState& state);

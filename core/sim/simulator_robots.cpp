@@ -152,7 +152,13 @@ void Simulator::PrepareRobotsForStep(double step) {
       controllers_[r].ComputeLinkForces(scratch.q, scratch.dq, &scratch.forces);
       scratch.motors.clear();
     }
-    robot.SetJointFriction(controllers_[r].drivers(), scratch.q, scratch.dq, scratch.motors);
+    const bool guess = world_.settings.solver != SolverType::kQuickStep;
+    scratch.friction_holdoff.resize(scratch.dq.size(), 0);
+    robot.SetJointFriction(controllers_[r].drivers(), scratch.q, scratch.dq, scratch.motors, guess,
+                           scratch.friction_holdoff, &scratch.friction);
+    for (const FrictionCommand& row : scratch.friction) {
+      scratch.forces[row.link] += ExplicitFrictionTorque(row.mode, row.fmax, row.rate);
+    }
     robot.SetServos(scratch.motors);
     robot.ApplyLinkForces(scratch.forces);
   }
@@ -188,10 +194,30 @@ bool Simulator::BoundOverrunServos() {
   return overrun;
 }
 
+// After an ODE step: whether a friction row given unbounded or as a torque did not give the
+// bounded row's answer (friction_rows.h). Those rows stay bounded for the retaken sub-step and
+// the next kFrictionGuessHoldoff accepted steps.
+bool Simulator::FrictionGuessesFailed() {
+  bool failed = false;
+  for (int r = 0; r < robot_count(); ++r) {
+    RobotScratch& scratch = robot_scratch_[r];
+    if (scratch.friction.empty()) continue;
+    robots_[r]->GetVelocity(&scratch.rates_after);
+    for (const FrictionCommand& row : scratch.friction) {
+      const double after = scratch.rates_after[row.link];
+      if (FrictionGuessHeld(row.mode, row.fmax, row.cfm, row.rate, after)) continue;
+      scratch.friction_holdoff[row.link] = kFrictionGuessHoldoff;
+      failed = true;
+    }
+  }
+  return failed;
+}
+
 void Simulator::AcceptRobotStep(double step) {
   for (int r = 0; r < robot_count(); ++r) {
     RobotScratch& scratch = robot_scratch_[r];
     std::fill(scratch.keep_bound.begin(), scratch.keep_bound.end(), 0);  // a new sub-step
+    for (int& holdoff : scratch.friction_holdoff) holdoff = std::max(0, holdoff - 1);
     robots_[r]->AcceptStep();
     RecordSensorStep(r);
     robots_[r]->GetConfig(&scratch.q);
