@@ -32,6 +32,9 @@ struct RobotSimState {
   RobotJointState joints;
   RobotControllerState controller;
   RobotSensorsState sensors;  ///< captured and restored with the controller
+  /// per link: accepted steps its joint friction row stays bounded (friction_rows.h); captured
+  /// and restored with the controller, so that a restored state replays the same rows
+  std::vector<int> friction_holdoff;
   /// Physical state only (the controller's state has no equality).
   bool operator==(const RobotSimState& other) const {
     return bodies == other.bodies && joints == other.joints;

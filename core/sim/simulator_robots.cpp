@@ -239,6 +239,7 @@ void Simulator::CaptureRobotState(SimState* state, bool with_controllers) const 
     if (!with_controllers) continue;
     robot_state.controller = controllers_[r].GetState();
     robot_state.sensors = sensors_[r].GetState();
+    robot_state.friction_holdoff = robot_scratch_[r].friction_holdoff;
   }
 }
 
@@ -303,6 +304,7 @@ void Simulator::RestoreControllers(const SimState& state) {
   for (int r = 0; r < robot_count() && r < static_cast<int>(state.robots.size()); ++r) {
     controllers_[r].SetState(state.robots[r].controller);
     sensors_[r].SetState(state.robots[r].sensors);
+    robot_scratch_[r].friction_holdoff = state.robots[r].friction_holdoff;
   }
 }
 

@@ -396,6 +396,27 @@ TEST(RobotJointTest, SetStateReplaysTheSameTrajectory) {
   EXPECT_EQ(simulator.GetRobotVelocity(0)[0], dq_first[0]);
 }
 
+// The same with a friction row whose guess failed just before the state was saved (the spinning
+// joint stops at 1.02 s and its row stays bounded for 50 steps after): the replay keeps it bounded
+// for the same steps, so it is the same trajectory to the bit.
+TEST(RobotJointTest, SetStateReplaysJointFrictionRowsToo) {
+  core::WorldDesc world = PendulumWorld("servoP 0\nservoI 0\nservoD 0\ndryFriction 2\n", 0.0);
+  world.settings.gravity = core::Vec3::Zero();
+  world.robots[0].velocity = VecX::Constant(1, 4.0);
+  core::Simulator simulator(world);
+  simulator.controller(0).SetTorque(VecX::Constant(1, 0.0));
+  simulator.Simulate(1.03);
+  const core::SimState saved = simulator.GetState();
+  ASSERT_GT(saved.robots[0].friction_holdoff.at(0), 0);
+  simulator.controller(0).SetTorque(VecX::Constant(1, 1.9));  // held by the 2 N·m row
+  simulator.Simulate(0.2);
+  const VecX q_first = simulator.GetRobotConfig(0);
+  simulator.SetState(saved);
+  simulator.controller(0).SetTorque(VecX::Constant(1, 1.9));
+  simulator.Simulate(0.2);
+  EXPECT_EQ(simulator.GetRobotConfig(0)[0], q_first[0]);
+}
+
 // Self-collision: a fixed base box (link 0), a hinge link without geometry (1) and a box on it
 // (2) folded back through the base. Links 0 and 2 may touch only with robotSelfCollisions on
 // and when no `noselfcollision` line forbids it; parent and child never do.
