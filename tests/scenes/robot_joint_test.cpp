@@ -411,7 +411,9 @@ TEST(RobotJointTest, SetStateReplaysJointFrictionRowsToo) {
   simulator.controller(0).SetTorque(VecX::Constant(1, 1.9));  // held by the 2 N·m row
   simulator.Simulate(0.2);
   const VecX q_first = simulator.GetRobotConfig(0);
+  EXPECT_EQ(simulator.GetState().robots[0].friction_holdoff.at(0), 0);  // (run out by now)
   simulator.SetState(saved);
+  EXPECT_EQ(simulator.GetState().robots[0].friction_holdoff, saved.robots[0].friction_holdoff);
   simulator.controller(0).SetTorque(VecX::Constant(1, 1.9));
   simulator.Simulate(0.2);
   EXPECT_EQ(simulator.GetRobotConfig(0)[0], q_first[0]);
