@@ -407,6 +407,7 @@ Simulator::SubStep Simulator::Halt(const std::string& error) {
   for (int r = 0; r < robot_count(); ++r) {
     last_good_.robots[r].controller = controllers_[r].GetState();
     last_good_.robots[r].sensors = sensors_[r].GetState();
+    last_good_.robots[r].friction_holdoff = robot_scratch_[r].friction_holdoff;
   }
   if (!error.empty()) statistics_.error = error;
   statistics_.worst_status = StepStatus::kError;
