@@ -33,6 +33,10 @@ struct MeshBvh {
   std::vector<std::array<Vec3, 3>> triangle_corners;
   std::vector<Eigen::AlignedBox3d> triangle_bounds;
   std::vector<Plane> triangle_planes;
+  /// Per triangle, the planes through its edges, perpendicular to it and facing away from it:
+  /// the triangle lies on their inner side (normal.dot(x) <= offset). A zero normal and an
+  /// infinite offset where the triangle is degenerate.
+  std::vector<std::array<Plane, 3>> edge_planes;
   /// Per hierarchy node, the radius of the sphere about its box's centre that holds the box.
   std::vector<double> node_radii;
 };
@@ -160,6 +164,27 @@ std::vector<MeshBvh::Plane> AllTrianglePlanes(const TriangleMesh& mesh,
   return planes;
 }
 
+// The plane through the edge of c opposite corner k, perpendicular to c, with c behind it.
+MeshBvh::Plane EdgePlane(const std::array<Vec3, 3>& c, int k) {
+  const Vec3 face = (c[1] - c[0]).cross(c[2] - c[0]);
+  const Vec3& start = c[(k + 1) % 3];
+  const Vec3 normal = (c[(k + 2) % 3] - start).cross(face);
+  const double length = normal.norm();
+  if (!(length > 0.0)) return {Vec3::Zero(), kInf};
+  const Vec3 unit = normal.dot(c[k] - start) > 0.0 ? Vec3(-normal / length) : Vec3(normal / length);
+  return {unit, unit.dot(start)};
+}
+
+std::vector<std::array<MeshBvh::Plane, 3>> AllEdgePlanes(
+    const std::vector<std::array<Vec3, 3>>& triangle_corners) {
+  std::vector<std::array<MeshBvh::Plane, 3>> planes;
+  planes.reserve(triangle_corners.size());
+  for (const std::array<Vec3, 3>& c : triangle_corners) {
+    planes.push_back({EdgePlane(c, 0), EdgePlane(c, 1), EdgePlane(c, 2)});
+  }
+  return planes;
+}
+
 std::shared_ptr<const MeshBvh> BuildBvh(const TriangleMesh& mesh,
                                         const std::vector<Vec3>& face_normals) {
   auto bvh = std::make_shared<MeshBvh>();
@@ -176,6 +201,7 @@ std::shared_ptr<const MeshBvh> BuildBvh(const TriangleMesh& mesh,
   bvh->triangle_corners = AllTriangleCorners(mesh);
   bvh->triangle_bounds = AllTriangleBounds(bvh->triangle_corners);
   bvh->triangle_planes = AllTrianglePlanes(mesh, face_normals);
+  bvh->edge_planes = AllEdgePlanes(bvh->triangle_corners);
   for (int node = 0; node < bvh->model.getNumBVs(); ++node) {
     bvh->node_radii.push_back(bvh->model.getBV(node).bv.obb.extent.norm());
   }
@@ -279,12 +305,17 @@ constexpr long kEveryPairAlways = 256;
 // every pair is tried: a two-triangle floor under a 724-triangle wheel (ATHLETE) keeps only the
 // wheel's triangles near the floor's slab instead of testing all 1448 pairs.
 constexpr int kSmallMeshTriangles = 64;
+// ... as long as this many pairs at most are near the bounds: testing a pair's boxes costs far
+// less than comparing two volumes of the hierarchies (a 960-triangle ball sunk into its padding
+// on a 12-triangle slab has half its triangles, 5800 pairs, near the slab).
+constexpr long kSmallerInLargerPairLimit = 16384;
 
-// A triangle of b in a's frame with its bounds and plane there.
+// A triangle of b in a's frame with its bounds, plane and edge planes there.
 struct PlacedTriangle {
   std::array<Vec3, 3> corners;
   Eigen::AlignedBox3d bounds;
   MeshBvh::Plane plane;
+  std::array<MeshBvh::Plane, 3> edges;
 };
 
 // True when the boxes are more than `reach` apart along an axis: so is every pair of points.
@@ -297,6 +328,19 @@ bool Beyond(const MeshBvh::Plane& plane, const std::array<Vec3, 3>& corners, dou
   const Vec3 heights(plane.normal.dot(corners[0]), plane.normal.dot(corners[1]),
                      plane.normal.dot(corners[2]));
   return heights.minCoeff() - plane.offset > reach || heights.maxCoeff() - plane.offset < -reach;
+}
+
+// True when all three corners lie more than `reach` outside one of the edge planes of a
+// triangle: every point of the corners' triangle is then farther than `reach` from it (it lies
+// behind each of its edge planes).
+bool BeyondAnEdge(const std::array<MeshBvh::Plane, 3>& edges, const std::array<Vec3, 3>& corners,
+                  double reach) {
+  for (const MeshBvh::Plane& edge : edges) {
+    const double lowest = std::min(
+        {edge.normal.dot(corners[0]), edge.normal.dot(corners[1]), edge.normal.dot(corners[2])});
+    if (lowest - edge.offset > reach) return true;
+  }
+  return false;
 }
 
 // False when the oriented box and the aligned box (centre, half extents) are separated along
@@ -381,6 +425,14 @@ class NearPairSearch {
     scratch_.placed_volumes.Clear(b.model.getNumBVs());
   }
 
+  // FCL's distance of every pair, without the cheap tests that spare most pairs: what the
+  // searches below must reproduce bitwise.
+  void Reference() const {
+    for (int ta = 0; ta < a_.model.num_tris; ++ta) {
+      for (int tb = 0; tb < b_.model.num_tris; ++tb) Measure(ta, tb, PlacedOfB(tb));
+    }
+  }
+
   // Every triangle of a against every triangle of b.
   void EveryPair() const {
     for (int ta = 0; ta < a_.model.num_tris; ++ta) {
@@ -435,6 +487,13 @@ class NearPairSearch {
     placed.bounds = TriangleBounds(placed.corners[0], placed.corners[1], placed.corners[2]);
     placed.plane.normal = R_ * b_.triangle_planes[tb].normal;
     placed.plane.offset = placed.plane.normal.dot(placed.corners[0]);
+    for (int k = 0; k < 3; ++k) {  // the edge opposite corner k starts at corner k + 1
+      const MeshBvh::Plane& edge = b_.edge_planes[tb][k];
+      placed.edges[k].normal = R_ * edge.normal;
+      placed.edges[k].offset = std::isfinite(edge.offset)
+                                   ? placed.edges[k].normal.dot(placed.corners[(k + 1) % 3])
+                                   : kInf;
+    }
     return placed;
   }
 
@@ -443,12 +502,18 @@ class NearPairSearch {
     if (Apart(a_.triangle_bounds[ta], placed.bounds, reach_)) return;
     const std::array<Vec3, 3>& corners = a_.triangle_corners[ta];
     if (Beyond(a_.triangle_planes[ta], placed.corners, reach_) ||
-        Beyond(placed.plane, corners, reach_)) {
+        Beyond(placed.plane, corners, reach_) || BeyondAnEdge(placed.edges, corners, reach_) ||
+        BeyondAnEdge(a_.edge_planes[ta], placed.corners, reach_)) {
       return;
     }
+    Measure(ta, tb, placed);
+  }
+
+  // FCL's exact distance of the pair, kept within the tolerance.
+  void Measure(int ta, int tb, const PlacedTriangle& placed) const {
     fcl::Vector3d p, q;
     const double distance = fcl::detail::TriangleDistance<double>::triDistance(
-        corners.data(), placed.corners.data(), p, q);
+        a_.triangle_corners[ta].data(), placed.corners.data(), p, q);
     if (distance <= tolerance_) hits_->push_back({ta, tb, distance, p, q});
   }
 
@@ -519,7 +584,7 @@ void NearTrianglePairs(const MeshBvh& a, const MeshBvh& b, const Pose& X_ab, dou
   switch (search) {
     case PairSearch::kAuto:
       if (pairs > kEveryPairAlways && fewer <= kSmallMeshTriangles &&
-          finder.SmallerInLarger(kEveryPairLimit / fewer)) {
+          finder.SmallerInLarger(kSmallerInLargerPairLimit / fewer)) {
         break;
       }
       if (pairs <= kEveryPairLimit) {
@@ -527,6 +592,9 @@ void NearTrianglePairs(const MeshBvh& a, const MeshBvh& b, const Pose& X_ab, dou
       } else {
         finder.BothHierarchies();
       }
+      break;
+    case PairSearch::kReference:
+      finder.Reference();
       break;
     case PairSearch::kEveryPair:
       finder.EveryPair();

@@ -305,28 +305,27 @@ void ExpectComplete(const CollisionGeometry& a, const CollisionGeometry& b, cons
 }
 
 // b at `poses` random poses (a's frame, from `random_pose`): every search reports bitwise the
-// same pairs, in (triangle_a, triangle_b) order, and no near pair is missed. Returns how many
-// poses had pairs.
+// same pairs as FCL's distance of every pair with nothing pruned, in (triangle_a, triangle_b)
+// order, and no near pair is missed. Returns how many poses had pairs.
 template <typename RandomPose>
 int CompareSearches(const CollisionGeometry& a, const CollisionGeometry& b, int poses,
-                    const RandomPose& random_pose) {
-  constexpr double kTolerance = 0.005;
+                    const RandomPose& random_pose, double tolerance = 0.005) {
   std::mt19937 random(7);
   int with_hits = 0;
   for (int i = 0; i < poses; ++i) {
     const Pose X_ab = random_pose(random);
     const std::vector<TrianglePairHit> every =
-        NearPairs(a, b, X_ab, kTolerance, PairSearch::kEveryPair);
+        NearPairs(a, b, X_ab, tolerance, PairSearch::kReference);
     EXPECT_TRUE(std::is_sorted(every.begin(), every.end(), [](const auto& x, const auto& y) {
       return std::tie(x.triangle_a, x.triangle_b) < std::tie(y.triangle_a, y.triangle_b);
     }));
     const std::string pose = "pose " + std::to_string(i);
-    for (const PairSearch search :
-         {PairSearch::kAuto, PairSearch::kSmallerInLarger, PairSearch::kBothHierarchies}) {
-      ExpectSameHits(every, NearPairs(a, b, X_ab, kTolerance, search),
+    for (const PairSearch search : {PairSearch::kAuto, PairSearch::kEveryPair,
+                                    PairSearch::kSmallerInLarger, PairSearch::kBothHierarchies}) {
+      ExpectSameHits(every, NearPairs(a, b, X_ab, tolerance, search),
                      pose + " search " + std::to_string(static_cast<int>(search)));
     }
-    ExpectComplete(a, b, X_ab, kTolerance, every);
+    ExpectComplete(a, b, X_ab, tolerance, every);
     with_hits += !every.empty();
   }
   return with_hits;
@@ -358,9 +357,10 @@ TEST(NearTrianglePairsTest, SmallMeshOnALargeOneGivesTheSamePairsEveryWay) {
 
 TEST(NearTrianglePairsTest, SmallMeshSpanningALargeOneGivesTheSamePairs) {
   // a 2 m cube under which the whole grid lies: bounding the cube as a whole finds every
-  // triangle of the grid, so the automatic search falls back to both hierarchies
+  // triangle of the grid (2048 x 12 pairs), so the automatic search falls back to both
+  // hierarchies
   const auto big_cube = MeshGeometry(LoadMesh("klampt/objects/cube.off"), Vec3::Constant(2.0));
-  const auto grid = MeshGeometry(BumpyGrid(16));
+  const auto grid = MeshGeometry(BumpyGrid(32));
   const int with_hits = CompareSearches(*grid, *big_cube, 10, [](std::mt19937& random) {
     return RandomPose(random, Vec3(-0.5, -0.5, -1.92), 0.02, 0.02);
   });
@@ -378,11 +378,28 @@ TEST(NearTrianglePairsTest, LargeMeshesGiveTheSamePairsEveryWay) {
   EXPECT_GT(with_hits, 5);
 }
 
+TEST(NearTrianglePairsTest, BallSunkIntoASlabGivesTheSamePairsEveryWay) {
+  // stiffness_test.xml's 960-triangle ball (radius 0.1 m) within its 8 cm paddings of the 4 m
+  // slab, on either side of the diagonal of the slab's top face, turned every way: the searches
+  // prune by boxes, planes and edge planes, FCL measures what is left
+  const auto ball = MeshGeometry(LoadMesh("klampt/objects/sphere.off"), Vec3::Constant(0.1));
+  const auto slab = MeshGeometry(LoadMesh("klampt/terrains/block.off"));
+  ASSERT_EQ(ball->mesh().triangle_count(), 960);
+  const auto ball_on_slab = [](std::mt19937& random) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const Pose X_slab_ball = RandomPose(random, Vec3(0, 0, 0.1), 0.3, core::kPi);
+    Pose X = X_slab_ball;
+    X.translation().z() = 0.11 + 0.09 * u(random);  // 1 cm clear of the layer to 8 cm sunk
+    return Pose(X.inverse());                       // the slab in the ball's frame
+  };
+  EXPECT_GT(CompareSearches(*ball, *slab, 60, ball_on_slab, 0.08), 40);
+}
+
 TEST(NearTrianglePairsTest, FarMeshesGiveNoPairs) {
   const auto cube = MeshGeometry(LoadMesh("klampt/objects/cube.off"));
   Pose X_ab = Pose::Identity();
   X_ab.translation() = Vec3(0, 0, 1.0051);  // 5.1 mm above: beyond a 5 mm tolerance
-  for (const PairSearch search : {PairSearch::kAuto, PairSearch::kEveryPair,
+  for (const PairSearch search : {PairSearch::kAuto, PairSearch::kReference, PairSearch::kEveryPair,
                                   PairSearch::kSmallerInLarger, PairSearch::kBothHierarchies}) {
     EXPECT_TRUE(NearPairs(*cube, *cube, X_ab, 0.005, search).empty());
   }
