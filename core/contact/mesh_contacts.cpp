@@ -184,6 +184,7 @@ struct MeshMeshScratch {
   SparseArray<int> closest_partner;
   std::vector<int> owners;  // the triangles that have a closest partner
   std::vector<int> selected;
+  std::vector<char> is_selected;  // per candidate
   // CollectVertexHits: the candidates chained by face (GroupByFace), the face each vertex was
   // last tested against, each vertex's nearest face, the vertices that have one, the result
   std::vector<int> faces;
@@ -285,6 +286,17 @@ void SelectClosestPartners(int side, int triangle_count, MeshMeshScratch* s) {
   for (const int triangle : s->owners) s->selected.push_back(s->closest_partner[triangle]);
 }
 
+// Sorts s->selected and drops repeats. The candidates are in (triangle_a, triangle_b) order
+// (NearTrianglePairs' order), so candidate index order is pair order: marks in one pass.
+void KeepInOrder(MeshMeshScratch* s) {
+  s->is_selected.assign(s->candidates.size(), 0);
+  for (const int i : s->selected) s->is_selected[i] = 1;
+  s->selected.clear();
+  for (size_t i = 0; i < s->candidates.size(); ++i) {
+    if (s->is_selected[i]) s->selected.push_back(static_cast<int>(i));
+  }
+}
+
 // Crossing triangles (the meshes interpenetrate beyond the boundary layer) give no usable
 // normal: a side face crossing a bottom face would push sideways. They only take part when no
 // triangle pair of the two meshes is separated, so deep overlaps still produce contacts.
@@ -299,12 +311,7 @@ void SelectPairs(int triangles_a, int triangles_b, MeshMeshScratch* s) {
   s->selected.clear();
   SelectClosestPartners(0, triangles_a, s);
   SelectClosestPartners(1, triangles_b, s);
-  const auto pair = [s](int i) {
-    return std::make_pair(s->candidates[i].hit.triangle_a, s->candidates[i].hit.triangle_b);
-  };
-  std::sort(s->selected.begin(), s->selected.end(),
-            [&pair](int i, int j) { return pair(i) < pair(j); });
-  s->selected.erase(std::unique(s->selected.begin(), s->selected.end()), s->selected.end());
+  KeepInOrder(s);
 }
 
 // A face of the other mesh that CollectVertexHits holds vertices against, in a's frame.
