@@ -304,11 +304,18 @@ using Cell = Eigen::Matrix<std::int64_t, 3, 1>;
 // of entries. Kept per thread so that a call does not allocate once grown.
 class SurvivorGrid {
  public:
+  // Makes room for `count` contacts; empties only the slots the last call used when the table
+  // is already large enough (it never shrinks), so that a call costs no more than its contacts.
   void Reset(std::size_t count, double radius) {
     std::size_t size = 64;
     while (size < 16 * count) size *= 2;  // up to 8 cells per survivor: load <= 1/2
-    cells_.resize(size);
-    heads_.assign(size, -1);
+    if (size > heads_.size()) {
+      cells_.resize(size);
+      heads_.assign(size, -1);
+    } else {
+      for (const std::size_t slot : used_) heads_[slot] = -1;
+    }
+    used_.clear();
     entries_.clear();
     radius_ = radius;
     inverse_edge_ = 0.5 / radius;
@@ -348,6 +355,7 @@ class SurvivorGrid {
 
   void Enter(int survivor, const Cell& cell) {
     const std::size_t slot = Find(cell);
+    if (heads_[slot] < 0) used_.push_back(slot);
     cells_[slot] = cell;
     entries_.push_back({survivor, heads_[slot]});
     heads_[slot] = static_cast<int>(entries_.size()) - 1;
@@ -367,6 +375,7 @@ class SurvivorGrid {
   std::vector<Cell> cells_;
   std::vector<int> heads_;  ///< per slot: the cell's latest entry, -1 for an empty slot
   std::vector<Entry> entries_;
+  std::vector<std::size_t> used_;  ///< the slots holding a cell
   double radius_ = 1.0;
   double inverse_edge_ = 0.5;
 };

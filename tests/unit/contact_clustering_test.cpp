@@ -334,5 +334,20 @@ TEST(MergeCoincidentContactsTest, SparseSurvivorsOnCellCornersAllStay) {
   EXPECT_EQ(contacts.size(), 1000u);
 }
 
+// The grid's table is kept between calls and only its used slots emptied: calls of every size,
+// one after another, each still give the scan's result.
+TEST(MergeCoincidentContactsTest, CallsOfChangingSizesEachMatchTheScan) {
+  unsigned seed = 11;
+  for (const int n : {1000, 40, 400, 64, 33, 400, 200}) {
+    for (const double radius : {0.002, 0.013}) {
+      SCOPED_TRACE(testing::Message() << "n " << n << " radius " << radius);
+      ContactList contacts = NoisyPatch(n, 0.01, seed++);
+      const ContactList expected = MergeReference(radius, contacts);
+      MergeCoincidentContacts(radius, &contacts);
+      ExpectIdentical(contacts, expected);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace lamina::core
