@@ -300,21 +300,15 @@ using Cell = Eigen::Matrix<std::int64_t, 3, 1>;
 
 // The survivors hashed into a grid of cells of edge 2·radius: each survivor is entered in every
 // cell its radius-ball overlaps (at most 2 per axis, 8 in all), so a contact finds every survivor
-// within radius of it in its own cell, with one lookup. Open addressing; each slot heads a chain
-// of entries. Kept per thread so that a call does not allocate once grown.
+// within radius of it in its own cell, with one lookup. Open addressing over the cells in use (at
+// most half the slots: the table doubles beyond); each slot heads a chain of entries. Kept per
+// thread, and only its used slots emptied, so that a call neither allocates once grown nor costs
+// more than its contacts.
 class SurvivorGrid {
  public:
-  // Makes room for `count` contacts; empties only the slots the last call used when the table
-  // is already large enough (it never shrinks), so that a call costs no more than its contacts.
-  void Reset(std::size_t count, double radius) {
-    std::size_t size = 64;
-    while (size < 16 * count) size *= 2;  // up to 8 cells per survivor: load <= 1/2
-    if (size > heads_.size()) {
-      cells_.resize(size);
-      heads_.assign(size, -1);
-    } else {
-      for (const std::size_t slot : used_) heads_[slot] = -1;
-    }
+  void Reset(double radius) {
+    for (const std::size_t slot : used_) slots_[slot].head = -1;
+    if (slots_.empty()) Resize(64);
     used_.clear();
     entries_.clear();
     radius_ = radius;
@@ -326,7 +320,7 @@ class SurvivorGrid {
                       double radius_squared) const {
     const std::size_t slot = Find(CellOf(contact.position));
     int first = -1;
-    for (int e = heads_[slot]; e >= 0; e = entries_[e].next) {
+    for (int e = slots_[slot].head; e >= 0; e = entries_[e].next) {
       const int k = entries_[e].survivor;
       if ((first < 0 || k < first) && Coincide(survivors[k], contact, radius_squared)) first = k;
     }
@@ -344,6 +338,10 @@ class SurvivorGrid {
   }
 
  private:
+  struct Slot {
+    Cell cell;
+    int head = -1;  ///< the cell's latest entry, -1 for an empty slot
+  };
   struct Entry {
     int survivor;
     int next;  ///< the cell's previous entry, -1 at the end
@@ -354,28 +352,50 @@ class SurvivorGrid {
   }
 
   void Enter(int survivor, const Cell& cell) {
-    const std::size_t slot = Find(cell);
-    if (heads_[slot] < 0) used_.push_back(slot);
-    cells_[slot] = cell;
-    entries_.push_back({survivor, heads_[slot]});
-    heads_[slot] = static_cast<int>(entries_.size()) - 1;
+    std::size_t slot = Find(cell);
+    if (slots_[slot].head < 0) {
+      if (2 * (used_.size() + 1) > slots_.size()) {
+        Resize(2 * slots_.size());
+        slot = Find(cell);
+      }
+      used_.push_back(slot);
+      slots_[slot].cell = cell;
+    }
+    entries_.push_back({survivor, slots_[slot].head});
+    slots_[slot].head = static_cast<int>(entries_.size()) - 1;
   }
 
-  // the slot of `cell`, or the empty slot where it would go
+  // Rehashes the cells in use into `size` slots (a power of two).
+  void Resize(std::size_t size) {
+    std::vector<Slot> old(size);
+    old.swap(slots_);
+    shift_ = 64;
+    for (std::size_t n = size; n > 1; n /= 2) --shift_;
+    for (std::size_t& slot : used_) {
+      const std::size_t moved = Find(old[slot].cell);
+      slots_[moved] = old[slot];
+      slot = moved;
+    }
+  }
+
+  // The slot of `cell`, or the empty slot where it would go. The cell's coordinates are mixed
+  // and the product's high bits taken (Fibonacci hashing): the low bits of a xor of products
+  // repeat across a patch's neighbouring cells and make long probe runs. The slots do not
+  // change the result, only how fast it is found.
   std::size_t Find(const Cell& cell) const {
-    const auto hash = static_cast<std::uint64_t>(cell.x()) * 73856093ULL ^
-                      static_cast<std::uint64_t>(cell.y()) * 19349663ULL ^
-                      static_cast<std::uint64_t>(cell.z()) * 83492791ULL;
-    const std::size_t mask = heads_.size() - 1;
-    std::size_t slot = static_cast<std::size_t>(hash) & mask;
-    while (heads_[slot] >= 0 && cells_[slot] != cell) slot = (slot + 1) & mask;
+    const std::uint64_t key = static_cast<std::uint64_t>(cell.x()) * 73856093ULL ^
+                              static_cast<std::uint64_t>(cell.y()) * 19349663ULL ^
+                              static_cast<std::uint64_t>(cell.z()) * 83492791ULL;
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t slot = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ULL) >> shift_);
+    while (slots_[slot].head >= 0 && slots_[slot].cell != cell) slot = (slot + 1) & mask;
     return slot;
   }
 
-  std::vector<Cell> cells_;
-  std::vector<int> heads_;  ///< per slot: the cell's latest entry, -1 for an empty slot
+  std::vector<Slot> slots_;
   std::vector<Entry> entries_;
   std::vector<std::size_t> used_;  ///< the slots holding a cell
+  int shift_ = 58;                 ///< 64 - log2(slot count)
   double radius_ = 1.0;
   double inverse_edge_ = 0.5;
 };
@@ -384,7 +404,7 @@ class SurvivorGrid {
 // O(n) for contacts spread over the patch instead of O(n · survivors).
 void MergeByGrid(double radius, ContactList* contacts) {
   thread_local SurvivorGrid grid;
-  grid.Reset(contacts->size(), radius);
+  grid.Reset(radius);
   const double radius_squared = radius * radius;
   int kept = 0;
   for (std::size_t i = 0; i < contacts->size(); ++i) {
