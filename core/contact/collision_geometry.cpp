@@ -368,6 +368,7 @@ struct PairSearchScratch {
   mesh_detail::SparseArray<PlacedTriangle> placed_triangles;  // b's, in a's frame
   mesh_detail::SparseArray<PlacedVolume> placed_volumes;      // b's, in a's frame
   std::vector<int> triangles;                                 // SmallerInLarger's near ones
+  std::vector<int> partners;  // the smaller mesh's triangles near those
 };
 
 PairSearchScratch& SearchScratch() {
@@ -441,7 +442,8 @@ class NearPairSearch {
   }
 
   // The bounds of the mesh with fewer triangles through the other's hierarchy, then the
-  // triangles found there against every triangle of the smaller mesh. Finds nothing and
+  // triangles found there against every triangle of the smaller mesh whose box is within reach
+  // of theirs (a ball's triangles near a slab against the slab's top face only). Finds nothing and
   // returns false when more than `limit` triangles are near the bounds: a small mesh may
   // still span a large one.
   bool SmallerInLarger(size_t limit) const {
@@ -451,15 +453,25 @@ class NearPairSearch {
       Eigen::AlignedBox3d bounds;
       for (int tb = 0; tb < b_.model.num_tris; ++tb) bounds.extend(PlacedOfB(tb).bounds);
       if (!TrianglesNearBounds(a_.model, bounds, reach_, limit, &near)) return false;
+      Eigen::AlignedBox3d near_bounds;
+      for (const int ta : near) near_bounds.extend(a_.triangle_bounds[ta]);
+      std::vector<int>& partners = scratch_.partners;
+      partners.clear();
+      for (int tb = 0; tb < b_.model.num_tris; ++tb) {
+        if (!Apart(near_bounds, PlacedOfB(tb).bounds, reach_)) partners.push_back(tb);
+      }
       for (const int ta : near) {
-        for (int tb = 0; tb < b_.model.num_tris; ++tb) Test(ta, tb);
+        for (const int tb : partners) Test(ta, tb);
       }
     } else {
       const Pose X_ba = X_ab_.inverse();
       Eigen::AlignedBox3d bounds;
       for (int v = 0; v < a_.model.num_vertices; ++v) bounds.extend(X_ba * a_.model.vertices[v]);
       if (!TrianglesNearBounds(b_.model, bounds, reach_, limit, &near)) return false;
+      Eigen::AlignedBox3d near_bounds;
+      for (const int tb : near) near_bounds.extend(PlacedOfB(tb).bounds);
       for (int ta = 0; ta < a_.model.num_tris; ++ta) {
+        if (Apart(a_.triangle_bounds[ta], near_bounds, reach_)) continue;
         for (const int tb : near) Test(ta, tb);
       }
     }
