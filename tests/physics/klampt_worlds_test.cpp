@@ -160,11 +160,13 @@ TEST(KlamptWorldsTest, SoftBallsSettleAtTheirPredictedPenetration) {
   }
 }
 
-// The mesh contact speed-ups of 2026-11-27 keep every mesh contact bitwise but drop the triangle
-// pairs' contacts that repeat a vertex hit (mesh_contacts.h), which changes merged depths in the
-// last bits: each stiffness_test.xml ball's position at 2 s stays within 1 µm of the one recorded
-// before them (commit 9498971; measured 2e-10 m apart). Re-record these if the contact model
-// changes on purpose.
+// bounce_test.xml: ten spheres (five from sphere.geom, a primitive, five from sphere.off, a mesh)
+// with restitution 1, 0.75, 0.5, 0.25 and 0 dropped from 2 m onto a slab of restitution 0.5
+// The contact speed-ups of branch contact-speed keep every mesh contact bitwise but drop the
+// triangle pairs' contacts that repeat a vertex hit (mesh_contacts.h), which changes merged
+// depths in the last bits: each ball's position at 2 s stays within 1 µm of the one recorded
+// before them (commit 9498971; measured 2e-10 m apart). Re-record these if the physics changes
+// on purpose.
 TEST(KlamptWorldsTest, StiffnessBallsFollowTheirRecordedPaths) {
   const std::vector<std::pair<std::string, Vec3>> recorded = {
       {"ball_soft_1", {-0.50000000001474565, 9.4407268749775455e-12, 0.059804577459200432}},
@@ -189,8 +191,6 @@ TEST(KlamptWorldsTest, StiffnessBallsFollowTheirRecordedPaths) {
   }
 }
 
-// bounce_test.xml: ten spheres (five from sphere.geom, a primitive, five from sphere.off, a mesh)
-// with restitution 1, 0.75, 0.5, 0.25 and 0 dropped from 2 m onto a slab of restitution 0.5
 TEST(KlamptWorldsTest, SpheresReboundToRestitutionSquaredTimesTheDrop) {
   const core::WorldDesc world = LoadTestWorld("bounce_test.xml");
   core::Simulator simulator(world);
