@@ -194,8 +194,6 @@ struct MeshMeshScratch {
   SparseArray<VertexHit> nearest_face;
   std::vector<int> vertices;
   std::vector<VertexHit> vertex_hits;
-  // the face of b each vertex of a was found over (CollectVertexHits from a)
-  SparseArray<int> face_under_a_vertex;
 };
 
 MeshMeshScratch& Scratch() {
@@ -412,28 +410,6 @@ void CollectVertexHits(const MeshPair& m, double tolerance, bool from_a, MeshMes
   for (const int vertex : s->vertices) s->vertex_hits.push_back(s->nearest_face[vertex]);
 }
 
-// True when the selected pair's contact would repeat a vertex hit of a: its closest point on a
-// is exactly the corner v of a's triangle, v was found over the pair's face of b, and the
-// point on b lies where PairNormal takes that face's normal. The contact would then have the
-// vertex hit's normal (the same product, bitwise) and its position and depth up to rounding
-// (FCL projects v onto the face with other operations): MergeCoincidentContacts would fold it
-// into the same survivor, changing at most that survivor's depth in the last bits.
-bool RepeatsVertexHit(const MeshPair& m, const PairCandidate& c, const MeshMeshScratch& s) {
-  if (c.crossing) return false;
-  const Eigen::Vector3i& corners = m.a.mesh().triangles[c.hit.triangle_a];
-  const std::vector<Vec3>& vertices = m.a.mesh().vertices;
-  int vertex = -1;
-  for (int k = 0; k < 3; ++k) {
-    if (vertices[corners[k]] == c.hit.point_a) vertex = corners[k];
-  }
-  if (vertex < 0 || !s.face_under_a_vertex.Has(vertex) ||
-      s.face_under_a_vertex[vertex] != c.hit.triangle_b) {
-    return false;
-  }
-  const Vec3 on_b = BarycentricCoordinates(c.hit.point_b, m.TriangleB(c.hit.triangle_b));
-  return PlaceOnFace(m.b, c.hit.triangle_b, on_b) != FacePlace::kElsewhere;
-}
-
 // a contact between point p on a and q on b (a's frame) with normal n (a's frame): positioned
 // midway between the padded surfaces, p - pad_a n and q + pad_b n
 void AppendContact(const Pose& X_Wa, double pad_a, double pad_b, const Vec3& p, const Vec3& q,
@@ -493,12 +469,6 @@ Vec3 FeatureNormal(const CollisionGeometry& mesh, int triangle, const TriangleFe
 void MeshMeshContacts(const CollisionGeometry& a, const Pose& X_Wa, double pad_a,
                       const CollisionGeometry& b, const Pose& X_Wb, double pad_b,
                       ContactList* out) {
-  mesh_detail::MeshMeshContacts(a, X_Wa, pad_a, b, X_Wb, pad_b, false, out);
-}
-
-void mesh_detail::MeshMeshContacts(const CollisionGeometry& a, const Pose& X_Wa, double pad_a,
-                                   const CollisionGeometry& b, const Pose& X_Wb, double pad_b,
-                                   bool keep_repeats, ContactList* out) {
   const double tolerance = pad_a + pad_b;
   const Pose X_ab = X_Wa.inverse() * X_Wb;
   MeshMeshScratch& s = Scratch();
@@ -513,11 +483,9 @@ void mesh_detail::MeshMeshContacts(const CollisionGeometry& a, const Pose& X_Wa,
   SelectPairs(a.mesh().triangle_count(), b.mesh().triangle_count(), &s);
   // vertices over faces first: their face normals tell which way the pair separates
   Vec3 reference = Vec3::Zero();
-  s.face_under_a_vertex.Clear(a.mesh().vertices.size());
   for (const bool from_a : {true, false}) {
     CollectVertexHits(m, tolerance, from_a, &s);
     for (const VertexHit& hit : s.vertex_hits) {
-      if (from_a) s.face_under_a_vertex.Set(hit.vertex) = hit.face;
       reference += hit.normal;
       AppendContact(X_Wa, pad_a, pad_b, hit.on_a, hit.on_b, hit.normal, tolerance - hit.distance,
                     crossing || hit.distance < 0.0, out);
@@ -525,7 +493,6 @@ void mesh_detail::MeshMeshContacts(const CollisionGeometry& a, const Pose& X_Wa,
   }
   for (const int i : s.selected) {
     const PairCandidate& c = s.candidates[i];
-    if (!keep_repeats && RepeatsVertexHit(m, c, s)) continue;
     double signed_distance = c.hit.distance;
     bool from_face = false;
     Vec3 n_a = PairNormal(m, c, &signed_distance, &from_face);

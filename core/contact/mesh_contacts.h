@@ -9,12 +9,6 @@ namespace lamina::core {
 
 /// a and b are meshes. Normals are feature-based (vertex/edge/face) so they stay consistent
 /// from step to step. Appends to `out`; sets `penetrating` where triangles intersect.
-/// Difference from Klamp't (and from Lamina before): a triangle pair whose closest point on a is
-/// a vertex of a already found over the pair's face of b (a vertex hit) gives no contact of its
-/// own: it would repeat the vertex hit's normal exactly and its position and depth up to
-/// rounding, and merging (MergeCoincidentContacts) would fold it in again. Merged contact sets
-/// are the same but for survivors' depths in the last bits (about a third as many contacts to
-/// build and merge for a ball resting on a slab).
 void MeshMeshContacts(const CollisionGeometry& a, const Pose& X_Wa, double pad_a,
                       const CollisionGeometry& b, const Pose& X_Wb, double pad_b, ContactList* out);
 

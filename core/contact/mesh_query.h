@@ -80,13 +80,6 @@ Vec3 VertexNormal(const CollisionGeometry& mesh, int triangle, int corner);
 Vec3 EdgeNormal(const CollisionGeometry& mesh, int triangle, int corner);
 Vec3 FeatureNormal(const CollisionGeometry& mesh, int triangle, const TriangleFeature& feature);
 
-/// MeshMeshContacts (mesh_contacts.h); `keep_repeats` keeps the contacts of triangle pairs that
-/// repeat a vertex hit up to rounding (a ball on a slab: each vertex found again from the
-/// triangles around it), as it did before they were dropped: for tests.
-void MeshMeshContacts(const CollisionGeometry& a, const Pose& X_Wa, double pad_a,
-                      const CollisionGeometry& b, const Pose& X_Wb, double pad_b, bool keep_repeats,
-                      ContactList* out);
-
 /// A pair of triangles closer than the tolerance, with their closest points in a's frame.
 struct TrianglePairHit {
   int triangle_a = 0;

@@ -9,11 +9,9 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
-#include <random>
 
 #include <gtest/gtest.h>
 
-#include "core/contact/contact_clustering.h"
 #include "core/contact/mesh_query.h"
 #include "core/contact/triangle_queries.h"
 #include "core/io/mesh_file.h"
@@ -240,46 +238,6 @@ TEST(MeshMeshContactsTest, EarlierCallsOnOtherMeshesDoNotChangeTheContacts) {
   ASSERT_FALSE(MeshMesh(Cube(), At(Vec3::Zero()), *sphere, sphere_on_cube).empty());
   ExpectIdentical(first, MeshMesh(Cube(), on_top, Cube(), At(Vec3::Zero())));
   ExpectIdentical(sphere_first, MeshMesh(*sphere, sphere_on_cube, Cube(), At(Vec3::Zero())));
-}
-
-// stiffness_test.xml's ball (960 triangles, 6 cm once preshrunk, 4 cm of padding) on its slab
-// at 400 random poses, its lowest point from 3 cm above the slab (1 cm inside the layer) to 3 cm
-// into it, over both halves of the slab's top face and its diagonal, turned every way: dropping the
-// triangle pairs that repeat a vertex hit leaves the merged contacts (merged as the simulator
-// merges them) the same, position for position and normal for normal, but for depths in the last
-// bits (1e-15 m).
-TEST(MeshMeshContactsTest, DroppingRepeatedVertexHitsKeepsTheMergedContacts) {
-  const auto ball = MeshGeometry("klampt/objects/sphere.off", 0.06);
-  const auto slab = MeshGeometry("klampt/terrains/block.off");
-  constexpr double kBallPad = 0.04, kSlabPad = 0.0;
-  constexpr double kMergeRadius = 0.05 * (kBallPad + kSlabPad);  // core/sim/contact_set.h
-  std::mt19937 random(3);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  size_t all = 0, kept = 0;
-  for (int i = 0; i < 400; ++i) {
-    SCOPED_TRACE(testing::Message() << "pose " << i);
-    const Pose X_Wa =
-        At(Vec3(0.2 * u(random), 0.2 * u(random), 0.06 + 0.03 * u(random)),
-           core::RotationFromRollPitchYaw(3 * u(random), 3 * u(random), 3 * u(random)));
-    ContactList before, after;
-    core::mesh_detail::MeshMeshContacts(*ball, X_Wa, kBallPad, *slab, At(Vec3::Zero()), kSlabPad,
-                                        true, &before);
-    core::MeshMeshContacts(*ball, X_Wa, kBallPad, *slab, At(Vec3::Zero()), kSlabPad, &after);
-    all += before.size();
-    kept += after.size();
-    core::MergeCoincidentContacts(kMergeRadius, &before);
-    core::MergeCoincidentContacts(kMergeRadius, &after);
-    ASSERT_EQ(before.size(), after.size());
-    for (size_t k = 0; k < before.size(); ++k) {
-      EXPECT_EQ(before[k].position, after[k].position) << "contact " << k;
-      EXPECT_EQ(before[k].normal, after[k].normal) << "contact " << k;
-      EXPECT_NEAR(before[k].depth, after[k].depth, 1e-15) << "contact " << k;
-      EXPECT_EQ(before[k].penetrating, after[k].penetrating) << "contact " << k;
-    }
-  }
-  // the repeats are most of the triangle pairs' contacts
-  EXPECT_LT(kept, 0.8 * all);
-  std::cout << "contacts before merging: " << all << " with repeats, " << kept << " without\n";
 }
 
 TEST(BarycentricMapTest, MatchesBarycentricCoordinatesBitwise) {
