@@ -32,6 +32,9 @@ struct LoadedWorld {
 };
 /// Loads the world file at `path` (absolute).
 void LoadWorld(const std::string& path, LoadedWorld* out);
+/// The world file `relative` under worlds/ (e.g. "accuracy/chain.xml"); a test failure with the
+/// diagnostics when it does not load.
+core::WorldDesc LoadShippedWorld(const std::string& relative);
 
 /// A robot loaded with its diagnostics kept for assertions.
 struct LoadedRobot {

@@ -22,10 +22,7 @@ using core::Vec3;
 constexpr double kGravityForWorlds = 9.8;
 
 core::WorldDesc LoadTestWorld(const std::string& name) {
-  test::LoadedWorld loaded;
-  test::LoadWorld(test::WorldsPath("klampt/simulation_test_worlds/" + name), &loaded);
-  EXPECT_TRUE(loaded.ok) << loaded.diagnostics.FormatAll();
-  return loaded.world;
+  return test::LoadShippedWorld("klampt/simulation_test_worlds/" + name);
 }
 
 TEST(KlamptWorldsTest, StackOfTenBoxesStandsTenSeconds) {

@@ -120,10 +120,7 @@ TEST(PlanarChain, InterpolationBetweenSamplesIsFourthOrderToo) {
 }
 
 core::WorldDesc AccuracyWorld(const std::string& file) {
-  test::LoadedWorld loaded;
-  test::LoadWorld(test::WorldsPath("accuracy/" + file), &loaded);
-  EXPECT_TRUE(loaded.ok) << loaded.diagnostics.FormatAll();
-  return loaded.world;
+  return test::LoadShippedWorld("accuracy/" + file);
 }
 
 TEST(PlanarChain, ReadsTheDoublePendulumWorld) {

@@ -36,6 +36,15 @@ double PivotInertia() {
   return kInertiaC + kMass * kLength * kLength;
 }
 
+// The pendulum's joint turning at 4 rad/s with no gravity, its actuator off and `friction` (a
+// .rob statement) acting on it.
+core::WorldDesc SpinningJointWorld(const std::string& friction) {
+  core::WorldDesc world = PendulumWorld("servoP 0\nservoI 0\nservoD 0\n" + friction, 0.0);
+  world.settings.gravity = core::Vec3::Zero();
+  world.robots[0].velocity = VecX::Constant(1, 4.0);
+  return world;
+}
+
 // with the actuator off, a pendulum released at 0.05 rad swings with the small-angle period
 TEST(RobotJointTest, PassivePendulumSwingsWithItsPeriod) {
   core::Simulator simulator(PendulumWorld("servoP 0\nservoI 0\nservoD 0\n", 0.05));
@@ -287,10 +296,7 @@ TEST(RobotJointTest, DryFrictionHoldsBelowItsLimitAndSlipsAbove) {
 // (core/sim/friction_rows.h); the guess fails where the joint stops and the step is retaken with
 // the row bounded, so no step turns the joint back.
 TEST(RobotJointTest, DryFrictionSpinsAJointDownAndHoldsIt) {
-  core::WorldDesc world = PendulumWorld("servoP 0\nservoI 0\nservoD 0\ndryFriction 2\n", 0.0);
-  world.settings.gravity = core::Vec3::Zero();
-  world.robots[0].velocity = VecX::Constant(1, 4.0);
-  core::Simulator simulator(world);
+  core::Simulator simulator(SpinningJointWorld("dryFriction 2\n"));
   simulator.controller(0).SetTorque(VecX::Zero(1));
   const double deceleration = 2.0 / PivotInertia();
   simulator.Simulate(0.5);
@@ -308,10 +314,7 @@ TEST(RobotJointTest, DryFrictionSpinsAJointDownAndHoldsIt) {
 }
 
 TEST(RobotJointTest, ViscousFrictionDampsWithItsTimeConstant) {
-  core::WorldDesc world = PendulumWorld("servoP 0\nservoI 0\nservoD 0\nviscousFriction 0.5\n", 0);
-  world.settings.gravity = core::Vec3::Zero();
-  world.robots[0].velocity = VecX::Constant(1, 4.0);
-  core::Simulator simulator(world);
+  core::Simulator simulator(SpinningJointWorld("viscousFriction 0.5\n"));
   simulator.controller(0).SetTorque(VecX::Zero(1));
   simulator.Simulate(1.0);
   // I dω/dt = -μ_V ω
@@ -400,10 +403,7 @@ TEST(RobotJointTest, SetStateReplaysTheSameTrajectory) {
 // joint stops at 1.02 s and its row stays bounded for 50 steps after): the replay keeps it bounded
 // for the same steps, so it is the same trajectory to the bit.
 TEST(RobotJointTest, SetStateReplaysJointFrictionRowsToo) {
-  core::WorldDesc world = PendulumWorld("servoP 0\nservoI 0\nservoD 0\ndryFriction 2\n", 0.0);
-  world.settings.gravity = core::Vec3::Zero();
-  world.robots[0].velocity = VecX::Constant(1, 4.0);
-  core::Simulator simulator(world);
+  core::Simulator simulator(SpinningJointWorld("dryFriction 2\n"));
   simulator.controller(0).SetTorque(VecX::Constant(1, 0.0));
   simulator.Simulate(1.03);
   const core::SimState saved = simulator.GetState();
