@@ -152,7 +152,9 @@ void Simulator::PrepareRobotsForStep(double step) {
       controllers_[r].ComputeLinkForces(scratch.q, scratch.dq, &scratch.forces);
       scratch.motors.clear();
     }
-    const bool guess = world_.settings.solver != SolverType::kQuickStep;
+    // (dWorldStep's pivoting is what the guesses save; the Newton solver takes bounds at no
+    // extra cost, and QuickStep keeps its rows bounded)
+    const bool guess = world_.settings.solver == SolverType::kStep;
     scratch.friction_holdoff.resize(scratch.dq.size(), 0);
     robot.SetJointFriction(controllers_[r].drivers(), scratch.q, scratch.dq, scratch.motors, guess,
                            scratch.friction_holdoff, &scratch.friction);
