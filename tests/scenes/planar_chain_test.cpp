@@ -20,11 +20,15 @@ using core::PlanarChain;
 using core::PlanarChainState;
 using core::PlanarChainTrajectory;
 
+Eigen::VectorXd Vector(std::initializer_list<double> values) {
+  Eigen::VectorXd v(static_cast<Eigen::Index>(values.size()));
+  Eigen::Index i = 0;
+  for (const double value : values) v[i++] = value;
+  return v;
+}
+
 PlanarChainState State(std::initializer_list<double> angle, std::initializer_list<double> rate) {
-  PlanarChainState s;
-  s.angle = Eigen::Map<const Eigen::VectorXd>(angle.begin(), static_cast<int>(angle.size()));
-  s.rate = Eigen::Map<const Eigen::VectorXd>(rate.begin(), static_cast<int>(rate.size()));
-  return s;
+  return {Vector(angle), Vector(rate)};
 }
 
 // The double pendulum of two point masses (myphysicslab's closed form, angles from down).
