@@ -181,6 +181,7 @@ struct RunOptions {
   bool json = false;
   bool sleep = false;             ///< Simulator::SetSleeping (else the world's setting)
   bool no_error_meter = false;    ///< run without the live accuracy meter
+  bool no_pair_reuse = false;     ///< search the mesh hierarchies every step
   std::vector<std::string> sets;  ///< --set PATH=VALUE
   std::vector<std::string> gets;  ///< --get PATH
   std::string sensor_images;      ///< --sensor-images DIR
@@ -286,6 +287,7 @@ int RunSimulation(const RunOptions& options) {
   if (options.step > 0.0) simulator.SetSimStep(options.step);
   if (options.sleep) simulator.SetSleeping(true);
   simulator.SetErrorMeter(!options.no_error_meter);
+  simulator.SetReuseContactPairs(!options.no_pair_reuse);
   if (!ApplySimulationSets(*later, &simulator)) return 2;
   const auto targets = ResolveGets(options.gets, simulator);
   if (!targets) return 2;
@@ -345,6 +347,10 @@ int main(int argc, char** argv) {
   run->add_flag("--no-error-meter", run_options.no_error_meter,
                 "leave out the live accuracy meter (step doubling on sampled steps; at most 5 % "
                 "of the stepping time, results unchanged)");
+  run->add_flag("--no-pair-reuse", run_options.no_pair_reuse,
+                "search the mesh hierarchies for near triangle pairs every step instead of "
+                "keeping the candidates while the meshes move less than a slack (results "
+                "unchanged, for comparisons)");
   run->add_flag("--sleep", run_options.sleep,
                 "let idle objects sleep (leave the steps until something touches them)");
   CLI::Option* path = run->add_option("--path", run_options.motion,

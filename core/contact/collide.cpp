@@ -22,7 +22,7 @@ void CollideSwapped(Function collide, ContactList* out) {
 }  // namespace
 
 void Collide(const CollisionGeometry& a, const Pose& X_Wa, double pad_a, const CollisionGeometry& b,
-             const Pose& X_Wb, double pad_b, ContactList* out) {
+             const Pose& X_Wb, double pad_b, ContactList* out, NearPairCache* cache) {
   // the layer-edge slack split evenly: the contacts' midpoints do not move
   const double padding_a = pad_a + a.margin() + 0.5 * kLayerEdgeSlack;
   const double padding_b = pad_b + b.margin() + 0.5 * kLayerEdgeSlack;
@@ -34,7 +34,7 @@ void Collide(const CollisionGeometry& a, const Pose& X_Wa, double pad_a, const C
   } else if (a.kind() == Kind::kPrimitive && b.kind() == Kind::kPrimitive) {
     PrimitiveContacts(a.primitive(), X_Wa, padding_a, b.primitive(), X_Wb, padding_b, out);
   } else if (a.kind() == Kind::kMesh && b.kind() == Kind::kMesh) {
-    MeshMeshContacts(a, X_Wa, padding_a, b, X_Wb, padding_b, out);
+    MeshMeshContacts(a, X_Wa, padding_a, b, X_Wb, padding_b, out, cache);
   } else if (a.kind() == Kind::kMesh) {
     MeshPrimitiveContacts(a, X_Wa, padding_a, b, X_Wb, padding_b, out);
   } else {

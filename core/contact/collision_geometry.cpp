@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -16,6 +17,7 @@
 #include <fcl/narrowphase/detail/primitive_shape_algorithm/triangle_distance.h>
 
 #include "core/contact/mesh_query.h"
+#include "core/contact/near_pair_cache.h"
 #include "core/contact/point_cloud_contacts.h"
 
 namespace lamina::core {
@@ -39,6 +41,10 @@ struct MeshBvh {
   std::vector<std::array<Plane, 3>> edge_planes;
   /// Per hierarchy node, the radius of the sphere about its box's centre that holds the box.
   std::vector<double> node_radii;
+  /// The largest distance of a vertex from the mesh's origin (m; near_pair_cache.h).
+  double vertex_radius = 0.0;
+  /// Unique to this hierarchy in the process (a cache of triangle pairs names meshes by it).
+  std::uint64_t serial = 0;
 };
 
 namespace {
@@ -205,6 +211,9 @@ std::shared_ptr<const MeshBvh> BuildBvh(const TriangleMesh& mesh,
   for (int node = 0; node < bvh->model.getNumBVs(); ++node) {
     bvh->node_radii.push_back(bvh->model.getBV(node).bv.obb.extent.norm());
   }
+  for (const Vec3& v : mesh.vertices) bvh->vertex_radius = std::max(bvh->vertex_radius, v.norm());
+  static std::atomic<std::uint64_t> next_serial{1};
+  bvh->serial = next_serial++;
   return bvh;
 }
 
@@ -411,8 +420,11 @@ bool TrianglesNearBounds(const FclModel& model, const Eigen::AlignedBox3d& bound
 // computed as R v + T (as FCL itself maps them), so all paths report bitwise the same pairs.
 class NearPairSearch {
  public:
+  // Reports into `hits` the pairs within `tolerance`, or, with `candidates`, collects the pairs
+  // its cheap tests keep (no distance measured) there instead.
   NearPairSearch(const MeshBvh& a, const MeshBvh& b, const Pose& X_ab, double tolerance,
-                 std::vector<TrianglePairHit>* hits)
+                 std::vector<TrianglePairHit>* hits,
+                 std::vector<std::pair<int, int>>* candidates = nullptr)
       : a_(a),
         b_(b),
         X_ab_(X_ab),
@@ -421,6 +433,7 @@ class NearPairSearch {
         tolerance_(tolerance),
         reach_(tolerance + kBoundsSlack),
         hits_(hits),
+        candidates_(candidates),
         scratch_(SearchScratch()) {
     scratch_.placed_triangles.Clear(b.model.num_tris);
     scratch_.placed_volumes.Clear(b.model.getNumBVs());
@@ -478,9 +491,20 @@ class NearPairSearch {
     return true;
   }
 
+  // The given pairs only (sorted: the hits come in their order).
+  void Pairs(const std::vector<std::pair<int, int>>& pairs) const {
+    for (const auto& [ta, tb] : pairs) Test(ta, tb);
+  }
+
   // A traversal of both hierarchies, pairs of nodes pruned by the distance between their
   // bounding volumes; the pairs then sorted.
   void BothHierarchies() const {
+    if (candidates_ != nullptr) {
+      const size_t first = candidates_->size();
+      Visit(0, 0);
+      std::sort(candidates_->begin() + static_cast<std::ptrdiff_t>(first), candidates_->end());
+      return;
+    }
     const size_t first = hits_->size();
     Visit(0, 0);
     std::sort(hits_->begin() + static_cast<std::ptrdiff_t>(first), hits_->end(),
@@ -518,7 +542,11 @@ class NearPairSearch {
         BeyondAnEdge(a_.edge_planes[ta], placed.corners, reach_)) {
       return;
     }
-    Measure(ta, tb, placed);
+    if (candidates_ != nullptr) {
+      candidates_->emplace_back(ta, tb);
+    } else {
+      Measure(ta, tb, placed);
+    }
   }
 
   // FCL's exact distance of the pair, kept within the tolerance.
@@ -576,6 +604,7 @@ class NearPairSearch {
   const double tolerance_;
   const double reach_;
   std::vector<TrianglePairHit>* hits_;
+  std::vector<std::pair<int, int>>* candidates_;
   PairSearchScratch& scratch_;
 };
 
@@ -587,10 +616,9 @@ const MeshTopology& Topology(const MeshBvh& bvh) {
   return bvh.topology;
 }
 
-void NearTrianglePairs(const MeshBvh& a, const MeshBvh& b, const Pose& X_ab, double tolerance,
-                       std::vector<TrianglePairHit>* hits, PairSearch search) {
-  if (a.model.getNumBVs() == 0 || b.model.getNumBVs() == 0) return;
-  const NearPairSearch finder(a, b, X_ab, tolerance, hits);
+namespace {
+
+void Search(const NearPairSearch& finder, const MeshBvh& a, const MeshBvh& b, PairSearch search) {
   const long pairs = static_cast<long>(a.model.num_tris) * b.model.num_tris;
   const int fewer = std::min(a.model.num_tris, b.model.num_tris);
   switch (search) {
@@ -618,6 +646,43 @@ void NearTrianglePairs(const MeshBvh& a, const MeshBvh& b, const Pose& X_ab, dou
       finder.BothHierarchies();
       break;
   }
+}
+
+// The candidates of the tolerance widened by the cache's slack, from a search of the hierarchies
+// at the current pose (near_pair_cache.h).
+void CollectCandidates(const MeshBvh& a, const MeshBvh& b, const Pose& X_ab, double tolerance,
+                       NearPairCache* cache) {
+  cache->mesh_a = a.serial;
+  cache->mesh_b = b.serial;
+  cache->tolerance = tolerance;
+  cache->slack = NearPairSlack(tolerance);
+  cache->X_ab = X_ab;
+  cache->candidates.clear();
+  const NearPairSearch collector(a, b, X_ab, tolerance + cache->slack, nullptr, &cache->candidates);
+  Search(collector, a, b, PairSearch::kAuto);
+  if (!std::is_sorted(cache->candidates.begin(), cache->candidates.end())) {
+    std::sort(cache->candidates.begin(), cache->candidates.end());
+  }
+  ++cache->collections;
+}
+
+}  // namespace
+
+void NearTrianglePairs(const MeshBvh& a, const MeshBvh& b, const Pose& X_ab, double tolerance,
+                       std::vector<TrianglePairHit>* hits, PairSearch search,
+                       NearPairCache* cache) {
+  if (a.model.getNumBVs() == 0 || b.model.getNumBVs() == 0) return;
+  if (cache == nullptr || search != PairSearch::kAuto) {
+    Search(NearPairSearch(a, b, X_ab, tolerance, hits), a, b, search);
+    return;
+  }
+  if (NearPairCacheHolds(*cache, a.serial, b.serial, tolerance, X_ab, a.vertex_radius,
+                         b.vertex_radius)) {
+    ++cache->reuses;
+  } else {
+    CollectCandidates(a, b, X_ab, tolerance, cache);
+  }
+  NearPairSearch(a, b, X_ab, tolerance, hits).Pairs(cache->candidates);
 }
 
 void TrianglesNearBox(const MeshBvh& bvh, const Pose& X_mesh_box, const Vec3& half_extents,

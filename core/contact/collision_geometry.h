@@ -17,6 +17,7 @@ namespace lamina::core {
 
 /// Opaque bounding-volume hierarchy of a mesh (FCL). Defined in collision_geometry.cpp.
 struct MeshBvh;
+struct NearPairCache;  // near_pair_cache.h
 
 class CollisionGeometry {
  public:
@@ -81,8 +82,10 @@ class CollisionGeometryCache {
 /// `out`. Paddings include nothing else: the geometries' own margins are added inside, and
 /// half of kLayerEdgeSlack to each (contact.h).
 /// Deterministic: the same inputs give the same contacts in the same order. A point cloud's
-/// points are balls of its padding (point_cloud_contacts.h).
+/// points are balls of its padding (point_cloud_contacts.h). `cache`: the triangle pairs of a
+/// mesh–mesh pair kept from the last call for the same two bodies (near_pair_cache.h; the
+/// contacts are bitwise the same with or without it).
 void Collide(const CollisionGeometry& a, const Pose& X_Wa, double pad_a, const CollisionGeometry& b,
-             const Pose& X_Wb, double pad_b, ContactList* out);
+             const Pose& X_Wb, double pad_b, ContactList* out, NearPairCache* cache = nullptr);
 
 }  // namespace lamina::core

@@ -467,13 +467,14 @@ Vec3 FeatureNormal(const CollisionGeometry& mesh, int triangle, const TriangleFe
 }  // namespace mesh_detail
 
 void MeshMeshContacts(const CollisionGeometry& a, const Pose& X_Wa, double pad_a,
-                      const CollisionGeometry& b, const Pose& X_Wb, double pad_b,
-                      ContactList* out) {
+                      const CollisionGeometry& b, const Pose& X_Wb, double pad_b, ContactList* out,
+                      NearPairCache* cache) {
   const double tolerance = pad_a + pad_b;
   const Pose X_ab = X_Wa.inverse() * X_Wb;
   MeshMeshScratch& s = Scratch();
   s.hits.clear();
-  mesh_detail::NearTrianglePairs(a.bvh(), b.bvh(), X_ab, tolerance, &s.hits);
+  mesh_detail::NearTrianglePairs(a.bvh(), b.bvh(), X_ab, tolerance, &s.hits,
+                                 mesh_detail::PairSearch::kAuto, cache);
   if (s.hits.empty()) return;
   s.b_vertices.Reset(b.mesh(), X_ab);
   const MeshPair m{a, b, X_ab, &s.b_vertices};

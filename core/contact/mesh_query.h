@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/contact/collision_geometry.h"
+#include "core/contact/near_pair_cache.h"
 
 namespace lamina::core::mesh_detail {
 
@@ -100,9 +101,12 @@ enum class PairSearch {
 };
 
 /// Every triangle pair of a and b (b placed in a's frame by X_ab) whose distance is at most
-/// `tolerance`, appended to `hits` in (triangle_a, triangle_b) order.
+/// `tolerance`, appended to `hits` in (triangle_a, triangle_b) order. With a `cache` (and the
+/// automatic search) the pairs come from its candidates while they hold, and the cache is
+/// filled anew when they do not (near_pair_cache.h): bitwise the same pairs.
 void NearTrianglePairs(const MeshBvh& a, const MeshBvh& b, const Pose& X_ab, double tolerance,
-                       std::vector<TrianglePairHit>* hits, PairSearch search = PairSearch::kAuto);
+                       std::vector<TrianglePairHit>* hits, PairSearch search = PairSearch::kAuto,
+                       NearPairCache* cache = nullptr);
 
 /// Triangles whose bounding volumes overlap the box with centre frame X_mesh_box and
 /// `half_extents`, appended to `triangles` (a superset of the triangles touching the box).

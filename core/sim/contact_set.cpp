@@ -9,14 +9,14 @@ namespace lamina::core {
 
 bool FindPairContacts(int first, int second, const NarrowBody& body_first,
                       const NarrowBody& body_second, int max_contacts, ContactList* scratch,
-                      ContactPair* pair, SimTimeSplit* timing) {
+                      ContactPair* pair, SimTimeSplit* timing, NearPairCache* cache) {
   // a is a body that moves (ODE attaches contact joints to it); normals point into a
   const bool swap = !body_first.moves;
   const NarrowBody& a = swap ? body_second : body_first;
   const NarrowBody& b = swap ? body_first : body_second;
   Stopwatch watch;
   scratch->clear();
-  Collide(*a.geometry, a.pose, a.padding, *b.geometry, b.pose, b.padding, scratch);
+  Collide(*a.geometry, a.pose, a.padding, *b.geometry, b.pose, b.padding, scratch, cache);
   timing->contact_generation += watch.Lap();
   if (scratch->empty()) return false;
   *pair = ContactPair{};
@@ -36,6 +36,7 @@ bool FindPairContacts(int first, int second, const NarrowBody& body_first,
 }
 
 void ContactSet::Clear() {
+  kept_pairs_.clear();
   broad_.Clear();
   before_candidates_.clear();
   pairs_.clear();
@@ -53,6 +54,45 @@ void ContactSet::Rollback() {
   std::swap(pairs_, before_);
   broad_.Swap(&before_candidates_);
   current_ = true;
+}
+
+void ContactSet::SetReusePairs(bool reuse) {
+  reuse_pairs_ = reuse;
+  if (!reuse) {
+    ++detection_;  // no pair was met in this "detection": every one is forgotten
+    SweepPairCaches();
+  }
+}
+
+NearPairCache* ContactSet::PairCacheFor(int first, int second) {
+  if (!reuse_pairs_) return nullptr;
+  KeptPairs& kept = kept_pairs_[{first, second}];
+  kept.detection = detection_;
+  return &kept.cache;
+}
+
+void ContactSet::SweepPairCaches() {
+  for (auto it = kept_pairs_.begin(); it != kept_pairs_.end();) {
+    if (it->second.detection == detection_) {
+      ++it;
+      continue;
+    }
+    forgotten_collections_ += it->second.cache.collections;
+    forgotten_reuses_ += it->second.cache.reuses;
+    it = kept_pairs_.erase(it);
+  }
+}
+
+long long ContactSet::PairCollections() const {
+  long long sum = forgotten_collections_;
+  for (const auto& [key, kept] : kept_pairs_) sum += kept.cache.collections;
+  return sum;
+}
+
+long long ContactSet::PairReuses() const {
+  long long sum = forgotten_reuses_;
+  for (const auto& [key, kept] : kept_pairs_) sum += kept.cache.reuses;
+  return sum;
 }
 
 }  // namespace lamina::core

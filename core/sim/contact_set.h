@@ -11,10 +11,13 @@
 #pragma once
 
 #include <algorithm>
+#include <map>
+#include <utility>
 #include <vector>
 
 #include "core/contact/collision_geometry.h"
 #include "core/contact/contact.h"
+#include "core/contact/near_pair_cache.h"
 #include "core/sim/broad_phase.h"
 #include "core/sim/sim_timing.h"
 
@@ -50,10 +53,11 @@ inline constexpr double kMinimumMergeRadius = 1e-4;
 /// The contacts of bodies `first` and `second` (a is the one that moves): collided within their
 /// paddings, coincident points merged, a flat patch reduced to its outline's corners
 /// (contact_reduction.h), clustered to `max_contacts`. False (and `pair` untouched)
-/// when they do not touch. `scratch` is reused storage; times go to `timing`.
+/// when they do not touch. `scratch` is reused storage; times go to `timing`; `cache` (or null)
+/// the pair's triangle pairs kept from its last call (near_pair_cache.h).
 bool FindPairContacts(int first, int second, const NarrowBody& body_first,
                       const NarrowBody& body_second, int max_contacts, ContactList* scratch,
-                      ContactPair* pair, SimTimeSplit* timing);
+                      ContactPair* pair, SimTimeSplit* timing, NearPairCache* cache = nullptr);
 
 class ContactSet {
  public:
@@ -79,14 +83,34 @@ class ContactSet {
   void KeepForRollback();
   /// The tentative step was undone: before() is the current set again.
   void Rollback();
+  /// Whether mesh–mesh pairs keep their candidate triangle pairs from step to step (on by
+  /// default; the contacts are bitwise the same either way: near_pair_cache.h). Off forgets them.
+  void SetReusePairs(bool reuse);
+  /// Searches through the hierarchies, and queries answered from kept candidates, since the
+  /// set was made.
+  long long PairCollections() const;
+  long long PairReuses() const;
 
  private:
+  struct KeptPairs {
+    NearPairCache cache;
+    unsigned long long detection = 0;  ///< the last Detect that used it
+  };
+  /// The kept candidates of the pair (first, second), or null when pairs are not reused.
+  NearPairCache* PairCacheFor(int first, int second);
+  /// Forgets the candidates of pairs this Detect did not meet (they no longer touch).
+  void SweepPairCaches();
+
   BroadPhase broad_;
   CandidatePairs before_candidates_;
   std::vector<ContactPair> pairs_;
   std::vector<ContactPair> before_;
   ContactList scratch_;
   bool current_ = false;
+  bool reuse_pairs_ = true;
+  std::map<std::pair<int, int>, KeptPairs> kept_pairs_;
+  unsigned long long detection_ = 0;
+  long long forgotten_collections_ = 0, forgotten_reuses_ = 0;  ///< of pairs swept away
 };
 
 template <typename Bounds, typename Filter, typename Narrow>
@@ -98,12 +122,14 @@ void ContactSet::Detect(const std::vector<int>& ids, const Bounds& bounds_of,
   broad_.Find(ids, bounds_of, may_collide);
   timing->broad_phase += watch.Lap();
   ContactPair pair;
+  ++detection_;
   for (const auto& [first, second] : broad_.candidates()) {
     if (FindPairContacts(first, second, narrow_of(first), narrow_of(second), max_contacts,
-                         &scratch_, &pair, timing)) {
+                         &scratch_, &pair, timing, PairCacheFor(first, second))) {
       pairs_.push_back(std::move(pair));
     }
   }
+  SweepPairCaches();
   current_ = true;
 }
 

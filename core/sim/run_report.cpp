@@ -90,6 +90,8 @@ std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
        {{"islands", stats.newton_islands},
         {"fallbacks", stats.newton_fallbacks},
         {"iterations", stats.newton_iterations}}},
+      {"mesh_pairs",
+       {{"searches", simulator.ContactPairSearches()}, {"reused", simulator.ContactPairReuses()}}},
       {"sleeping_objects", simulator.SleepingObjectCount()}};
   if (!stats.error.empty()) out["error"] = stats.error;
   if (simulator.error_meter()) out["error_meter"] = ErrorMeterJson(simulator);

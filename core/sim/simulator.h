@@ -301,6 +301,13 @@ class Simulator {
 
   // contacts at the current state (after clustering), one entry per touching pair
   const std::vector<ContactPair>& contact_pairs() const { return contacts_.pairs(); }
+  /// Whether mesh–mesh pairs keep their candidate triangle pairs between steps (on by default;
+  /// bitwise the same contacts either way: core/contact/near_pair_cache.h). For tests and
+  /// benchmarks.
+  void SetReuseContactPairs(bool reuse) { contacts_.SetReusePairs(reuse); }
+  /// Hierarchy searches of mesh–mesh pairs, and queries answered from kept candidates.
+  long long ContactPairSearches() const { return contacts_.PairCollections(); }
+  long long ContactPairReuses() const { return contacts_.PairReuses(); }
   /// The blend of the current surfaces of bodies a and b (BlendSurfaces, surface_blend.h): the
   /// one function the contact joints, the step guard and readouts (contact_readout.h) take it
   /// from. std::out_of_range for an id that is not a terrain, object or link.

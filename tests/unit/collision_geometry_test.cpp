@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "core/contact/mesh_query.h"
+#include "core/contact/near_pair_cache.h"
 #include "core/contact/triangle_queries.h"
 #include "core/io/mesh_file.h"
 #include "tests/common/test_support.h"
@@ -405,6 +406,85 @@ TEST(NearTrianglePairsTest, FarMeshesGiveNoPairs) {
   }
   X_ab.translation().z() = 1.0049;
   EXPECT_FALSE(NearPairs(*cube, *cube, X_ab, 0.005, PairSearch::kAuto).empty());
+}
+
+// b walks from `start` by random steps of up to `step` (m, and rad about each axis), with a jump
+// of up to 20 steps now and then: at every pose the search from the kept candidates reports
+// bitwise what a fresh search reports, the candidates are reused and collected again.
+struct WalkCounts {
+  int with_hits = 0;
+  long long collections = 0, reuses = 0;
+};
+WalkCounts CompareWithKeptCandidates(const CollisionGeometry& a, const CollisionGeometry& b,
+                                     const Pose& start, int poses, double step, double tolerance) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  core::NearPairCache cache;
+  Pose X_ab = start;
+  WalkCounts counts;
+  for (int i = 0; i < poses; ++i) {
+    const double size = i % 25 == 24 ? 20.0 * step : step;
+    Pose move = Pose::Identity();
+    move.linear() =
+        core::RotationFromRollPitchYaw(size * u(random), size * u(random), size * u(random));
+    move.translation() = size * Vec3(u(random), u(random), u(random));
+    X_ab = X_ab * move;
+    std::vector<TrianglePairHit> kept;
+    core::mesh_detail::NearTrianglePairs(a.bvh(), b.bvh(), X_ab, tolerance, &kept,
+                                         PairSearch::kAuto, &cache);
+    ExpectSameHits(NearPairs(a, b, X_ab, tolerance, PairSearch::kAuto), kept,
+                   "pose " + std::to_string(i));
+    counts.with_hits += !kept.empty();
+  }
+  counts.collections = cache.collections;
+  counts.reuses = cache.reuses;
+  return counts;
+}
+
+TEST(NearTrianglePairsTest, KeptCandidatesGiveTheSamePairsAsAFreshSearch) {
+  // the 960-triangle ball within its 8 cm paddings on the slab (the smaller mesh through
+  // the larger's hierarchy), walking by up to 2 mm and 2 mrad a step
+  const auto ball = MeshGeometry(LoadMesh("klampt/objects/sphere.off"), Vec3::Constant(0.1));
+  const auto slab = MeshGeometry(LoadMesh("klampt/terrains/block.off"));
+  Pose slab_in_ball = Pose::Identity();
+  slab_in_ball.translation() = Vec3(0.3, -0.2, -0.15);
+  const WalkCounts ball_on_slab =
+      CompareWithKeptCandidates(*ball, *slab, slab_in_ball, 150, 2e-3, 0.08);
+  EXPECT_GT(ball_on_slab.with_hits, 100);
+  EXPECT_GT(ball_on_slab.reuses, 75);
+  EXPECT_GT(ball_on_slab.collections, 3);
+  // a cube over a 2048-triangle bumpy grid (both hierarchies), walking by up to 0.2 mm a step
+  const auto cube = MeshGeometry(LoadMesh("klampt/objects/cube.off"), Vec3::Constant(0.1));
+  const auto grid = MeshGeometry(BumpyGrid(32));
+  Pose cube_on_grid = Pose::Identity();
+  cube_on_grid.translation() = Vec3(0.45, 0.45, 0.085);  // over bumps 5 to 8 cm high
+  const WalkCounts on_grid = CompareWithKeptCandidates(*grid, *cube, cube_on_grid, 150, 2e-4, 0.01);
+  EXPECT_GT(on_grid.with_hits, 100);
+  EXPECT_GT(on_grid.reuses, 75);
+  EXPECT_GT(on_grid.collections, 3);
+}
+
+TEST(NearTrianglePairsTest, KeptCandidatesFollowAChangeOfMeshOrTolerance) {
+  const auto cube = MeshGeometry(LoadMesh("klampt/objects/cube.off"), Vec3::Constant(0.1));
+  const auto other = MeshGeometry(LoadMesh("klampt/objects/cube.off"), Vec3::Constant(0.2));
+  const auto grid = MeshGeometry(BumpyGrid(16));
+  Pose X = Pose::Identity();
+  X.translation() = Vec3(0.45, 0.45, 0.085);  // the grid is 5 to 8 cm high under the cube
+  core::NearPairCache cache;
+  const auto kept = [&](const CollisionGeometry& b, double tolerance) {
+    std::vector<TrianglePairHit> hits;
+    core::mesh_detail::NearTrianglePairs(grid->bvh(), b.bvh(), X, tolerance, &hits,
+                                         PairSearch::kAuto, &cache);
+    ExpectSameHits(NearPairs(*grid, b, X, tolerance, PairSearch::kAuto), hits, "kept");
+    return hits.size();
+  };
+  const size_t first = kept(*cube, 0.01);
+  EXPECT_GT(first, 0u);
+  EXPECT_EQ(kept(*cube, 0.01), first);  // the same query: answered from the candidates
+  EXPECT_GT(kept(*cube, 0.05), first);  // a wider padding: collected again
+  EXPECT_GT(kept(*other, 0.01), 0u);    // another mesh in the pair: collected again
+  EXPECT_EQ(cache.collections, 3);
+  EXPECT_EQ(cache.reuses, 1);
 }
 
 // ---- sparse scratch arrays ----
