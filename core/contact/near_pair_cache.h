@@ -56,8 +56,7 @@ double NearPairSlack(double tolerance);
 
 /// How far the meshes have moved against each other between b's poses `before` and `after` in
 /// a's frame: the smaller of b's points' bound (radius_b) and a's points' in b's frame (radius_a).
-double RelativeMotionBound(const Pose& before, const Pose& after, double radius_a,
-                           double radius_b);
+double RelativeMotionBound(const Pose& before, const Pose& after, double radius_a, double radius_b);
 
 /// Whether `cache` answers a query of meshes `mesh_a`, `mesh_b` (serials) at `tolerance` with b
 /// at `X_ab`, the meshes' vertices lying within `radius_a` and `radius_b` of their origins.

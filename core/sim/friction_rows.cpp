@@ -34,6 +34,11 @@ double ExplicitFrictionTorque(FrictionRowMode mode, double fmax, double rate_now
   return mode == FrictionRowMode::kExplicit ? -fmax * Sign(rate_now) : 0.0;
 }
 
+MergedRow MergeServoAndFrictionRows(double velocity, double servo_cfm, double friction_cfm) {
+  const double sum = servo_cfm + friction_cfm;
+  return {velocity * (friction_cfm / sum), servo_cfm * (friction_cfm / sum)};
+}
+
 bool FrictionGuessHeld(FrictionRowMode mode, double fmax, double cfm, double rate_now,
                        double rate_after) {
   if (mode == FrictionRowMode::kBounded) return true;

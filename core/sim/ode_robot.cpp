@@ -610,6 +610,29 @@ void OdeRobot::SetJointFriction(const std::vector<DriverDesc>& drivers, const Ve
 // own motor: a hinge with a motor row is a "mixed" joint to dWorldStep, and only joints whose rows
 // are all unbounded join the LCP's unbounded block, factorized at once; the rows of mixed joints
 // go through Dantzig's pivoting one at a time (HRP-2 with joint friction: 150 hinge rows).
+void OdeRobot::MergeHoldingFriction(const std::vector<ServoMotorCommand>& motors,
+                                    const std::vector<FrictionCommand>& friction) {
+  for (const FrictionCommand& row : friction) {
+    if (row.mode != FrictionRowMode::kUnbounded) continue;
+    const dJointID servo = links_[row.link].servo;
+    for (const ServoMotorCommand& motor : motors) {
+      if (motor.link != row.link || !(motor.fmax > 0.0)) continue;
+      if (!motor.unbounded && std::isfinite(motor.fmax)) continue;
+      if (!(motor.cfm + row.cfm > 0.0)) continue;
+      const MergedRow merged = MergeServoAndFrictionRows(motor.velocity, motor.cfm, row.cfm);
+      if (dJointGetType(servo) == dJointTypeAMotor) {
+        dJointSetAMotorParam(servo, dParamVel, merged.velocity);
+        dJointSetAMotorParam(servo, dParamCFM, merged.cfm);
+        dJointSetAMotorParam(servo, dParamFMax2, 0.0);
+      } else {
+        dJointSetLMotorParam(servo, dParamVel, merged.velocity);
+        dJointSetLMotorParam(servo, dParamCFM, merged.cfm);
+        dJointSetLMotorParam(servo, dParamFMax2, 0.0);
+      }
+    }
+  }
+}
+
 void OdeRobot::SetJointMotor(int i, double fmax, double cfm) {
   const dJointID motor = links_[i].servo;
   if (motor == nullptr) return;

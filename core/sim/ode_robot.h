@@ -86,6 +86,11 @@ class OdeRobot {
   void SetJointFriction(const std::vector<DriverDesc>& drivers, const VecX& q, const VecX& dq,
                         const std::vector<ServoMotorCommand>& motors, bool guess,
                         const std::vector<int>& holdoff, std::vector<FrictionCommand>* commands);
+  /// After SetServos and SetJointFriction: each joint whose friction row goes unbounded this step
+  /// (`friction`) and whose servo row is unbounded too gets one row for both
+  /// (MergeServoAndFrictionRows, friction_rows.h) on the servo's axis, and no friction row.
+  void MergeHoldingFriction(const std::vector<ServoMotorCommand>& motors,
+                            const std::vector<FrictionCommand>& friction);
   /// After an accepted step: counts the turns of revolute joints.
   void AcceptStep();
 

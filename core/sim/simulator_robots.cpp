@@ -162,6 +162,7 @@ void Simulator::PrepareRobotsForStep(double step) {
       scratch.forces[row.link] += ExplicitFrictionTorque(row.mode, row.fmax, row.rate);
     }
     robot.SetServos(scratch.motors);
+    robot.MergeHoldingFriction(scratch.motors, scratch.friction);
     robot.ApplyLinkForces(scratch.forces);
   }
 }

@@ -32,8 +32,7 @@ Counts RunBothWays(const std::string& world_file, core::SolverType solver, doubl
 
 TEST(ContactPairReuseTest, HumanoidOnRoughGroundRunsBitwiseTheSame) {
   // HRP-2's soles (meshes) landing and standing on fractal terrain, exact solver
-  const Counts counts =
-      RunBothWays("examples/hrp2_rough.xml", core::SolverType::kStep, 0.3);
+  const Counts counts = RunBothWays("examples/hrp2_rough.xml", core::SolverType::kStep, 0.3);
   EXPECT_GT(counts.reused, 20 * counts.searches);
   EXPECT_GT(counts.searches, 0);
 }
@@ -50,8 +49,7 @@ TEST(ContactPairReuseTest, BallsOnAStiffnessRangeRunBitwiseTheSame) {
 TEST(ContactPairReuseTest, WheelsLandingOnFractalTerrainRunBitwiseTheSame) {
   // ATHLETE's six wheels landing on fractal terrain: they move fast enough to search again in
   // many steps, and the Newton solver takes the island
-  const Counts counts =
-      RunBothWays("klampt/athlete_fractal_1.xml", core::SolverType::kNewton, 0.3);
+  const Counts counts = RunBothWays("klampt/athlete_fractal_1.xml", core::SolverType::kNewton, 0.3);
   EXPECT_GT(counts.searches, 500);
   EXPECT_GT(counts.reused, counts.searches);
 }

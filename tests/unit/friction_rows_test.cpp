@@ -3,6 +3,7 @@
 // a step, and whether that form gave the bounded row's answer.
 #include "core/sim/friction_rows.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -62,6 +63,21 @@ TEST(FrictionRowsTest, ATorqueHeldWhileTheJointKeptSlidingTheSameWay) {
   EXPECT_FALSE(FrictionGuessHeld(mode, kF, kCfm, 0.5, std::numeric_limits<double>::infinity()));
   // a bounded row is the LCP's own answer
   EXPECT_TRUE(FrictionGuessHeld(FrictionRowMode::kBounded, kF, kCfm, 0.5, -0.1));
+}
+
+TEST(FrictionRowsTest, AMergedRowAppliesTheSumOfTheServoAndFrictionForcesAtEveryRate) {
+  // a servo row (target 0.3 rad/s, CFM 2e-3) and a holding friction row (CFM 1e-9)
+  const double servo_cfm = 2e-3, friction_cfm = 1e-9, target = 0.3;
+  const MergedRow merged = MergeServoAndFrictionRows(target, servo_cfm, friction_cfm);
+  for (const double rate : {-1.0, -1e-6, 0.0, 3e-10, 1e-7, 0.3, 2.0}) {
+    const double sum = (target - rate) / servo_cfm + (0.0 - rate) / friction_cfm;
+    const double one = (merged.velocity - rate) / merged.cfm;
+    EXPECT_NEAR(one, sum, 1e-12 * std::max(1.0, std::abs(sum))) << rate;
+  }
+  // a rigid servo (CFM 0) keeps its target whatever friction adds
+  const MergedRow rigid = MergeServoAndFrictionRows(target, 0.0, friction_cfm);
+  EXPECT_EQ(rigid.velocity, target);
+  EXPECT_EQ(rigid.cfm, 0.0);
 }
 
 }  // namespace
