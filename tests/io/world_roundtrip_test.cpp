@@ -60,7 +60,8 @@ INSTANTIATE_TEST_SUITE_P(AllExamples, RoundTripTest,
                                            "klampt/simulation_test_worlds/stacktest.xml",
                                            "klampt/simulation_test_worlds/stiffness_test.xml",
                                            "examples/point_clouds.xml",
-                                           "examples/rolling_friction.xml"));
+                                           "examples/rolling_friction.xml",
+                                           "examples/tx90l_milestones.xml"));
 
 // Lamina's kRollingFriction and kSpinningFriction are written where the body's other surface
 // rows are (an object's <physics> and every body's <simulation> <geometry>) only while they are
