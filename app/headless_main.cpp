@@ -182,6 +182,7 @@ struct RunOptions {
   bool sleep = false;             ///< Simulator::SetSleeping (else the world's setting)
   bool no_error_meter = false;    ///< run without the live accuracy meter
   bool no_pair_reuse = false;     ///< search the mesh hierarchies every step
+  bool ode_robots = false;        ///< the exact solver leaves robots to dWorldStep's LCP
   std::vector<std::string> sets;  ///< --set PATH=VALUE
   std::vector<std::string> gets;  ///< --get PATH
   std::string sensor_images;      ///< --sensor-images DIR
@@ -288,6 +289,7 @@ int RunSimulation(const RunOptions& options) {
   if (options.sleep) simulator.SetSleeping(true);
   simulator.SetErrorMeter(!options.no_error_meter);
   simulator.SetReuseContactPairs(!options.no_pair_reuse);
+  simulator.SetDirectRobotSolve(!options.ode_robots);
   if (!ApplySimulationSets(*later, &simulator)) return 2;
   const auto targets = ResolveGets(options.gets, simulator);
   if (!targets) return 2;
@@ -351,6 +353,9 @@ int main(int argc, char** argv) {
                 "search the mesh hierarchies for near triangle pairs every step instead of "
                 "keeping the candidates while the meshes move less than a slack (results "
                 "unchanged, for comparisons)");
+  run->add_flag("--ode-robots", run_options.ode_robots,
+                "with the exact solver, leave robots to dWorldStep's own LCP instead of the "
+                "direct solve of their islands (the same law; for comparisons)");
   run->add_flag("--sleep", run_options.sleep,
                 "let idle objects sleep (leave the steps until something touches them)");
   CLI::Option* path = run->add_option("--path", run_options.motion,

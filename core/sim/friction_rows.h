@@ -19,10 +19,11 @@
 // step is always a solution of the bounded LCP.
 //
 // Units: rates in rad/s (m/s for sliders), forces in N·m (N). Sign: the joint's own (the rate and
-// force that increase q). Only dWorldStep's robot steps use these rows: the Newton solver takes
-// a bounded row at no extra cost (with guesses it ran HRP-2 on rough ground 1.19× slower, from
-// retakes), and QuickStep keeps its rows bounded. Not in Klamp't, whose friction rows are always
-// bounded.
+// force that increase q). Only robots dWorldStep itself solves use these rows (one touching a free
+// object, held by a world joint, dragged): the exact solver's direct solve (direct_solver.h) and
+// the Newton solver take a bounded row at no extra cost (with guesses the Newton solver ran HRP-2
+// on rough ground 1.19× slower, from retakes), and QuickStep keeps its rows bounded. Not in
+// Klamp't, whose friction rows are always bounded.
 #pragma once
 
 namespace lamina::core {

@@ -6,6 +6,7 @@
 
 #include <ode/ode.h>
 
+#include "core/sim/direct_solver.h"
 #include "core/sim/newton_solver.h"
 #include "core/sim/ode_contact_rows.h"
 #include "core/sim/ode_conversions.h"
@@ -40,6 +41,7 @@ struct ObjectIslands::Island {
   std::vector<size_t> members;        ///< this island's kept contacts
   std::vector<size_t> joint_members;  ///< its kept joints
   NewtonSolver solver;
+  DirectSolver direct;
   NewtonResult result;
 
   void Clear();
@@ -53,7 +55,8 @@ ObjectIslands::~ObjectIslands() = default;
 
 // ---- islands ------------------------------------------------------------------------------
 
-void ObjectIslands::Begin(int count) {
+void ObjectIslands::Begin(int count, bool exact) {
+  exact_ = exact;
   parent_.resize(count);
   std::iota(parent_.begin(), parent_.end(), 0);
   ode_.assign(count, 0);
@@ -165,7 +168,8 @@ void ObjectIslands::SolveIsland(dWorldID world, dJointGroupID group, double step
   ++statistics_.islands;
   const bool built = BuildIsland(world, step);
   const bool converged =
-      built && island.solver.Solve(island.bodies, island.rows, step, {}, &island.result);
+      built && (exact_ ? island.direct.Solve(island.bodies, island.rows, step, {}, &island.result)
+                       : island.solver.Solve(island.bodies, island.rows, step, {}, &island.result));
   if (built) statistics_.iterations += island.result.iterations;
   if (!converged) {
     ++statistics_.fallbacks;

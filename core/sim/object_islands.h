@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
-// The share of a step that Lamina's Newton solver takes (solver "newton"): every island of free
-// rigid objects, robots and their contacts.
+// The share of a step that Lamina's own solvers take: under solver "newton" every island of free
+// rigid objects, robots and their contacts (newton_solver.h); under the exact solver ("step")
+// every island of a robot and its contacts with the fixed world, solved directly
+// (direct_solver.h: dWorldStep's answer without its dense matrix of every row). Below, "the
+// solver" is whichever takes the island.
 //
 // - The contact joints of such an island are kept as dContacts instead of being created in ODE.
 //   After the solve (newton_solver.h) every body gets its constraint wrench M (v' − v_free) / h
@@ -44,8 +47,9 @@ class ObjectIslands {
   ObjectIslands(const ObjectIslands&) = delete;
   ObjectIslands& operator=(const ObjectIslands&) = delete;
 
-  /// Starts a step over world ids 0 … count-1.
-  void Begin(int count);
+  /// Starts a step over world ids 0 … count-1. `exact`: the islands are the exact solver's
+  /// (its robots: solved directly, direct_solver.h) rather than the Newton solver's.
+  void Begin(int count, bool exact = false);
   /// `id`'s island is ODE's (a body with a persistent ODE joint, dragged, a robot the Newton
   /// solver does not take).
   void MarkOde(int id) { ode_[Root(id)] = 1; }
@@ -87,6 +91,7 @@ class ObjectIslands {
   std::vector<int> local_;  ///< world id -> index in the island being solved, or -1
   std::unique_ptr<Island> island_;
   Statistics statistics_;
+  bool exact_ = false;
 };
 
 }  // namespace lamina::core

@@ -46,6 +46,37 @@ bool ProfileCholesky::Factor() {
   return true;
 }
 
+void ProfileCholesky::ForwardSolve(Eigen::VectorXd* b, int start,
+                                   std::vector<char>* nonzero) const {
+  Eigen::VectorXd& x = *b;
+  const int n = blocks();
+  nonzero->assign(static_cast<size_t>(n), 0);
+  for (int i = start; i < n; ++i) {
+    Vec6 y = x.segment<6>(6 * i);
+    bool any = !y.isZero(0.0);
+    for (int k = std::max(first_[i], start); k < i; ++k) {
+      if (!(*nonzero)[k]) continue;
+      y.noalias() -= block(i, k) * x.segment<6>(6 * k);
+      any = true;
+    }
+    if (!any) continue;
+    block(i, i).triangularView<Eigen::Lower>().solveInPlace(y);
+    x.segment<6>(6 * i) = y;
+    (*nonzero)[i] = 1;
+  }
+}
+
+void ProfileCholesky::BackSolve(Eigen::VectorXd* b) const {
+  Eigen::VectorXd& x = *b;
+  for (int i = blocks() - 1; i >= 0; --i) {  // Lᵀ x = y, block column by block column of Lᵀ
+    Vec6 y = x.segment<6>(6 * i);
+    block(i, i).transpose().triangularView<Eigen::Upper>().solveInPlace(y);
+    x.segment<6>(6 * i) = y;
+    for (int k = first_[i]; k < i; ++k)
+      x.segment<6>(6 * k).noalias() -= block(i, k).transpose() * y;
+  }
+}
+
 void ProfileCholesky::Solve(Eigen::VectorXd* b) const {
   Eigen::VectorXd& x = *b;
   const int n = blocks();

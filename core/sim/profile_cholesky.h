@@ -32,6 +32,12 @@ class ProfileCholesky {
   bool Factor();
   /// Solves L Lᵀ x = b in place with the factor (b: 6 entries per block).
   void Solve(Eigen::VectorXd* b) const;
+  /// The two halves of Solve: L y = b, then Lᵀ x = y, in place. ForwardSolve takes b's blocks
+  /// before `start` as zero and skips every block row that only meets zero blocks, marking in
+  /// `nonzero` (one flag per block) the blocks of y it computed (a column of a tree's matrix for a
+  /// leaf's row only fills the leaf's ancestors).
+  void ForwardSolve(Eigen::VectorXd* b, int start, std::vector<char>* nonzero) const;
+  void BackSolve(Eigen::VectorXd* b) const;
 
  private:
   std::vector<int> first_;

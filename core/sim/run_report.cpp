@@ -90,6 +90,7 @@ std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
        {{"islands", stats.newton_islands},
         {"fallbacks", stats.newton_fallbacks},
         {"iterations", stats.newton_iterations}}},
+      {"direct", {{"islands", stats.direct_islands}, {"fallbacks", stats.direct_fallbacks}}},
       {"mesh_pairs",
        {{"searches", simulator.ContactPairSearches()}, {"reused", simulator.ContactPairReuses()}}},
       {"sleeping_objects", simulator.SleepingObjectCount()}};

@@ -463,7 +463,10 @@ void Simulator::BuildConstraints(double step) {
                   s.friction_anchor_gain, s.friction_anchor_slip);
   const Vec3* anchor_velocities = anchors_.velocities().data();
   const bool newton = s.solver == SolverType::kNewton;
-  if (newton) PrepareObjectIslands();
+  // the exact solver solves its robots' islands directly (direct_solver.h)
+  const bool direct = s.solver == SolverType::kStep && direct_robots_ && robot_count() > 0;
+  islands_active_ = newton || direct;
+  if (islands_active_) PrepareObjectIslands(direct);
   for (const ContactPair& pair : contacts_.pairs()) {
     // no joint ties a sleeper to what cannot wake it (ODE would enable it through the joint)
     if (!s.sleeping || !sleep_.SleepsAgainstInert(bodies_, pair)) {
@@ -474,13 +477,18 @@ void Simulator::BuildConstraints(double step) {
   bodies_.ApplyForces();
   AddDragJoint(step);
   PrepareRobotsForStep(step);
-  if (newton) {
+  if (islands_active_) {
     const ObjectIslands::Statistics before = islands_.statistics();
     islands_.Solve(ode_world_.get(), contact_group_.get(), step);
     const ObjectIslands::Statistics& after = islands_.statistics();
-    statistics_.newton_islands += after.islands - before.islands;
-    statistics_.newton_fallbacks += after.fallbacks - before.fallbacks;
-    statistics_.newton_iterations += after.iterations - before.iterations;
+    if (newton) {
+      statistics_.newton_islands += after.islands - before.islands;
+      statistics_.newton_fallbacks += after.fallbacks - before.fallbacks;
+      statistics_.newton_iterations += after.iterations - before.iterations;
+    } else {
+      statistics_.direct_islands += after.islands - before.islands;
+      statistics_.direct_fallbacks += after.fallbacks - before.fallbacks;
+    }
   }
 }
 

@@ -305,6 +305,9 @@ class Simulator {
   /// bitwise the same contacts either way: core/contact/near_pair_cache.h). For tests and
   /// benchmarks.
   void SetReuseContactPairs(bool reuse) { contacts_.SetReusePairs(reuse); }
+  /// Whether the exact solver solves robot islands directly (on by default: direct_solver.h)
+  /// or leaves them to dWorldStep's own LCP, as other islands. For tests and comparisons.
+  void SetDirectRobotSolve(bool direct) { direct_robots_ = direct; }
   /// Hierarchy searches of mesh–mesh pairs, and queries answered from kept candidates.
   long long ContactPairSearches() const { return contacts_.PairCollections(); }
   long long ContactPairReuses() const { return contacts_.PairReuses(); }
@@ -415,13 +418,14 @@ class Simulator {
   void AddContactJoints(const ContactPair& pair, const Vec3* anchor_velocities, double step);
   /// solver "newton": the islands of free objects and robots, before the contact joints
   /// (object_islands.h)
-  void PrepareObjectIslands();
+  void PrepareObjectIslands(bool exact);
   /// The world id that stands for `id`'s ODE body in the islands (a merged link: the link that
   /// owns the body), or -1 when it does not move freely or sleeps
   int IslandBody(int id) const;
   /// Robot `robot` can go to the Newton solver this step: every body moving freely and awake,
   /// none dragged, no joint on its bodies but its own
   bool RobotForIslands(int robot);
+  bool RobotSolvedDirectly(int robot);
   void KeepRobotJoints(int robot);
 
   // the accuracy meter (simulator_meter.cpp)
@@ -513,7 +517,9 @@ class Simulator {
   FrictionAnchors anchors_;
   StepGuard guard_;
   FeedbackRecorder feedback_;
-  ObjectIslands islands_;  ///< solver "newton": this step's object islands
+  ObjectIslands islands_;  ///< solver "newton": this step's object islands; "step": its robots'
+  bool islands_active_ = false;  ///< islands_ takes part in this step
+  bool direct_robots_ = true;    ///< SetDirectRobotSolve
   SleepTracker sleep_;
   DragState drag_;
   std::map<int, KinematicTarget> targets_;  ///< by body id

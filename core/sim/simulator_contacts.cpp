@@ -63,7 +63,7 @@ void Simulator::AddContactJoints(const ContactPair& pair, const Vec3* anchor_vel
   // solver "newton": the joints of an object island are kept for its solve (object_islands.h)
   const int free_a = IslandBody(pair.a);
   const int free_b = IslandBody(pair.b);
-  const bool keep = world_.settings.solver == SolverType::kNewton && (free_a >= 0 || free_b >= 0) &&
+  const bool keep = islands_active_ && (free_a >= 0 || free_b >= 0) &&
                     islands_.Takes(free_a >= 0 ? free_a : free_b);
   // the joint in ODE, or null when kept
   auto make = [&](const dContact& joint) -> dJointID {
@@ -144,8 +144,8 @@ void Simulator::KeepRobotJoints(int robot) {
 // robots that cannot go to the Newton solver, bodies held by a persistent ODE joint (world
 // joints) and the dragged body stay with ODE's solver, and so does every island they are in; a
 // free body touching a sleeping one too (ODE would wake it through the joint)
-void Simulator::PrepareObjectIslands() {
-  islands_.Begin(bodies_.size());
+void Simulator::PrepareObjectIslands(bool exact) {
+  islands_.Begin(bodies_.size(), exact);
   for (int r = 0; r < robot_count(); ++r) {
     if (RobotForIslands(r)) {
       KeepRobotJoints(r);
@@ -160,7 +160,8 @@ void Simulator::PrepareObjectIslands() {
   for (int id = 0; id < bodies_.size(); ++id) {
     const BodyRecord& record = bodies_[id];
     if (record.body == nullptr || record.kind == WorldId::Kind::kRobotLink) continue;
-    if (!record.is_object() || dBodyGetNumJoints(record.body) > 0 ||
+    // (the exact solver keeps dWorldStep for every island with a free object: only robots gain)
+    if (exact || !record.is_object() || dBodyGetNumJoints(record.body) > 0 ||
         (drag_.active && drag_.body == id)) {
       islands_.MarkOde(id);
     }

@@ -154,7 +154,8 @@ void Simulator::PrepareRobotsForStep(double step) {
     }
     // (dWorldStep's pivoting is what the guesses save; the Newton solver takes bounds at no
     // extra cost, and QuickStep keeps its rows bounded)
-    const bool guess = world_.settings.solver == SolverType::kStep;
+    // (a robot the exact solver solves directly takes its bounded rows at no extra cost either)
+    const bool guess = world_.settings.solver == SolverType::kStep && !RobotSolvedDirectly(r);
     scratch.friction_holdoff.resize(scratch.dq.size(), 0);
     robot.SetJointFriction(controllers_[r].drivers(), scratch.q, scratch.dq, scratch.motors, guess,
                            scratch.friction_holdoff, &scratch.friction);
@@ -165,6 +166,17 @@ void Simulator::PrepareRobotsForStep(double step) {
     robot.MergeHoldingFriction(scratch.motors, scratch.friction);
     robot.ApplyLinkForces(scratch.forces);
   }
+}
+
+// true when robot r's island goes to the exact solver's direct solve this step (object_islands.h)
+bool Simulator::RobotSolvedDirectly(int robot) {
+  if (!islands_active_ || world_.settings.solver != SolverType::kStep) return false;
+  const int first = world_.RobotLinkId(robot, 0);
+  for (int l = 0; l < robots_[robot]->dof(); ++l) {
+    const int id = IslandBody(first + l);
+    if (id >= 0) return islands_.Takes(id);
+  }
+  return false;
 }
 
 // the servo rows whose force at the current rate is well inside their limit go unbounded, but

@@ -51,6 +51,8 @@ struct SimStatistics {
   long newton_islands = 0;     ///< object islands the Newton solver took
   long newton_fallbacks = 0;   ///< of those, handed back to ODE's solver (no convergence)
   long newton_iterations = 0;  ///< Newton steps in all
+  long direct_islands = 0;     ///< robot islands the exact solver solved directly (direct_solver.h)
+  long direct_fallbacks = 0;   ///< of those, handed back to dWorldStep (no convergence)
   StepStatus worst_status = StepStatus::kNormal;
   std::string error;  ///< what stopped the simulation (kError)
   SimTimeSplit time_split;

@@ -68,6 +68,7 @@ Gap LockStep(const std::string& world_file, double step, int steps, core::SimSta
     }
   }
   core::Simulator exact(loaded.world, {core::SolverType::kStep, 20});
+  exact.SetDirectRobotSolve(false);  // dWorldStep's own LCP for robots too
   core::Simulator fast(loaded.world, {core::SolverType::kNewton, 20});
   if (setup) {
     setup(&exact);
@@ -246,6 +247,7 @@ TEST(NewtonIslandsTest, SlidersStepAsDWorldStepDoesAndDraggedRobotsStayWithIt) {
   core::WorldDesc world;
   world.robots.push_back(cartpole->robot);
   core::Simulator exact(world, {core::SolverType::kStep, 20});
+  exact.SetDirectRobotSolve(false);  // dWorldStep's own LCP
   core::Simulator fast(world, {core::SolverType::kNewton, 20});
   const int cart = world.RobotLinkId(0, 0);
   Gap before_stop, after;

@@ -1,0 +1,335 @@
+// SPDX-License-Identifier: MIT
+#include "core/sim/direct_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Cholesky>
+
+namespace lamina::core {
+
+namespace {
+
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+
+bool Unbounded(const NewtonRow& row) {
+  return row.normal < 0 && row.lo == -kInf && row.hi == kInf;
+}
+
+double RowDot(const NewtonRow& row, const Eigen::VectorXd& v) {
+  double sum = 0.0;
+  if (row.a >= 0) sum += row.ja.dot(v.segment<6>(6 * row.a));
+  if (row.b >= 0) sum += row.jb.dot(v.segment<6>(6 * row.b));
+  return sum;
+}
+
+// w J_iᵀ J_i into the lower triangle of the blocks of bodies a and b
+void AddRow(const NewtonRow& row, double w, ProfileCholesky* k) {
+  if (row.a >= 0) k->block(row.a, row.a).noalias() += w * row.ja * row.ja.transpose();
+  if (row.b >= 0) k->block(row.b, row.b).noalias() += w * row.jb * row.jb.transpose();
+  if (row.a >= 0 && row.b >= 0) {
+    if (row.b > row.a) {
+      k->block(row.b, row.a).noalias() += w * row.jb * row.ja.transpose();
+    } else {
+      k->block(row.a, row.b).noalias() += w * row.ja * row.jb.transpose();
+    }
+  }
+}
+
+}  // namespace
+
+// K = M + h Σ_U J_iᵀ J_i / cfm_i in the profile of the unbounded rows, factored
+bool DirectSolver::FactorBodies(const std::vector<NewtonBody>& bodies,
+                                const std::vector<NewtonRow>& rows) {
+  lowest_body_.resize(bodies.size());
+  for (size_t k = 0; k < bodies.size(); ++k) lowest_body_[k] = static_cast<int>(k);
+  for (const NewtonRow& row : rows) {
+    if (!Unbounded(row) || row.a < 0 || row.b < 0) continue;
+    const int high = std::max(row.a, row.b), low = std::min(row.a, row.b);
+    lowest_body_[high] = std::min(lowest_body_[high], low);
+  }
+  cholesky_.Reset(lowest_body_);
+  for (size_t k = 0; k < bodies.size(); ++k) {
+    ProfileCholesky::Block& diagonal = cholesky_.block(static_cast<int>(k), static_cast<int>(k));
+    diagonal.topLeftCorner<3, 3>().diagonal().setConstant(bodies[k].mass);
+    diagonal.bottomRightCorner<3, 3>() = bodies[k].inertia;
+  }
+  for (const NewtonRow& row : rows) {
+    if (Unbounded(row)) AddRow(row, step_ / row.cfm, &cholesky_);
+  }
+  return cholesky_.Factor();
+}
+
+// v₀ = K⁻¹ (M v_free + h Σ_U J_iᵀ c_i / cfm_i)
+void DirectSolver::FreeVelocity(const std::vector<NewtonBody>& bodies,
+                                const std::vector<NewtonRow>& rows) {
+  v0_.resize(6 * static_cast<Eigen::Index>(bodies.size()));
+  for (size_t k = 0; k < bodies.size(); ++k) {
+    const NewtonBody& body = bodies[k];
+    v0_.segment<3>(6 * k) = body.mass * body.free_velocity.head<3>();
+    v0_.segment<3>(6 * k + 3) = body.inertia * body.free_velocity.tail<3>();
+  }
+  for (const NewtonRow& row : rows) {
+    if (!Unbounded(row)) continue;
+    const double w = step_ * row.rhs / row.cfm;
+    if (row.a >= 0) v0_.segment<6>(6 * row.a) += w * row.ja;
+    if (row.b >= 0) v0_.segment<6>(6 * row.b) += w * row.jb;
+  }
+  cholesky_.Solve(&v0_);
+}
+
+// Z = L⁻¹ J_Bᵀ (K = L Lᵀ; a column only fills the blocks of its bodies and their ancestors),
+// G = h Zᵀ Z + diag(cfm_B) over the blocks both columns fill, r = c_B − J_B v₀
+void DirectSolver::BoundedSystem(const std::vector<NewtonRow>& rows) {
+  const Eigen::Index n = static_cast<Eigen::Index>(bounded_.size());
+  z_.setZero(v0_.size(), n);
+  filled_.resize(static_cast<size_t>(n));
+  Eigen::VectorXd column(v0_.size());
+  std::vector<char> nonzero;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const NewtonRow& row = rows[bounded_[k]];
+    column.setZero();
+    if (row.a >= 0) column.segment<6>(6 * row.a) += row.ja;
+    if (row.b >= 0) column.segment<6>(6 * row.b) += row.jb;
+    const int start = row.a < 0 ? row.b : (row.b < 0 ? row.a : std::min(row.a, row.b));
+    cholesky_.ForwardSolve(&column, start, &nonzero);
+    filled_[k].clear();
+    for (int block = 0; block < static_cast<int>(nonzero.size()); ++block) {
+      if (nonzero[block]) filled_[k].push_back(block);
+    }
+    z_.col(k) = column;
+  }
+  g_.resize(n, n);
+  r_.resize(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const NewtonRow& row = rows[bounded_[i]];
+    for (Eigen::Index j = 0; j <= i; ++j) {
+      double dot = 0.0;  // over the blocks both fill (sorted lists)
+      auto p = filled_[i].begin(), q = filled_[j].begin();
+      while (p != filled_[i].end() && q != filled_[j].end()) {
+        if (*p < *q) {
+          ++p;
+        } else if (*q < *p) {
+          ++q;
+        } else {
+          dot += z_.col(i).segment<6>(6 * *p).dot(z_.col(j).segment<6>(6 * *p));
+          ++p;
+          ++q;
+        }
+      }
+      g_(i, j) = step_ * dot;
+      g_(j, i) = g_(i, j);
+    }
+    g_(i, i) += row.cfm;
+    r_(i) = row.rhs - RowDot(row, v0_);
+  }
+}
+
+// the bounds of the bounded rows, friction rows from their normal row's current force
+void DirectSolver::SetBounds(const std::vector<NewtonRow>& rows) {
+  for (size_t k = 0; k < bounded_.size(); ++k) {
+    const NewtonRow& row = rows[bounded_[k]];
+    double scale = 1.0;
+    if (row.normal >= 0) {
+      const auto at = std::find(bounded_.begin(), bounded_.end(), row.normal);
+      scale = at == bounded_.end() ? 0.0 : std::abs(lambda_(at - bounded_.begin()));
+    }
+    lo_(k) = row.lo * scale;
+    hi_(k) = row.hi * scale;
+  }
+}
+
+// target_F = G_FF⁻¹ (r_F − G_FW λ_W) for the free rows F (target_W = λ_W)
+bool DirectSolver::SolveFree(Eigen::VectorXd* target) {
+  std::vector<Eigen::Index> free;
+  for (size_t k = 0; k < state_.size(); ++k) {
+    if (state_[k] == 0) free.push_back(static_cast<Eigen::Index>(k));
+  }
+  *target = lambda_;
+  if (free.empty()) return true;
+  const Eigen::Index f = static_cast<Eigen::Index>(free.size());
+  Eigen::MatrixXd gff(f, f);
+  Eigen::VectorXd rhs(f);
+  for (Eigen::Index i = 0; i < f; ++i) {
+    double sum = r_(free[i]);
+    for (size_t k = 0; k < state_.size(); ++k) {
+      if (state_[k] != 0) sum -= g_(free[i], static_cast<Eigen::Index>(k)) * lambda_(k);
+    }
+    rhs(i) = sum;
+    for (Eigen::Index j = 0; j < f; ++j) gff(i, j) = g_(free[i], free[j]);
+  }
+  Eigen::LLT<Eigen::MatrixXd> llt(gff);
+  if (llt.info() != Eigen::Success) return false;
+  const Eigen::VectorXd solution = llt.solve(rhs);
+  if (!solution.allFinite()) return false;
+  for (Eigen::Index i = 0; i < f; ++i) (*target)(free[i]) = solution(i);
+  return true;
+}
+
+// true when no row at a bound pulls inwards (its multiplier has the right sign); otherwise frees
+// every row that does, counting them in `released`
+bool DirectSolver::Optimal(const Eigen::VectorXd& gradient, int* released) {
+  const double tolerance = 1e-11 * std::max(1.0, r_.cwiseAbs().maxCoeff());
+  *released = 0;
+  for (size_t k = 0; k < state_.size(); ++k) {
+    if (state_[k] == 0 || lo_(k) == hi_(k)) continue;
+    const bool inward = state_[k] < 0 ? gradient(k) < -tolerance : gradient(k) > tolerance;
+    if (!inward) continue;
+    state_[k] = 0;
+    ++*released;
+  }
+  return *released == 0;
+}
+
+// the minimum of ½ λᵀ G λ − rᵀ λ within [lo, hi] from a feasible λ: move towards the minimum
+// over the free rows until a row reaches a bound (it joins the bounds), and at that minimum
+// free the bound rows whose multipliers pull inwards; f falls at every move (G > 0)
+bool DirectSolver::BoxSolve(int* budget) {
+  Eigen::VectorXd target;
+  while (*budget > 0) {
+    if (!SolveFree(&target)) return false;
+    double alpha = 1.0;
+    Eigen::Index blocking = -1;
+    signed char side = 0;
+    for (Eigen::Index k = 0; k < lambda_.size(); ++k) {
+      if (state_[k] != 0) continue;
+      const double d = target(k) - lambda_(k);
+      if (target(k) < lo_(k) && d < 0.0 && (lo_(k) - lambda_(k)) / d < alpha) {
+        alpha = std::max(0.0, (lo_(k) - lambda_(k)) / d);
+        blocking = k;
+        side = -1;
+      } else if (target(k) > hi_(k) && d > 0.0 && (hi_(k) - lambda_(k)) / d < alpha) {
+        alpha = std::max(0.0, (hi_(k) - lambda_(k)) / d);
+        blocking = k;
+        side = 1;
+      }
+    }
+    for (Eigen::Index k = 0; k < lambda_.size(); ++k) {
+      if (state_[k] == 0) lambda_(k) += alpha * (target(k) - lambda_(k));
+    }
+    if (blocking >= 0) {
+      lambda_(blocking) = side < 0 ? lo_(blocking) : hi_(blocking);
+      state_[blocking] = side;
+      --*budget;
+      continue;
+    }
+    int released = 0;
+    if (Optimal(g_ * lambda_ - r_, &released)) return true;
+    --*budget;
+  }
+  return false;
+}
+
+// One step of iterative refinement with the rows where they are: the momentum residual
+// r_v = M (v_free − v') + h Σ_U J_iᵀ (c_i − J_i v')/cfm_i + h J_Bᵀ λ and the free bounded rows' law
+// residual r_F = c_F − J_F v' − cfm_F λ_F, corrected through the same factors
+// (δv = K⁻¹ (r_v + h J_Fᵀ δλ_F), G_FF δλ_F = r_F − J_F K⁻¹ r_v). K carries h/cfm of the hard
+// rows (1e6 × the masses), so a single solve leaves 1e-9 m/s where dWorldStep's dual is exact to
+// the last bits; one pass brings the two together.
+void DirectSolver::Refine(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
+                          Eigen::VectorXd* velocity) {
+  Eigen::VectorXd& v = *velocity;
+  Eigen::VectorXd residual(v.size());
+  for (size_t k = 0; k < bodies.size(); ++k) {
+    const NewtonBody& body = bodies[k];
+    const Vec6 change = body.free_velocity - v.segment<6>(6 * k);
+    residual.segment<3>(6 * k) = body.mass * change.head<3>();
+    residual.segment<3>(6 * k + 3) = body.inertia * change.tail<3>();
+  }
+  for (size_t i = 0; i < rows.size(); ++i) {
+    if (!Unbounded(rows[i])) continue;
+    const double impulse = step_ * (rows[i].rhs - RowDot(rows[i], v)) / rows[i].cfm;
+    if (rows[i].a >= 0) residual.segment<6>(6 * rows[i].a) += impulse * rows[i].ja;
+    if (rows[i].b >= 0) residual.segment<6>(6 * rows[i].b) += impulse * rows[i].jb;
+  }
+  for (size_t k = 0; k < bounded_.size(); ++k) {
+    const NewtonRow& row = rows[bounded_[k]];
+    const double impulse = step_ * lambda_(static_cast<Eigen::Index>(k));
+    if (row.a >= 0) residual.segment<6>(6 * row.a) += impulse * row.ja;
+    if (row.b >= 0) residual.segment<6>(6 * row.b) += impulse * row.jb;
+  }
+  cholesky_.Solve(&residual);  // δv₀ = K⁻¹ r_v
+  v += residual;
+  std::vector<Eigen::Index> free;
+  for (size_t k = 0; k < state_.size(); ++k) {
+    if (state_[k] == 0) free.push_back(static_cast<Eigen::Index>(k));
+  }
+  if (free.empty()) return;
+  const Eigen::Index f = static_cast<Eigen::Index>(free.size());
+  Eigen::MatrixXd gff(f, f);
+  Eigen::VectorXd rhs(f);
+  for (Eigen::Index i = 0; i < f; ++i) {
+    const NewtonRow& row = rows[bounded_[free[i]]];
+    rhs(i) = row.rhs - RowDot(row, v) - row.cfm * lambda_(free[i]);  // (v: v' + δv₀)
+    for (Eigen::Index j = 0; j < f; ++j) gff(i, j) = g_(free[i], free[j]);
+  }
+  Eigen::LLT<Eigen::MatrixXd> llt(gff);
+  if (llt.info() != Eigen::Success) return;
+  const Eigen::VectorXd correction = llt.solve(rhs);
+  if (!correction.allFinite()) return;
+  Eigen::VectorXd push = Eigen::VectorXd::Zero(v.size());
+  for (Eigen::Index i = 0; i < f; ++i) {
+    lambda_(free[i]) += correction(i);
+    push += step_ * correction(i) * z_.col(free[i]);
+  }
+  cholesky_.BackSolve(&push);
+  v += push;
+}
+
+bool DirectSolver::Solve(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
+                         double step, const DirectOptions& options, NewtonResult* result) {
+  step_ = step;
+  result->converged = false;
+  result->iterations = 0;
+  result->rounds = 0;
+  if (!FactorBodies(bodies, rows)) return false;
+  FreeVelocity(bodies, rows);
+  bounded_.clear();
+  for (size_t i = 0; i < rows.size(); ++i) {
+    if (!Unbounded(rows[i])) bounded_.push_back(static_cast<int>(i));
+  }
+  BoundedSystem(rows);
+  const Eigen::Index n = static_cast<Eigen::Index>(bounded_.size());
+  lambda_.setZero(n);
+  lo_.resize(n);
+  hi_.resize(n);
+  state_.assign(static_cast<size_t>(n), 0);
+  int budget = options.max_pivots;
+  bool settled = n == 0;
+  while (!settled && result->rounds < options.max_rounds) {
+    ++result->rounds;
+    SetBounds(rows);
+    for (Eigen::Index k = 0; k < n; ++k) {  // λ into the bounds; the rows at a bound stay there
+      lambda_(k) = std::clamp(lambda_(k), lo_(k), hi_(k));
+      state_[k] = lambda_(k) <= lo_(k) ? -1 : (lambda_(k) >= hi_(k) ? 1 : 0);
+    }
+    if (!BoxSolve(&budget)) break;
+    const Eigen::VectorXd before_lo = lo_, before_hi = hi_;
+    SetBounds(rows);
+    settled = true;
+    for (Eigen::Index k = 0; k < n && settled; ++k) {
+      const double change = std::max(std::abs(lo_(k) - before_lo(k)), std::abs(hi_(k) - before_hi(k)));
+      settled = change <= options.bound_tolerance * std::max(hi_(k) - lo_(k), 1e-12);
+    }
+  }
+  result->iterations = options.max_pivots - budget;
+  if (!settled) return false;
+  Eigen::VectorXd velocity = v0_;
+  if (n > 0) {  // v₀ + h K⁻¹ J_Bᵀ λ = v₀ + h L⁻ᵀ Z λ
+    Eigen::VectorXd push = step_ * (z_ * lambda_);
+    cholesky_.BackSolve(&push);
+    velocity += push;
+  }
+  Refine(bodies, rows, &velocity);
+  result->velocity.resize(bodies.size());
+  for (size_t k = 0; k < bodies.size(); ++k) result->velocity[k] = velocity.segment<6>(6 * k);
+  result->force.resize(rows.size());
+  for (size_t i = 0; i < rows.size(); ++i) {
+    result->force[i] = (rows[i].rhs - RowDot(rows[i], velocity)) / rows[i].cfm;
+  }
+  for (Eigen::Index k = 0; k < n; ++k) result->force[bounded_[k]] = lambda_(k);
+  result->converged = velocity.allFinite();
+  return result->converged;
+}
+
+}  // namespace lamina::core
