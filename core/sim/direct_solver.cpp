@@ -308,7 +308,8 @@ bool DirectSolver::Solve(const std::vector<NewtonBody>& bodies, const std::vecto
     SetBounds(rows);
     settled = true;
     for (Eigen::Index k = 0; k < n && settled; ++k) {
-      const double change = std::max(std::abs(lo_(k) - before_lo(k)), std::abs(hi_(k) - before_hi(k)));
+      const double change =
+          std::max(std::abs(lo_(k) - before_lo(k)), std::abs(hi_(k) - before_hi(k)));
       settled = change <= options.bound_tolerance * std::max(hi_(k) - lo_(k), 1e-12);
     }
   }

@@ -10,8 +10,8 @@
 // (λ = (c − J v)/cfm whatever v) join the bodies' matrix instead,
 //   K = M + h Σ_U J_iᵀ J_i / cfm_i,
 // factored in its block profile (profile_cholesky.h: a tree with every link before its parent
-// stays narrow), and the velocity with only those rows is v₀ = K⁻¹ (M v_free + h Σ_U J_iᵀ c_i/cfm_i).
-// With the bounded rows B, v' = v₀ + h K⁻¹ J_Bᵀ λ_B, and their law is the box LCP of
+// stays narrow), and the velocity with only those rows is v₀ = K⁻¹ (M v_free + h Σ_U J_iᵀ
+// c_i/cfm_i). With the bounded rows B, v' = v₀ + h K⁻¹ J_Bᵀ λ_B, and their law is the box LCP of
 //   G = h J_B K⁻¹ J_Bᵀ + diag(cfm_B) = h Zᵀ Z + diag(cfm_B) (Z = L⁻¹ J_Bᵀ, K = L Lᵀ),
 //   r = c_B − J_B v₀:
 // λ minimizes ½ λᵀ G λ − rᵀ λ within lo <= λ <= hi (G is positive definite: one answer for fixed
@@ -36,8 +36,8 @@
 namespace lamina::core {
 
 struct DirectOptions {
-  int max_pivots = 400;   ///< active-set changes in all rounds together
-  int max_rounds = 500;   ///< rounds of friction bounds
+  int max_pivots = 400;           ///< active-set changes in all rounds together
+  int max_rounds = 500;           ///< rounds of friction bounds
   double bound_tolerance = 1e-9;  ///< relative change of a friction bound that needs a round
 };
 
@@ -65,7 +65,7 @@ class DirectSolver {
   std::vector<int> lowest_body_;
   std::vector<int> bounded_;  ///< indices of the bounded rows
   Eigen::VectorXd v0_;
-  Eigen::MatrixXd z_;  ///< L⁻¹ J_iᵀ per bounded row (columns; K = L Lᵀ)
+  Eigen::MatrixXd z_;                     ///< L⁻¹ J_iᵀ per bounded row (columns; K = L Lᵀ)
   std::vector<std::vector<int>> filled_;  ///< per column of z_, the blocks it fills
   Eigen::MatrixXd g_;
   Eigen::VectorXd r_, lambda_, lo_, hi_;

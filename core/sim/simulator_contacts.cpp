@@ -125,6 +125,12 @@ bool Simulator::RobotForIslands(int robot) {
   return true;
 }
 
+int Simulator::OwnBodies(int robot) const {
+  int bodies = 0;
+  for (int l = 0; l < robots_[robot]->dof(); ++l) bodies += robots_[robot]->link(l).owns_body;
+  return bodies;
+}
+
 // every link before its parent, so that the island's matrix stays narrow (object_islands.h)
 void Simulator::KeepRobotJoints(int robot) {
   const OdeRobot& sim_robot = *robots_[robot];
@@ -147,7 +153,7 @@ void Simulator::KeepRobotJoints(int robot) {
 void Simulator::PrepareObjectIslands(bool exact) {
   islands_.Begin(bodies_.size(), exact);
   for (int r = 0; r < robot_count(); ++r) {
-    if (RobotForIslands(r)) {
+    if (RobotForIslands(r) && (!exact || OwnBodies(r) >= direct_min_bodies_)) {
       KeepRobotJoints(r);
       continue;
     }

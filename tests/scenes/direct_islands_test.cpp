@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "core/sim/simulator.h"
 #include "core/control/send_motion.h"
 #include "core/io/trajectory_file.h"
+#include "core/sim/simulator.h"
 #include "tests/common/test_support.h"
 
 namespace lamina {
@@ -23,9 +23,9 @@ double LinkGap(core::Simulator& a, core::Simulator& b) {
   for (int r = 0; r < a.robot_count(); ++r) {
     for (int l = 0; l < a.world().robots[r].dof(); ++l) {
       const int id = a.world().RobotLinkId(r, l);
-      gap = std::max(gap, (a.body(id).GetTransform().translation() -
-                           b.body(id).GetTransform().translation())
-                              .norm());
+      gap = std::max(
+          gap, (a.body(id).GetTransform().translation() - b.body(id).GetTransform().translation())
+                   .norm());
     }
   }
   return gap;
@@ -38,6 +38,7 @@ struct Runs {
 
 Runs CompareRuns(const core::WorldDesc& world, double duration, const std::string& motion = "") {
   core::Simulator direct(world, {core::SolverType::kStep, 20});
+  direct.SetDirectRobotMinimumBodies(1);  // small robots too (dWorldStep is faster on them)
   core::Simulator ode(world, {core::SolverType::kStep, 20});
   ode.SetDirectRobotSolve(false);
   if (!motion.empty()) {
@@ -87,6 +88,7 @@ TEST(DirectIslandsTest, CartPushedIntoItsSliderStopRunsAsWithDWorldStep) {
   core::WorldDesc world;
   world.robots.push_back(cartpole->robot);
   core::Simulator direct(world, {core::SolverType::kStep, 20});
+  direct.SetDirectRobotMinimumBodies(1);
   core::Simulator ode(world, {core::SolverType::kStep, 20});
   ode.SetDirectRobotSolve(false);
   const int cart = world.RobotLinkId(0, 0);
@@ -96,13 +98,23 @@ TEST(DirectIslandsTest, CartPushedIntoItsSliderStopRunsAsWithDWorldStep) {
       simulator->SetAppliedWrench(cart, core::Vec3(-20.0, 0.0, 0.0), core::Vec3::Zero());
       simulator->Simulate(0.001);
     }
-    (i < 1340 ? before_stop : after) = std::max(i < 1340 ? before_stop : after, LinkGap(direct, ode));
+    (i < 1340 ? before_stop : after) =
+        std::max(i < 1340 ? before_stop : after, LinkGap(direct, ode));
   }
   std::printf("cart-pole: %g m to the stop, %g m after\n", before_stop, after);
   EXPECT_LE(before_stop, 1e-11);  // 4e-13 m measured
   EXPECT_LE(after, 1e-8);         // 7e-10 m measured
   EXPECT_NEAR(direct.GetRobotConfig(0)[0], world.robots[0].links[0].q_min, 1e-3);
   EXPECT_GE(direct.statistics().direct_islands, 2000);
+}
+
+TEST(DirectIslandsTest, OnlyRobotsOfTwelveBodiesOrMoreAreSolvedDirectly) {
+  core::Simulator arm(test::LoadShippedWorld("examples/tx90l_milestones.xml"));
+  arm.Simulate(0.05);
+  EXPECT_EQ(arm.statistics().direct_islands, 0);  // 6 bodies: dWorldStep
+  core::Simulator humanoid(test::LoadShippedWorld("klampt/hrp2_plane.xml"));
+  humanoid.Simulate(0.05);
+  EXPECT_EQ(humanoid.statistics().direct_islands, 50);
 }
 
 }  // namespace

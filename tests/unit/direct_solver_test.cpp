@@ -194,9 +194,10 @@ TEST(DirectSolverTest, RandomIslandsGiveTheNewtonSolversAnswer) {
     // (both obey it, checked above and in newton_solver_test); otherwise the two agree
     if (gap > 1e-8) ++other_answer;
   }
-  std::printf("%d of 200 did not settle; compared %d with the Newton solver, %d another answer; "
-              "%d active-set changes in all\n",
-              failed, compared, other_answer, pivots);
+  std::printf(
+      "%d of 200 did not settle; compared %d with the Newton solver, %d another answer; "
+      "%d active-set changes in all\n",
+      failed, compared, other_answer, pivots);
   // cold starts with every body sliding: the friction bounds follow the normal forces slowly
   EXPECT_LE(failed, 20);
   EXPECT_GE(compared, 150);
