@@ -39,6 +39,29 @@ struct SolverCase {
   core::SolverSettings settings;
 };
 
+const SolverCase kRobotSolvers[] = {{"step", {core::SolverType::kStep, 20}},
+                                    {"newton", {core::SolverType::kNewton, 20}},
+                                    {"quick20", {core::SolverType::kQuickStep, 20}}};
+
+// true (and the benchmark failed) when the run ended in error
+bool RunFailed(benchmark::State& state, const core::Simulator& simulator) {
+  if (simulator.statistics().worst_status != core::StepStatus::kError) return false;
+  Fail(state, "simulation failed: " + simulator.statistics().error);
+  return true;
+}
+
+// one benchmark "Robot/<name>/<solver>" per solver, each running `run(state, settings)`
+template <typename Run>
+void RegisterEachSolver(const std::string& name, const Run& run) {
+  for (const SolverCase& solver : kRobotSolvers) {
+    const core::SolverSettings settings = solver.settings;
+    benchmark::RegisterBenchmark(("Robot/" + name + "/" + solver.name).c_str(),
+                                 [run, settings](benchmark::State& state) { run(state, settings); })
+        ->Unit(benchmark::kMillisecond)
+        ->Iterations(1);
+  }
+}
+
 void RunStanding(benchmark::State& state, const core::WorldDesc& world,
                  const core::SolverSettings& solver) {
   LaminaTotals totals;
@@ -53,10 +76,7 @@ void RunStanding(benchmark::State& state, const core::WorldDesc& world,
     state.ResumeTiming();
     simulator->Simulate(kMeasured);
     state.PauseTiming();
-    if (simulator->statistics().worst_status == core::StepStatus::kError) {
-      Fail(state, "simulation failed: " + simulator->statistics().error);
-      break;
-    }
+    if (RunFailed(state, *simulator)) break;
     const double drift = (simulator->GetRobotConfig(0).head<3>() - settled).norm();
     worst_drift = std::max(worst_drift, drift);
     totals.Add(kSettle + kMeasured, simulator->statistics());
@@ -76,23 +96,14 @@ void RegisterStanding(const std::string& file) {
   auto world = std::make_shared<core::WorldDesc>();
   std::string errors;
   const bool loaded = LoadWorld(WorldsPath(file + ".xml"), world.get(), &errors);
-  const SolverCase solvers[] = {{"step", {core::SolverType::kStep, 20}},
-                                {"newton", {core::SolverType::kNewton, 20}},
-                                {"quick20", {core::SolverType::kQuickStep, 20}}};
-  for (const SolverCase& solver : solvers) {
-    const std::string name = "Robot/" + world_name + "/" + solver.name;
-    const core::SolverSettings settings = solver.settings;
-    benchmark::RegisterBenchmark(name.c_str(),
-                                 [world, settings, loaded, errors](benchmark::State& state) {
-                                   if (!loaded) {
-                                     Fail(state, "cannot load the world: " + errors);
-                                     return;
-                                   }
-                                   RunStanding(state, *world, settings);
-                                 })
-        ->Unit(benchmark::kMillisecond)
-        ->Iterations(1);
-  }
+  RegisterEachSolver(world_name, [world, loaded, errors](benchmark::State& state,
+                                                         const core::SolverSettings& settings) {
+    if (!loaded) {
+      Fail(state, "cannot load the world: " + errors);
+      return;
+    }
+    RunStanding(state, *world, settings);
+  });
 }
 
 constexpr double kFollowed = 6.0;  // s: the reaches end after about 5 s
@@ -119,10 +130,7 @@ void RunFollowing(benchmark::State& state, const core::WorldDesc& world,
     state.ResumeTiming();
     simulator->Simulate(kFollowed);
     state.PauseTiming();
-    if (simulator->statistics().worst_status == core::StepStatus::kError) {
-      Fail(state, "simulation failed: " + simulator->statistics().error);
-      break;
-    }
+    if (RunFailed(state, *simulator)) break;
     const core::VecX& last = motion.configs.back();
     worst_error =
         std::max(worst_error, (simulator->GetRobotConfig(0) - last).cwiseAbs().maxCoeff());
@@ -145,24 +153,15 @@ void RegisterFollowing(const std::string& file, const std::string& motion_file) 
   core::Diagnostics diagnostics;
   auto motion = std::make_shared<std::optional<core::MilestoneSequence>>(
       core::ReadMotionFile(WorldsPath(motion_file), diagnostics));
-  const SolverCase solvers[] = {{"step", {core::SolverType::kStep, 20}},
-                                {"newton", {core::SolverType::kNewton, 20}},
-                                {"quick20", {core::SolverType::kQuickStep, 20}}};
-  for (const SolverCase& solver : solvers) {
-    const std::string name = "Robot/" + world_name + "/" + solver.name;
-    const core::SolverSettings settings = solver.settings;
-    benchmark::RegisterBenchmark(
-        name.c_str(),
-        [world, motion, settings, loaded, errors](benchmark::State& state) {
-          if (!loaded || !*motion) {
-            Fail(state, "cannot load the world or the milestones: " + errors);
-            return;
-          }
-          RunFollowing(state, *world, **motion, settings);
-        })
-        ->Unit(benchmark::kMillisecond)
-        ->Iterations(1);
-  }
+  RegisterEachSolver(world_name,
+                     [world, motion, loaded, errors](benchmark::State& state,
+                                                     const core::SolverSettings& settings) {
+                       if (!loaded || !*motion) {
+                         Fail(state, "cannot load the world or the milestones: " + errors);
+                         return;
+                       }
+                       RunFollowing(state, *world, **motion, settings);
+                     });
 }
 
 }  // namespace

@@ -7,56 +7,18 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/common/island_rows.h"
+
 namespace lamina::core {
 namespace {
 
-constexpr double kG = 9.8;
+constexpr double kG = test::kIslandGravity;
+using test::AddContact;
+using test::AddFace;
+using test::NormalSum;
 
-NewtonBody Body(double mass, const Vec6& start, double step) {
-  NewtonBody body;
-  body.mass = mass;
-  body.inertia = Mat3::Identity() * mass * 0.01 / 6.0;  // a 10 cm cube
-  body.start = start;
-  body.free_velocity = start;
-  body.free_velocity(2) -= kG * step;
-  return body;
-}
-
-// a normal row at `point` (relative to the centre of a) pushing a up along z against b (or the
-// ground), then its two friction rows with coefficient mu
-void AddContact(std::vector<NewtonRow>* rows, int a, int b, const Vec3& point_a,
-                const Vec3& point_b, double mu, double cfm = 1e-9) {
-  const Vec3 axes[3] = {Vec3::UnitZ(), Vec3::UnitX(), Vec3::UnitY()};
-  const int normal = static_cast<int>(rows->size());
-  for (int k = 0; k < 3; ++k) {
-    NewtonRow row;
-    row.a = a;
-    row.b = b;
-    row.ja << axes[k], point_a.cross(axes[k]);
-    row.jb << -axes[k], -point_b.cross(axes[k]);
-    row.cfm = k == 0 ? cfm : 1e-6;
-    if (k > 0) {
-      row.lo = -mu;
-      row.hi = mu;
-      row.normal = normal;
-    }
-    rows->push_back(row);
-  }
-}
-
-// the four corners of a 10 cm face under a (at -5 cm) over b's top face (at +5 cm)
-void AddFace(std::vector<NewtonRow>* rows, int a, int b, double mu) {
-  for (double x : {-0.05, 0.05}) {
-    for (double y : {-0.05, 0.05}) AddContact(rows, a, b, {x, y, -0.05}, {x, y, 0.05}, mu);
-  }
-}
-
-double NormalSum(const std::vector<NewtonRow>& rows, const NewtonResult& result, int a, int b) {
-  double sum = 0.0;
-  for (size_t i = 0; i < rows.size(); ++i) {
-    if (rows[i].normal < 0 && rows[i].a == a && rows[i].b == b) sum += result.force[i];
-  }
-  return sum;
+core::NewtonBody Body(double mass, const Vec6& start, double step) {
+  return test::IslandBody(mass, start, step);
 }
 
 TEST(NewtonSolverTest, ABoxOnTheGroundCarriesItsWeightAndStops) {
