@@ -64,8 +64,13 @@ void ContactSet::SetReusePairs(bool reuse) {
   }
 }
 
-NearPairCache* ContactSet::PairCacheFor(int first, int second) {
-  if (!reuse_pairs_) return nullptr;
+NearPairCache* ContactSet::PairCacheFor(int first, int second, const NarrowBody& body_first,
+                                        const NarrowBody& body_second) {
+  using Kind = CollisionGeometry::Kind;
+  if (!reuse_pairs_ || body_first.geometry->kind() != Kind::kMesh ||
+      body_second.geometry->kind() != Kind::kMesh) {
+    return nullptr;
+  }
   KeptPairs& kept = kept_pairs_[{first, second}];
   kept.detection = detection_;
   return &kept.cache;

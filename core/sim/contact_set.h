@@ -96,8 +96,10 @@ class ContactSet {
     NearPairCache cache;
     unsigned long long detection = 0;  ///< the last Detect that used it
   };
-  /// The kept candidates of the pair (first, second), or null when pairs are not reused.
-  NearPairCache* PairCacheFor(int first, int second);
+  /// The kept candidates of the pair (first, second), or null when pairs are not reused or
+  /// either body is not a mesh (only mesh–mesh contact searches triangle pairs).
+  NearPairCache* PairCacheFor(int first, int second, const NarrowBody& body_first,
+                              const NarrowBody& body_second);
   /// Forgets the candidates of pairs this Detect did not meet (they no longer touch).
   void SweepPairCaches();
 
@@ -124,8 +126,9 @@ void ContactSet::Detect(const std::vector<int>& ids, const Bounds& bounds_of,
   ContactPair pair;
   ++detection_;
   for (const auto& [first, second] : broad_.candidates()) {
-    if (FindPairContacts(first, second, narrow_of(first), narrow_of(second), max_contacts,
-                         &scratch_, &pair, timing, PairCacheFor(first, second))) {
+    const NarrowBody body_first = narrow_of(first), body_second = narrow_of(second);
+    if (FindPairContacts(first, second, body_first, body_second, max_contacts, &scratch_, &pair,
+                         timing, PairCacheFor(first, second, body_first, body_second))) {
       pairs_.push_back(std::move(pair));
     }
   }

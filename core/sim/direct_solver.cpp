@@ -10,17 +10,14 @@ namespace lamina::core {
 
 namespace {
 
-using Mat6 = Eigen::Matrix<double, 6, 6>;
-
 bool Unbounded(const NewtonRow& row) {
   return row.normal < 0 && row.lo == -kInf && row.hi == kInf;
 }
 
-double RowDot(const NewtonRow& row, const Eigen::VectorXd& v) {
-  double sum = 0.0;
-  if (row.a >= 0) sum += row.ja.dot(v.segment<6>(6 * row.a));
-  if (row.b >= 0) sum += row.jb.dot(v.segment<6>(6 * row.b));
-  return sum;
+// h λ J_iᵀ onto the rows' bodies in `momentum` (6 entries per body)
+void AddImpulse(const NewtonRow& row, double impulse, Eigen::VectorXd* momentum) {
+  if (row.a >= 0) momentum->segment<6>(6 * row.a) += impulse * row.ja;
+  if (row.b >= 0) momentum->segment<6>(6 * row.b) += impulse * row.jb;
 }
 
 // w J_iᵀ J_i into the lower triangle of the blocks of bodies a and b
@@ -65,15 +62,10 @@ void DirectSolver::FreeVelocity(const std::vector<NewtonBody>& bodies,
                                 const std::vector<NewtonRow>& rows) {
   v0_.resize(6 * static_cast<Eigen::Index>(bodies.size()));
   for (size_t k = 0; k < bodies.size(); ++k) {
-    const NewtonBody& body = bodies[k];
-    v0_.segment<3>(6 * k) = body.mass * body.free_velocity.head<3>();
-    v0_.segment<3>(6 * k + 3) = body.inertia * body.free_velocity.tail<3>();
+    v0_.segment<6>(6 * k) = MassTimes(bodies[k], bodies[k].free_velocity);
   }
   for (const NewtonRow& row : rows) {
-    if (!Unbounded(row)) continue;
-    const double w = step_ * row.rhs / row.cfm;
-    if (row.a >= 0) v0_.segment<6>(6 * row.a) += w * row.ja;
-    if (row.b >= 0) v0_.segment<6>(6 * row.b) += w * row.jb;
+    if (Unbounded(row)) AddImpulse(row, step_ * row.rhs / row.cfm, &v0_);
   }
   cholesky_.Solve(&v0_);
 }
@@ -121,7 +113,7 @@ void DirectSolver::BoundedSystem(const std::vector<NewtonRow>& rows) {
       g_(j, i) = g_(i, j);
     }
     g_(i, i) += row.cfm;
-    r_(i) = row.rhs - RowDot(row, v0_);
+    r_(i) = row.rhs - RowVelocity(row, v0_);
   }
 }
 
@@ -129,40 +121,51 @@ void DirectSolver::BoundedSystem(const std::vector<NewtonRow>& rows) {
 void DirectSolver::SetBounds(const std::vector<NewtonRow>& rows) {
   for (size_t k = 0; k < bounded_.size(); ++k) {
     const NewtonRow& row = rows[bounded_[k]];
-    double scale = 1.0;
-    if (row.normal >= 0) {
-      const auto at = std::find(bounded_.begin(), bounded_.end(), row.normal);
-      scale = at == bounded_.end() ? 0.0 : std::abs(lambda_(at - bounded_.begin()));
-    }
+    // (a friction row's normal row is a contact's: bounded below by 0, so among bounded_)
+    const double scale = row.normal < 0 ? 1.0 : std::abs(lambda_(normal_at_[k]));
     lo_(k) = row.lo * scale;
     hi_(k) = row.hi * scale;
   }
 }
 
-// target_F = G_FF⁻¹ (r_F − G_FW λ_W) for the free rows F (target_W = λ_W)
-bool DirectSolver::SolveFree(Eigen::VectorXd* target) {
-  std::vector<Eigen::Index> free;
-  for (size_t k = 0; k < state_.size(); ++k) {
-    if (state_[k] == 0) free.push_back(static_cast<Eigen::Index>(k));
-  }
-  *target = lambda_;
-  if (free.empty()) return true;
-  const Eigen::Index f = static_cast<Eigen::Index>(free.size());
+// the free rows (inside their bounds) into free_, and G_FF⁻¹ rhs into `solution`; false when G_FF
+// does not factor or the solution is not finite
+bool DirectSolver::SolveFreeBlock(const Eigen::VectorXd& rhs, Eigen::VectorXd* solution) const {
+  const Eigen::Index f = static_cast<Eigen::Index>(free_.size());
   Eigen::MatrixXd gff(f, f);
-  Eigen::VectorXd rhs(f);
   for (Eigen::Index i = 0; i < f; ++i) {
-    double sum = r_(free[i]);
-    for (size_t k = 0; k < state_.size(); ++k) {
-      if (state_[k] != 0) sum -= g_(free[i], static_cast<Eigen::Index>(k)) * lambda_(k);
-    }
-    rhs(i) = sum;
-    for (Eigen::Index j = 0; j < f; ++j) gff(i, j) = g_(free[i], free[j]);
+    for (Eigen::Index j = 0; j < f; ++j) gff(i, j) = g_(free_[i], free_[j]);
   }
   Eigen::LLT<Eigen::MatrixXd> llt(gff);
   if (llt.info() != Eigen::Success) return false;
-  const Eigen::VectorXd solution = llt.solve(rhs);
-  if (!solution.allFinite()) return false;
-  for (Eigen::Index i = 0; i < f; ++i) (*target)(free[i]) = solution(i);
+  *solution = llt.solve(rhs);
+  return solution->allFinite();
+}
+
+void DirectSolver::FindFree() {
+  free_.clear();
+  for (size_t k = 0; k < state_.size(); ++k) {
+    if (state_[k] == 0) free_.push_back(static_cast<Eigen::Index>(k));
+  }
+}
+
+// target_F = G_FF⁻¹ (r_F − G_FW λ_W) for the free rows F (target_W = λ_W)
+bool DirectSolver::SolveFree(Eigen::VectorXd* target) {
+  FindFree();
+  *target = lambda_;
+  if (free_.empty()) return true;
+  const Eigen::Index f = static_cast<Eigen::Index>(free_.size());
+  Eigen::VectorXd rhs(f);
+  for (Eigen::Index i = 0; i < f; ++i) {
+    double sum = r_(free_[i]);
+    for (size_t k = 0; k < state_.size(); ++k) {
+      if (state_[k] != 0) sum -= g_(free_[i], static_cast<Eigen::Index>(k)) * lambda_(k);
+    }
+    rhs(i) = sum;
+  }
+  Eigen::VectorXd solution;
+  if (!SolveFreeBlock(rhs, &solution)) return false;
+  for (Eigen::Index i = 0; i < f; ++i) (*target)(free_[i]) = solution(i);
   return true;
 }
 
@@ -231,46 +234,32 @@ void DirectSolver::Refine(const std::vector<NewtonBody>& bodies, const std::vect
   Eigen::VectorXd& v = *velocity;
   Eigen::VectorXd residual(v.size());
   for (size_t k = 0; k < bodies.size(); ++k) {
-    const NewtonBody& body = bodies[k];
-    const Vec6 change = body.free_velocity - v.segment<6>(6 * k);
-    residual.segment<3>(6 * k) = body.mass * change.head<3>();
-    residual.segment<3>(6 * k + 3) = body.inertia * change.tail<3>();
+    residual.segment<6>(6 * k) =
+        MassTimes(bodies[k], bodies[k].free_velocity - v.segment<6>(6 * k));
   }
-  for (size_t i = 0; i < rows.size(); ++i) {
-    if (!Unbounded(rows[i])) continue;
-    const double impulse = step_ * (rows[i].rhs - RowDot(rows[i], v)) / rows[i].cfm;
-    if (rows[i].a >= 0) residual.segment<6>(6 * rows[i].a) += impulse * rows[i].ja;
-    if (rows[i].b >= 0) residual.segment<6>(6 * rows[i].b) += impulse * rows[i].jb;
+  for (const NewtonRow& row : rows) {
+    if (Unbounded(row))
+      AddImpulse(row, step_ * (row.rhs - RowVelocity(row, v)) / row.cfm, &residual);
   }
   for (size_t k = 0; k < bounded_.size(); ++k) {
-    const NewtonRow& row = rows[bounded_[k]];
-    const double impulse = step_ * lambda_(static_cast<Eigen::Index>(k));
-    if (row.a >= 0) residual.segment<6>(6 * row.a) += impulse * row.ja;
-    if (row.b >= 0) residual.segment<6>(6 * row.b) += impulse * row.jb;
+    AddImpulse(rows[bounded_[k]], step_ * lambda_(static_cast<Eigen::Index>(k)), &residual);
   }
   cholesky_.Solve(&residual);  // δv₀ = K⁻¹ r_v
   v += residual;
-  std::vector<Eigen::Index> free;
-  for (size_t k = 0; k < state_.size(); ++k) {
-    if (state_[k] == 0) free.push_back(static_cast<Eigen::Index>(k));
-  }
-  if (free.empty()) return;
-  const Eigen::Index f = static_cast<Eigen::Index>(free.size());
-  Eigen::MatrixXd gff(f, f);
+  FindFree();
+  if (free_.empty()) return;
+  const Eigen::Index f = static_cast<Eigen::Index>(free_.size());
   Eigen::VectorXd rhs(f);
   for (Eigen::Index i = 0; i < f; ++i) {
-    const NewtonRow& row = rows[bounded_[free[i]]];
-    rhs(i) = row.rhs - RowDot(row, v) - row.cfm * lambda_(free[i]);  // (v: v' + δv₀)
-    for (Eigen::Index j = 0; j < f; ++j) gff(i, j) = g_(free[i], free[j]);
+    const NewtonRow& row = rows[bounded_[free_[i]]];
+    rhs(i) = row.rhs - RowVelocity(row, v) - row.cfm * lambda_(free_[i]);  // (v: v' + δv₀)
   }
-  Eigen::LLT<Eigen::MatrixXd> llt(gff);
-  if (llt.info() != Eigen::Success) return;
-  const Eigen::VectorXd correction = llt.solve(rhs);
-  if (!correction.allFinite()) return;
+  Eigen::VectorXd correction;
+  if (!SolveFreeBlock(rhs, &correction)) return;
   Eigen::VectorXd push = Eigen::VectorXd::Zero(v.size());
   for (Eigen::Index i = 0; i < f; ++i) {
-    lambda_(free[i]) += correction(i);
-    push += step_ * correction(i) * z_.col(free[i]);
+    lambda_(free_[i]) += correction(i);
+    push += step_ * correction(i) * z_.col(free_[i]);
   }
   cholesky_.BackSolve(&push);
   v += push;
@@ -285,8 +274,18 @@ bool DirectSolver::Solve(const std::vector<NewtonBody>& bodies, const std::vecto
   if (!FactorBodies(bodies, rows)) return false;
   FreeVelocity(bodies, rows);
   bounded_.clear();
+  position_.assign(rows.size(), -1);
   for (size_t i = 0; i < rows.size(); ++i) {
-    if (!Unbounded(rows[i])) bounded_.push_back(static_cast<int>(i));
+    if (Unbounded(rows[i])) continue;
+    position_[i] = static_cast<int>(bounded_.size());
+    bounded_.push_back(static_cast<int>(i));
+  }
+  normal_at_.assign(bounded_.size(), -1);
+  for (size_t k = 0; k < bounded_.size(); ++k) {
+    const int normal = rows[bounded_[k]].normal;
+    if (normal < 0) continue;
+    if (position_[normal] < 0) return false;  // (not a row the law allows)
+    normal_at_[k] = position_[normal];
   }
   BoundedSystem(rows);
   const Eigen::Index n = static_cast<Eigen::Index>(bounded_.size());
@@ -326,7 +325,7 @@ bool DirectSolver::Solve(const std::vector<NewtonBody>& bodies, const std::vecto
   for (size_t k = 0; k < bodies.size(); ++k) result->velocity[k] = velocity.segment<6>(6 * k);
   result->force.resize(rows.size());
   for (size_t i = 0; i < rows.size(); ++i) {
-    result->force[i] = (rows[i].rhs - RowDot(rows[i], velocity)) / rows[i].cfm;
+    result->force[i] = (rows[i].rhs - RowVelocity(rows[i], velocity)) / rows[i].cfm;
   }
   for (Eigen::Index k = 0; k < n; ++k) result->force[bounded_[k]] = lambda_(k);
   result->converged = velocity.allFinite();

@@ -57,13 +57,18 @@ class DirectSolver {
   bool BoxSolve(int* budget);
   bool Optimal(const Eigen::VectorXd& gradient, int* released);
   bool SolveFree(Eigen::VectorXd* target);
+  void FindFree();
+  bool SolveFreeBlock(const Eigen::VectorXd& rhs, Eigen::VectorXd* solution) const;
   void Refine(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
               Eigen::VectorXd* velocity);
 
   double step_ = 0.0;
   ProfileCholesky cholesky_;
   std::vector<int> lowest_body_;
-  std::vector<int> bounded_;  ///< indices of the bounded rows
+  std::vector<int> bounded_;        ///< indices of the bounded rows
+  std::vector<int> position_;       ///< per row, its index in bounded_, or -1
+  std::vector<int> normal_at_;      ///< per bounded row, its normal row's index in bounded_, or -1
+  std::vector<Eigen::Index> free_;  ///< the bounded rows inside their bounds now
   Eigen::VectorXd v0_;
   Eigen::MatrixXd z_;                     ///< L⁻¹ J_iᵀ per bounded row (columns; K = L Lᵀ)
   std::vector<std::vector<int>> filled_;  ///< per column of z_, the blocks it fills

@@ -6,7 +6,12 @@
 
 namespace lamina::core {
 
-namespace {
+double RowVelocity(const NewtonRow& row, const VecX& v) {
+  double velocity = 0.0;
+  if (row.a >= 0) velocity += row.ja.dot(v.segment<6>(6 * row.a));
+  if (row.b >= 0) velocity += row.jb.dot(v.segment<6>(6 * row.b));
+  return velocity;
+}
 
 Vec6 MassTimes(const NewtonBody& body, const Vec6& v) {
   Vec6 out;
@@ -14,6 +19,8 @@ Vec6 MassTimes(const NewtonBody& body, const Vec6& v) {
   out.tail<3>() = body.inertia * v.tail<3>();
   return out;
 }
+
+namespace {
 
 // Σ over bodies of uᵀ M w
 double MassProduct(const std::vector<NewtonBody>& bodies, const VecX& u, const VecX& w) {
@@ -85,13 +92,6 @@ void NewtonSolver::SetProfile(size_t bodies, const std::vector<NewtonRow>& rows)
     const int high = std::max(row.a, row.b), low = std::min(row.a, row.b);
     lowest[high] = std::min(lowest[high], low);
   }
-}
-
-double NewtonSolver::RowVelocity(const NewtonRow& row, const VecX& v) const {
-  double velocity = 0.0;
-  if (row.a >= 0) velocity += row.ja.dot(v.segment<6>(6 * row.a));
-  if (row.b >= 0) velocity += row.jb.dot(v.segment<6>(6 * row.b));
-  return velocity;
 }
 
 double NewtonSolver::RowForce(size_t i, double x) const {

@@ -79,6 +79,11 @@ struct NewtonResult {
   bool converged = false;      ///< false: the last iterate, not the answer (the caller falls back)
 };
 
+/// A row's velocity J_a v_a + J_b v_b (v: 6 entries per body of the island).
+double RowVelocity(const NewtonRow& row, const VecX& v);
+/// The body's mass matrix times a velocity (linear, angular): its momentum.
+Vec6 MassTimes(const NewtonBody& body, const Vec6& v);
+
 /// The solver keeps its matrices between calls (no allocation once they have grown).
 class NewtonSolver {
  public:
@@ -88,7 +93,6 @@ class NewtonSolver {
 
  private:
   void SetProfile(size_t bodies, const std::vector<NewtonRow>& rows);
-  double RowVelocity(const NewtonRow& row, const VecX& v) const;
   double StepSize(const std::vector<NewtonBody>& bodies) const;
   double RowForce(size_t i, double x) const;
   signed char Regime(size_t i, double x) const;

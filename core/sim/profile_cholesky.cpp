@@ -79,20 +79,13 @@ void ProfileCholesky::BackSolve(Eigen::VectorXd* b) const {
 
 void ProfileCholesky::Solve(Eigen::VectorXd* b) const {
   Eigen::VectorXd& x = *b;
-  const int n = blocks();
-  for (int i = 0; i < n; ++i) {  // L y = b
+  for (int i = 0; i < blocks(); ++i) {  // L y = b
     Vec6 y = x.segment<6>(6 * i);
     for (int k = first_[i]; k < i; ++k) y.noalias() -= block(i, k) * x.segment<6>(6 * k);
     block(i, i).triangularView<Eigen::Lower>().solveInPlace(y);
     x.segment<6>(6 * i) = y;
   }
-  for (int i = n - 1; i >= 0; --i) {  // Lᵀ x = y, block column by block column of Lᵀ
-    Vec6 y = x.segment<6>(6 * i);
-    block(i, i).transpose().triangularView<Eigen::Upper>().solveInPlace(y);
-    x.segment<6>(6 * i) = y;
-    for (int k = first_[i]; k < i; ++k)
-      x.segment<6>(6 * k).noalias() -= block(i, k).transpose() * y;
-  }
+  BackSolve(b);
 }
 
 }  // namespace lamina::core

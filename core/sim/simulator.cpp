@@ -464,7 +464,10 @@ void Simulator::BuildConstraints(double step) {
   const Vec3* anchor_velocities = anchors_.velocities().data();
   const bool newton = s.solver == SolverType::kNewton;
   // the exact solver solves its robots' islands directly (direct_solver.h)
-  const bool direct = s.solver == SolverType::kStep && direct_robots_ && robot_count() > 0;
+  bool direct = false;
+  for (int r = 0; r < robot_count() && s.solver == SolverType::kStep && direct_robots_; ++r) {
+    direct = direct || OwnBodies(r) >= direct_min_bodies_;
+  }
   islands_active_ = newton || direct;
   if (islands_active_) PrepareObjectIslands(direct);
   for (const ContactPair& pair : contacts_.pairs()) {

@@ -6,6 +6,9 @@
 
 #include <vector>
 
+#include <Eigen/LU>
+#include <gtest/gtest.h>
+
 #include "core/sim/newton_solver.h"
 
 namespace lamina::test {
@@ -62,6 +65,49 @@ inline double NormalSum(const std::vector<core::NewtonRow>& rows, const core::Ne
     }
   }
   return sum;
+}
+
+/// A 2 kg box resting on the ground on four contacts at h = 10 ms, solved by `solver`: each row
+/// asks v' = −cfm λ and m (v' + g h) = 4 h λ, so λ = m g h / (4 h + m cfm). Returns the result
+/// (each solver adds its own checks).
+template <typename Solver>
+core::NewtonResult ExpectABoxOnTheGroundCarriesItsWeight(Solver* solver) {
+  const double h = 0.01, m = 2.0, cfm = 1e-9;
+  const std::vector<core::NewtonBody> bodies = {IslandBody(m, core::Vec6::Zero(), h)};
+  std::vector<core::NewtonRow> rows;
+  AddFace(&rows, 0, -1, 0.5);
+  core::NewtonResult result;
+  EXPECT_TRUE(solver->Solve(bodies, rows, h, {}, &result));
+  if (!result.converged) return result;
+  const double lambda = m * kIslandGravity * h / (4.0 * h + m * cfm);
+  EXPECT_NEAR(NormalSum(rows, result, 0, -1), 4.0 * lambda, 1e-12 * lambda);
+  EXPECT_NEAR(result.velocity[0](2), -cfm * lambda, 1e-15);
+  EXPECT_LE(result.velocity[0].tail<3>().norm(), 1e-12);
+  return result;
+}
+
+/// A 1000 kg box on a 1 kg one on the ground from rest, h = 10 ms: per contact λ0 (ground) and
+/// λ1 (between), v0 = −cfm λ0, v1 = v0 − cfm λ1, m0 (v0 + g h) = 4 h (λ0 − λ1) and
+/// m1 (v1 + g h) = 4 h λ1. Returns the result.
+template <typename Solver>
+core::NewtonResult ExpectAThousandToOneStackHolds(Solver* solver) {
+  const double h = 0.01, m0 = 1.0, m1 = 1000.0, cfm = 1e-9;
+  const std::vector<core::NewtonBody> bodies = {IslandBody(m0, core::Vec6::Zero(), h),
+                                                IslandBody(m1, core::Vec6::Zero(), h)};
+  std::vector<core::NewtonRow> rows;
+  AddFace(&rows, 0, -1, 0.5);
+  AddFace(&rows, 1, 0, 0.5);
+  core::NewtonResult result;
+  EXPECT_TRUE(solver->Solve(bodies, rows, h, {}, &result));
+  if (!result.converged) return result;
+  Eigen::Matrix2d a;
+  a << 4.0 * h + m0 * cfm, -4.0 * h, m1 * cfm, 4.0 * h + m1 * cfm;
+  const Eigen::Vector2d lambda =
+      a.lu().solve(Eigen::Vector2d(m0 * kIslandGravity * h, m1 * kIslandGravity * h));
+  EXPECT_NEAR(NormalSum(rows, result, 0, -1), 4.0 * lambda(0), 1e-9 * lambda(0));
+  EXPECT_NEAR(NormalSum(rows, result, 1, 0), 4.0 * lambda(1), 1e-9 * lambda(1));
+  EXPECT_NEAR(result.velocity[1](2), -cfm * (lambda(0) + lambda(1)), 1e-12);
+  return result;
 }
 
 }  // namespace lamina::test

@@ -55,34 +55,13 @@ void AddMotor(std::vector<NewtonRow>* rows, int a, int b, double rate, double cf
 }
 
 TEST(DirectSolverTest, ABoxOnTheGroundCarriesItsWeight) {
-  const double h = 0.01;
-  std::vector<NewtonBody> bodies = {Body(2.0, Vec6::Zero(), h)};
-  std::vector<NewtonRow> rows;
-  AddFace(&rows, 0, -1, 0.5);
   DirectSolver solver;
-  NewtonResult result;
-  ASSERT_TRUE(solver.Solve(bodies, rows, h, {}, &result));
-  const double m = 2.0, cfm = 1e-9, lambda = m * kG * h / (4.0 * h + m * cfm);
-  EXPECT_NEAR(NormalSum(rows, result, 0, -1), 4.0 * lambda, 1e-12 * lambda);
-  EXPECT_NEAR(result.velocity[0](2), -cfm * lambda, 1e-15);
-  EXPECT_LE(result.velocity[0].tail<3>().norm(), 1e-12);
+  EXPECT_TRUE(test::ExpectABoxOnTheGroundCarriesItsWeight(&solver).converged);
 }
 
 TEST(DirectSolverTest, AThousandToOneStackHolds) {
-  const double h = 0.01;
-  std::vector<NewtonBody> bodies = {Body(1.0, Vec6::Zero(), h), Body(1000.0, Vec6::Zero(), h)};
-  std::vector<NewtonRow> rows;
-  AddFace(&rows, 0, -1, 0.5);
-  AddFace(&rows, 1, 0, 0.5);
   DirectSolver solver;
-  NewtonResult result;
-  ASSERT_TRUE(solver.Solve(bodies, rows, h, {}, &result));
-  const double m0 = 1.0, m1 = 1000.0, cfm = 1e-9;
-  Eigen::Matrix2d a;
-  a << 4.0 * h + m0 * cfm, -4.0 * h, m1 * cfm, 4.0 * h + m1 * cfm;
-  const Eigen::Vector2d lambda = a.lu().solve(Eigen::Vector2d(m0 * kG * h, m1 * kG * h));
-  EXPECT_NEAR(NormalSum(rows, result, 0, -1), 4.0 * lambda(0), 1e-9 * lambda(0));
-  EXPECT_NEAR(NormalSum(rows, result, 1, 0), 4.0 * lambda(1), 1e-9 * lambda(1));
+  EXPECT_TRUE(test::ExpectAThousandToOneStackHolds(&solver).converged);
 }
 
 TEST(DirectSolverTest, AHangingChainIsHeldByItsUnboundedRowsAlone) {
