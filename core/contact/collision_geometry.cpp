@@ -352,6 +352,29 @@ bool BeyondAnEdge(const std::array<MeshBvh::Plane, 3>& edges, const std::array<V
   return false;
 }
 
+// The corner of `corners` nearest to the triangle of `plane` and `edges` when that settles the
+// pair's distance, or -1: all three corners lie strictly on one side of the plane (so every
+// point of their triangle is at least as far from the plane as the nearest corner) and the
+// nearest corner (lowest index on ties) lies within the edge planes (its foot on the plane is a
+// point of the triangle). `height` is then its signed height over the plane. Degenerate
+// triangles (zero normal) and non-finite corners give -1.
+int CornerOverFace(const MeshBvh::Plane& plane, const std::array<MeshBvh::Plane, 3>& edges,
+                   const std::array<Vec3, 3>& corners, double* height) {
+  const Vec3 h(plane.normal.dot(corners[0]) - plane.offset,
+               plane.normal.dot(corners[1]) - plane.offset,
+               plane.normal.dot(corners[2]) - plane.offset);
+  if (!((h.array() > 0.0).all() || (h.array() < 0.0).all())) return -1;
+  int nearest = 0;
+  for (int k = 1; k < 3; ++k) {
+    if (std::abs(h[k]) < std::abs(h[nearest])) nearest = k;
+  }
+  for (const MeshBvh::Plane& edge : edges) {
+    if (!(edge.normal.dot(corners[nearest]) <= edge.offset)) return -1;
+  }
+  *height = h[nearest];
+  return nearest;
+}
+
 // False when the oriented box and the aligned box (centre, half extents) are separated along
 // one of their six face axes (a conservative overlap test).
 bool MayOverlap(const fcl::OBBd& volume, const Vec3& centre, const Vec3& half) {
@@ -549,12 +572,35 @@ class NearPairSearch {
     }
   }
 
-  // FCL's exact distance of the pair, kept within the tolerance.
+  // The pair's exact distance, kept within the tolerance: a corner over the other face when
+  // that settles it (CornerOverFace), else FCL's general routine.
   void Measure(int ta, int tb, const PlacedTriangle& placed) const {
-    fcl::Vector3d p, q;
-    const double distance = fcl::detail::TriangleDistance<double>::triDistance(
-        a_.triangle_corners[ta].data(), placed.corners.data(), p, q);
-    if (distance <= tolerance_) hits_->push_back({ta, tb, distance, p, q});
+    using Foot = TrianglePairHit::Foot;
+    const std::array<Vec3, 3>& corners_a = a_.triangle_corners[ta];
+    const MeshBvh::Plane& plane_a = a_.triangle_planes[ta];
+    TrianglePairHit hit{ta, tb};
+    double height = 0.0;
+    if (const int k = CornerOverFace(plane_a, a_.edge_planes[ta], placed.corners, &height);
+        k >= 0) {
+      hit.foot = Foot::kCornerOfBOverA;
+      hit.corner = k;
+      hit.point_b = placed.corners[k];
+      hit.point_a = hit.point_b - height * plane_a.normal;
+    } else if (const int j = CornerOverFace(placed.plane, placed.edges, corners_a, &height);
+               j >= 0) {
+      hit.foot = Foot::kCornerOfAOverB;
+      hit.corner = j;
+      hit.point_a = corners_a[j];
+      hit.point_b = hit.point_a - height * placed.plane.normal;
+    } else {
+      fcl::Vector3d p, q;
+      hit.distance = fcl::detail::TriangleDistance<double>::triDistance(
+          corners_a.data(), placed.corners.data(), p, q);
+      hit.point_a = p;
+      hit.point_b = q;
+    }
+    if (hit.foot != Foot::kGeneral) hit.distance = std::abs(height);
+    if (hit.distance <= tolerance_) hits_->push_back(hit);
   }
 
   void Visit(int node_a, int node_b) const {

@@ -135,23 +135,41 @@ void UpdateCentres(const std::vector<Feature>& points, const std::vector<int>& l
   }
 }
 
+/// Brings every point's nearest seed (distance and label) up to date with the newest centre.
+/// A label changes only on a strictly nearer centre, so ties keep the lowest index and a
+/// non-finite point keeps centre 0, as in NearestCentre.
+void CompareWithNewestCentre(const std::vector<Feature>& points, Workspace* workspace) {
+  const Feature& centre = workspace->centres.back();
+  const int label = static_cast<int>(workspace->centres.size()) - 1;
+  std::vector<double>& nearest = workspace->nearest_squared_distances;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double distance = (points[i] - centre).squaredNorm();
+    if (distance < nearest[i]) {
+      nearest[i] = distance;
+      workspace->labels[i] = label;
+    } else if (!(distance >= nearest[i])) {
+      nearest[i] = distance;  // a NaN distance (a non-finite contact) sticks and never wins
+    }
+  }
+}
+
 /// Farthest-point seeding: centre 0 is point 0 and each further centre is the point farthest
 /// from the centres chosen so far (lowest index on ties), so the centres start spread over the
 /// whole input whatever its order. Stops early when every point coincides with a centre (fewer
-/// distinct contacts than clusters).
+/// distinct contacts than clusters). Leaves each point labelled with its nearest centre, as
+/// AssignLabels would.
 void SeedCentres(const std::vector<Feature>& points, std::size_t cluster_count,
                  Workspace* workspace) {
   std::vector<Feature>& centres = workspace->centres;
-  std::vector<double>& nearest = workspace->nearest_squared_distances;
+  const std::vector<double>& nearest = workspace->nearest_squared_distances;
   centres.assign(1, points[0]);
-  nearest.assign(points.size(), kInf);
+  workspace->nearest_squared_distances.assign(points.size(), kInf);
+  workspace->labels.assign(points.size(), 0);
+  CompareWithNewestCentre(points, workspace);
   while (centres.size() < cluster_count) {
     std::size_t farthest = 0;
     double farthest_distance = 0.0;
     for (std::size_t i = 0; i < points.size(); ++i) {
-      const double distance = (points[i] - centres.back()).squaredNorm();
-      // Written so that a NaN distance (a non-finite contact) sticks and never wins below.
-      if (!(distance >= nearest[i])) nearest[i] = distance;
       if (nearest[i] > farthest_distance) {
         farthest_distance = nearest[i];
         farthest = i;
@@ -159,22 +177,26 @@ void SeedCentres(const std::vector<Feature>& points, std::size_t cluster_count,
     }
     if (farthest_distance == 0.0) return;
     centres.push_back(points[farthest]);
+    CompareWithNewestCentre(points, workspace);
   }
 }
 
-/// Lloyd's algorithm on `points` from farthest-point seeds; leaves the final centres in the
-/// workspace.
-void RunKMeans(const std::vector<Feature>& points, std::size_t cluster_count,
+/// Lloyd's algorithm on `points` from farthest-point seeds (whose labels make the first
+/// assignment); leaves the final centres in the workspace. True when it converged: the labels
+/// are then every point's nearest final centre.
+bool RunKMeans(const std::vector<Feature>& points, std::size_t cluster_count,
                Workspace* workspace) {
   SeedCentres(points, cluster_count, workspace);
-  workspace->labels.assign(points.size(), -1);
   workspace->counts.resize(workspace->centres.size());
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-    if (!AssignLabels(points, workspace->centres, &workspace->labels)) break;
+    if (iteration > 0 && !AssignLabels(points, workspace->centres, &workspace->labels)) {
+      return true;
+    }
     CountMembers(workspace->labels, &workspace->counts);
     ReseedEmptyClusters(points, workspace->centres, &workspace->labels, &workspace->counts);
     UpdateCentres(points, workspace->labels, workspace->counts, &workspace->centres);
   }
+  return false;
 }
 
 /// The features to cluster: all of them, or a uniform-stride subsample (index floor(i n / m))
@@ -191,12 +213,15 @@ const std::vector<Feature>& PointsToCluster(std::size_t cluster_count, Workspace
   return workspace->sample;
 }
 
-/// Assigns every contact to its nearest final centre and gathers the members' sums.
-void GatherClusters(const ContactList& contacts, Workspace* workspace) {
+/// Assigns every contact to its nearest final centre and gathers the members' sums. With
+/// `labelled`, workspace->labels already hold each contact's nearest final centre.
+void GatherClusters(const ContactList& contacts, bool labelled, Workspace* workspace) {
   workspace->sums.assign(workspace->centres.size(), ClusterSums{});
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const Contact& contact = contacts[i];
-    ClusterSums& sums = workspace->sums[NearestCentre(workspace->features[i], workspace->centres)];
+    const int label =
+        labelled ? workspace->labels[i] : NearestCentre(workspace->features[i], workspace->centres);
+    ClusterSums& sums = workspace->sums[label];
     if (sums.count == 0 || contact.depth > sums.max_depth) {
       sums.max_depth = contact.depth;
       sums.deepest_normal = contact.normal;
@@ -242,8 +267,10 @@ void ClusterContacts(int max_contacts, double normal_scale, ContactList* contact
   for (std::size_t i = 0; i < contacts->size(); ++i) {
     workspace.features[i] = MakeFeature((*contacts)[i], normal_scale);
   }
-  RunKMeans(PointsToCluster(cluster_count, &workspace), cluster_count, &workspace);
-  GatherClusters(*contacts, &workspace);
+  const std::vector<Feature>& points = PointsToCluster(cluster_count, &workspace);
+  const bool converged = RunKMeans(points, cluster_count, &workspace);
+  // the final labels serve the gathering when every contact was clustered
+  GatherClusters(*contacts, converged && &points == &workspace.features, &workspace);
   // The outputs overwrite the front of the list: the sums hold everything they need.
   std::size_t output_count = 0;
   for (const ClusterSums& sums : workspace.sums) {
@@ -298,12 +325,18 @@ void MergeByScan(double radius_squared, ContactList* contacts) {
 
 using Cell = Eigen::Matrix<std::int64_t, 3, 1>;
 
-// The survivors hashed into a grid of cells of edge 2·radius: each survivor is entered in every
-// cell its radius-ball overlaps (at most 2 per axis, 8 in all), so a contact finds every survivor
-// within radius of it in its own cell, with one lookup. Open addressing over the cells in use (at
-// most half the slots: the table doubles beyond); each slot heads a chain of entries. Kept per
-// thread, and only its used slots emptied, so that a call neither allocates once grown nor costs
-// more than its contacts.
+// Edge of the survivor grid's cells, in merge radii. A survivor's radius-ball overlaps two
+// cells along an axis with probability 2/kCellRadii, so it is entered in (1 + 2/4)^3 = 3.4
+// cells on average instead of 8 with cells of two radii; a cell then holds more survivors to
+// compare, but survivors whose normals agree are at least a radius apart.
+constexpr double kCellRadii = 4.0;
+
+// The survivors hashed into a grid of cells of edge kCellRadii·radius: each survivor is entered
+// in every cell its radius-ball overlaps (at most 2 per axis, 8 in all), so a contact finds every
+// survivor within radius of it in its own cell, with one lookup. Open addressing over the cells
+// in use (at most half the slots: the table doubles beyond); each slot heads a chain of entries.
+// Kept per thread, and only its used slots emptied, so that a call neither allocates once grown
+// nor costs more than its contacts.
 class SurvivorGrid {
  public:
   void Reset(double radius) {
@@ -312,7 +345,7 @@ class SurvivorGrid {
     used_.clear();
     entries_.clear();
     radius_ = radius;
-    inverse_edge_ = 0.5 / radius;
+    inverse_edge_ = 1.0 / (kCellRadii * radius);
   }
 
   // the first survivor within radius_squared of `contact` (normals agreeing), or -1
@@ -397,7 +430,7 @@ class SurvivorGrid {
   std::vector<std::size_t> used_;  ///< the slots holding a cell
   int shift_ = 58;                 ///< 64 - log2(slot count)
   double radius_ = 1.0;
-  double inverse_edge_ = 0.5;
+  double inverse_edge_ = 1.0 / kCellRadii;
 };
 
 // Same result as MergeByScan (each contact joins the FIRST survivor it coincides with), in

@@ -194,6 +194,8 @@ struct MeshMeshScratch {
   SparseArray<VertexHit> nearest_face;
   std::vector<int> vertices;
   std::vector<VertexHit> vertex_hits;
+  // per side (0: a's vertices, 1: b's), the face each vertex contact holds its vertex on
+  SparseArray<int> hit_face[2];
 };
 
 MeshMeshScratch& Scratch() {
@@ -216,6 +218,7 @@ void FindCrossings(const MeshPair& m, MeshMeshScratch* s) {
         candidate = {{hit.triangle_a, hit.triangle_b, 0.0, middle, middle}, true};
       } else if (hit.distance == 0.0) {
         const TrianglePairPoints points = ClosestPointsOfTriangles(ta, tb);
+        candidate.hit.foot = TrianglePairHit::Foot::kGeneral;
         candidate.hit.distance = points.distance;
         candidate.hit.point_a = points.on_a;
         candidate.hit.point_b = points.on_b;
@@ -314,26 +317,40 @@ void SelectPairs(int triangles_a, int triangles_b, MeshMeshScratch* s) {
   KeepInOrder(s);
 }
 
-// A face of the other mesh that CollectVertexHits holds vertices against, in a's frame.
+// Vertices this much farther than the tolerance from a face's plane are not tested exactly (m):
+// far beyond the rounding that separates the plane distance from the exact one.
+constexpr double kPlaneSlack = 1e-9;
+
+// A face of the other mesh that CollectVertexHits holds vertices against, in a's frame. Its
+// barycentric map is made on first use: most vertices are turned away by the plane alone.
 struct FaceFrame {
   FaceFrame(const MeshPair& m, int face_index, bool face_of_b)
       : face(face_index),
         triangle(face_of_b ? m.TriangleB(face) : m.TriangleA(face)),
-        to_face(triangle),
         outward(face_of_b ? Vec3(m.X_ab.linear() * m.b.triangle_normals()[face])
                           : m.a.triangle_normals()[face]) {}
 
+  const BarycentricMap& ToFace() const {
+    if (!to_face) to_face.emplace(triangle);
+    return *to_face;
+  }
+
   int face;
   Triangle3 triangle;
-  BarycentricMap to_face;
   Vec3 outward;
+
+ private:
+  mutable std::optional<BarycentricMap> to_face;
 };
 
 // Vertex `vertex` at v (a's frame) over the face within `tolerance`, if it is: the vertex must
 // project onto the face or its boundary (aligned boxes put corners on the partner's edges).
 std::optional<VertexHit> VertexOverFace(const FaceFrame& f, int vertex, const Vec3& v,
                                         double tolerance, bool from_a) {
-  const Vec3 barycentric = f.to_face(v);
+  if (!(std::abs(f.outward.dot(v - f.triangle[0])) <= tolerance + kPlaneSlack)) {
+    return std::nullopt;  // also turns NaN away, as the exact test below would
+  }
+  const Vec3 barycentric = f.ToFace()(v);
   if ((barycentric.array() < -kOverFaceTolerance).any()) return std::nullopt;
   const Vec3 projected = barycentric[0] * f.triangle[0] + barycentric[1] * f.triangle[1] +
                          barycentric[2] * f.triangle[2];
@@ -408,6 +425,26 @@ void CollectVertexHits(const MeshPair& m, double tolerance, bool from_a, MeshMes
   std::sort(s->vertices.begin(), s->vertices.end());
   s->vertex_hits.clear();
   for (const int vertex : s->vertices) s->vertex_hits.push_back(s->nearest_face[vertex]);
+}
+
+// True when a pair's contact (normal n_a, from a face if `from_face`) would only repeat a vertex
+// contact: its closest points are a corner and its foot on the other triangle's face, that
+// corner's vertex holds a vertex contact on this very face, and the pair's normal is that face's
+// (the same expression as the vertex contact's). Both contacts then have the same points, normal
+// and depth, and the merge of coincident contacts would fold the pair's into the vertex's.
+bool RepeatsVertexHit(const MeshPair& m, const TrianglePairHit& hit, const Vec3& n_a,
+                      bool from_face, const MeshMeshScratch& s) {
+  using Foot = TrianglePairHit::Foot;
+  if (hit.foot == Foot::kGeneral || !from_face) return false;
+  const bool corner_of_a = hit.foot == Foot::kCornerOfAOverB;
+  const int own_triangle = corner_of_a ? hit.triangle_a : hit.triangle_b;
+  const int face = corner_of_a ? hit.triangle_b : hit.triangle_a;
+  const int vertex = (corner_of_a ? m.a : m.b).mesh().triangles[own_triangle][hit.corner];
+  const SparseArray<int>& held = s.hit_face[corner_of_a ? 0 : 1];
+  if (!held.Has(vertex) || held[vertex] != face) return false;
+  const Vec3 face_normal = corner_of_a ? Vec3(m.X_ab.linear() * m.b.triangle_normals()[face])
+                                       : Vec3(-m.a.triangle_normals()[face]);
+  return n_a == face_normal;
 }
 
 // a contact between point p on a and q on b (a's frame) with normal n (a's frame): positioned
@@ -486,7 +523,10 @@ void MeshMeshContacts(const CollisionGeometry& a, const Pose& X_Wa, double pad_a
   Vec3 reference = Vec3::Zero();
   for (const bool from_a : {true, false}) {
     CollectVertexHits(m, tolerance, from_a, &s);
+    SparseArray<int>& held = s.hit_face[from_a ? 0 : 1];
+    held.Clear((from_a ? a : b).mesh().vertices.size());
     for (const VertexHit& hit : s.vertex_hits) {
+      held.Set(hit.vertex) = hit.face;
       reference += hit.normal;
       AppendContact(X_Wa, pad_a, pad_b, hit.on_a, hit.on_b, hit.normal, tolerance - hit.distance,
                     crossing || hit.distance < 0.0, out);
@@ -498,6 +538,7 @@ void MeshMeshContacts(const CollisionGeometry& a, const Pose& X_Wa, double pad_a
     bool from_face = false;
     Vec3 n_a = PairNormal(m, c, &signed_distance, &from_face);
     if (!(n_a.norm() >= kMinNormalLength)) continue;  // also rejects NaN
+    if (RepeatsVertexHit(m, c.hit, n_a, from_face, s)) continue;
     if (!from_face && n_a.dot(reference) < 0.0) {
       // an edge or vertex closest-point direction flips once the surfaces have crossed
       n_a = -n_a;

@@ -83,11 +83,18 @@ Vec3 FeatureNormal(const CollisionGeometry& mesh, int triangle, const TriangleFe
 
 /// A pair of triangles closer than the tolerance, with their closest points in a's frame.
 struct TrianglePairHit {
+  /// Which closest points the distance came from: a corner of one triangle and its foot inside
+  /// the other (all of the corner's triangle on one side of the other's plane, so no point of it
+  /// is nearer), or FCL's general triangle distance (kGeneral).
+  enum class Foot : signed char { kGeneral, kCornerOfBOverA, kCornerOfAOverB };
+
   int triangle_a = 0;
   int triangle_b = 0;
   double distance = 0.0;
   Vec3 point_a = Vec3::Zero();
   Vec3 point_b = Vec3::Zero();
+  Foot foot = Foot::kGeneral;
+  int corner = 0;  ///< the corner (0..2) of its triangle, when `foot` names one
 };
 
 /// How NearTrianglePairs narrows down the triangle pairs it measures. Every way reports

@@ -252,6 +252,8 @@ void ExpectSameHits(const std::vector<TrianglePairHit>& expected,
     EXPECT_EQ(expected[i].distance, actual[i].distance) << what << " hit " << i;
     EXPECT_EQ(expected[i].point_a, actual[i].point_a) << what << " hit " << i;
     EXPECT_EQ(expected[i].point_b, actual[i].point_b) << what << " hit " << i;
+    EXPECT_EQ(expected[i].foot, actual[i].foot) << what << " hit " << i;
+    EXPECT_EQ(expected[i].corner, actual[i].corner) << what << " hit " << i;
   }
 }
 
@@ -394,6 +396,55 @@ TEST(NearTrianglePairsTest, BallSunkIntoASlabGivesTheSamePairsEveryWay) {
     return Pose(X.inverse());                       // the slab in the ball's frame
   };
   EXPECT_GT(CompareSearches(*ball, *slab, 60, ball_on_slab, 0.08), 40);
+}
+
+// A single triangle of corners random within `spread` of `centre`.
+std::shared_ptr<const core::TriangleMesh> RandomTriangle(std::mt19937& random, const Vec3& centre,
+                                                         double spread) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto mesh = std::make_shared<core::TriangleMesh>();
+  for (int k = 0; k < 3; ++k) {
+    mesh->vertices.push_back(centre + spread * Vec3(u(random), u(random), u(random)));
+  }
+  mesh->triangles.emplace_back(0, 1, 2);
+  return mesh;
+}
+
+TEST(NearTrianglePairsTest, CornerOverAFaceGivesTheExactDistanceAndPoints) {
+  // 4000 random triangle pairs, b 0..0.4 above a and turned every way: a pair settled by a
+  // corner over the other face reports the distance of the independent closest-point routine,
+  // the corner itself and its foot inside the other triangle
+  std::mt19937 random(11);
+  int corner_hits = 0, general_hits = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const auto a = MeshGeometry(RandomTriangle(random, Vec3::Zero(), 1.0));
+    const auto b = MeshGeometry(RandomTriangle(random, Vec3::Zero(), 0.3));
+    const Pose X_ab = RandomPose(random, Vec3(0, 0, 0.2), 0.2, core::kPi);
+    const std::vector<TrianglePairHit> hits = NearPairs(*a, *b, X_ab, 10.0, PairSearch::kAuto);
+    ASSERT_EQ(hits.size(), 1u);
+    const TrianglePairHit& hit = hits[0];
+    const core::mesh_detail::Triangle3 ta = PlacedTriangles(*a, Pose::Identity())[0];
+    const core::mesh_detail::Triangle3 tb = PlacedTriangles(*b, X_ab)[0];
+    Vec3 crossing;
+    if (core::mesh_detail::TrianglesCross(ta, tb, &crossing)) continue;
+    const double exact = core::mesh_detail::ClosestPointsOfTriangles(ta, tb).distance;
+    EXPECT_NEAR(hit.distance, exact, kExact) << "pair " << i;
+    EXPECT_NEAR((hit.point_a - hit.point_b).norm(), hit.distance, kExact) << "pair " << i;
+    using Foot = TrianglePairHit::Foot;
+    if (hit.foot == Foot::kGeneral) {
+      ++general_hits;
+      continue;
+    }
+    ++corner_hits;
+    const bool of_b = hit.foot == Foot::kCornerOfBOverA;
+    const Vec3& corner = of_b ? hit.point_b : hit.point_a;
+    const Vec3& foot = of_b ? hit.point_a : hit.point_b;
+    EXPECT_LT((corner - (of_b ? tb : ta)[hit.corner]).norm(), kExact) << "pair " << i;
+    const Vec3 barycentric = core::mesh_detail::BarycentricCoordinates(foot, of_b ? ta : tb);
+    EXPECT_GE(barycentric.minCoeff(), -kExact) << "pair " << i;
+  }
+  EXPECT_GT(corner_hits, 1000);
+  EXPECT_GT(general_hits, 500);
 }
 
 TEST(NearTrianglePairsTest, FarMeshesGiveNoPairs) {

@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <random>
 #include <vector>
 
+#include <Eigen/Core>
 #include <gtest/gtest.h>
 
 namespace lamina::core {
@@ -180,6 +182,108 @@ TEST(ContactClusteringTest, SameInputGivesTheSameOutput) {
   ClusterContacts(20, kDefaultClusterNormalScale, &second);
   EXPECT_EQ(first.size(), 20u);
   ExpectIdentical(second, first);
+}
+
+// The textbook procedure ClusterContacts follows, written out plainly: farthest-point seeds,
+// Lloyd iterations that each label every point afresh, and a final gathering that labels every
+// contact again by its nearest final centre. Inputs of at most 250 contacts (no subsample) whose
+// clusters never empty; returns false (and nothing) if one does.
+using Feature = Eigen::Matrix<double, 7, 1>;
+
+int Nearest(const Feature& f, const std::vector<Feature>& centres) {
+  int best = 0;
+  for (std::size_t j = 1; j < centres.size(); ++j) {
+    if ((f - centres[j]).squaredNorm() < (f - centres[best]).squaredNorm())
+      best = static_cast<int>(j);
+  }
+  return best;
+}
+
+bool PlainKMeans(int k, ContactList* contacts) {
+  std::vector<Feature> f;
+  for (const Contact& c : *contacts) {
+    f.push_back(
+        (Feature() << c.position, kDefaultClusterNormalScale * c.normal, c.depth).finished());
+  }
+  std::vector<Feature> centres{f[0]};
+  while (static_cast<int>(centres.size()) < k) {
+    std::size_t farthest = 0;
+    double farthest_distance = 0.0;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const double d = (f[i] - centres[Nearest(f[i], centres)]).squaredNorm();
+      if (d > farthest_distance) farthest_distance = d, farthest = i;
+    }
+    if (farthest_distance == 0.0) break;
+    centres.push_back(f[farthest]);
+  }
+  std::vector<int> labels(f.size(), -1);
+  for (int iteration = 0; iteration < 20; ++iteration) {
+    bool changed = false;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const int label = Nearest(f[i], centres);
+      changed = changed || label != labels[i];
+      labels[i] = label;
+    }
+    if (!changed) break;
+    std::vector<Feature> sums(centres.size(), Feature::Zero());
+    std::vector<int> counts(centres.size(), 0);
+    for (std::size_t i = 0; i < f.size(); ++i) sums[labels[i]] += f[i], ++counts[labels[i]];
+    for (std::size_t j = 0; j < centres.size(); ++j) {
+      if (counts[j] == 0) return false;
+      centres[j] = sums[j] / static_cast<double>(counts[j]);
+    }
+  }
+  ContactList out;
+  for (std::size_t j = 0; j < centres.size(); ++j) {
+    Vec3 weighted = Vec3::Zero(), normal_sum = Vec3::Zero();
+    double weight = 0.0, depth = 0.0;
+    int count = 0;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      if (Nearest(f[i], centres) != static_cast<int>(j)) continue;
+      const Contact& c = (*contacts)[i];
+      const double w = PressureWeight(c, 1e-9);
+      weighted += w * c.position, weight += w, normal_sum += c.normal;
+      depth = count == 0 ? c.depth : std::max(depth, c.depth);
+      ++count;
+    }
+    if (count == 0) continue;
+    out.push_back(MakeContact(weighted / weight, (normal_sum / count).normalized(), depth));
+    out.back().weight = weight;
+  }
+  *contacts = out;
+  return true;
+}
+
+TEST(ContactClusteringTest, MatchesThePlainProcedure) {
+  // 200 random patches of 25..250 contacts (random positions, normals near +z, depths):
+  // ClusterContacts takes its first labels from the seeding and its final ones from a
+  // converged iteration, and must still give what labelling afresh every time gives
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int compared = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    ContactList input;
+    const int n = 25 + trial % 226;
+    for (int i = 0; i < n; ++i) {
+      const Vec3 normal = Vec3(0.3 * u(random), 0.3 * u(random), 1.0).normalized();
+      input.push_back(MakeContact(0.1 * Vec3(u(random), u(random), 0.1 * u(random)), normal,
+                                  0.01 * (1.0 + u(random))));
+    }
+    ContactList expected = input;
+    if (!PlainKMeans(20, &expected)) continue;
+    ++compared;
+    ContactList actual = input;
+    ClusterContacts(20, kDefaultClusterNormalScale, &actual);
+    SCOPED_TRACE(trial);
+    ASSERT_EQ(actual.size(), expected.size());
+    for (std::size_t i = 0; i < actual.size(); ++i) {
+      EXPECT_LT((actual[i].position - expected[i].position).norm(), kMeanTolerance);
+      EXPECT_LT((actual[i].normal - expected[i].normal).norm(), kMeanTolerance);
+      EXPECT_EQ(actual[i].depth, expected[i].depth);
+      EXPECT_NEAR(actual[i].weight, expected[i].weight, kMeanTolerance * expected[i].weight);
+    }
+  }
+  EXPECT_GT(compared, 150);
 }
 
 // 3000 contacts of a 300 x 10 strip, 20 clusters: k-means runs on a subsample of

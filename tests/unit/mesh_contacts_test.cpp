@@ -6,6 +6,7 @@
 // not asserted).
 #include "core/contact/mesh_contacts.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -238,6 +239,39 @@ TEST(MeshMeshContactsTest, EarlierCallsOnOtherMeshesDoNotChangeTheContacts) {
   ASSERT_FALSE(MeshMesh(Cube(), At(Vec3::Zero()), *sphere, sphere_on_cube).empty());
   ExpectIdentical(first, MeshMesh(Cube(), on_top, Cube(), At(Vec3::Zero())));
   ExpectIdentical(sphere_first, MeshMesh(*sphere, sphere_on_cube, Cube(), At(Vec3::Zero())));
+}
+
+TEST(MeshMeshContactsTest, BallOverASlabTouchesOnceAtEachNearVertex) {
+  // stiffness_test.xml's 960-triangle ball, radius 0.1 m, turned three ways, 1 mm over the 4 m
+  // slab with 2 cm of padding each: every ball vertex within the 4 cm layer touches the slab's
+  // top once, at its own place, straight up and tolerance - height deep. Each ball triangle's
+  // closest points to the slab are its lowest corner and that corner's foot, which repeat the
+  // vertex's contact: they add none.
+  const auto ball = MeshGeometry("klampt/objects/sphere.off", 0.1);
+  const auto slab = MeshGeometry("klampt/terrains/block.off");
+  constexpr double kLayerPad = 0.02, kLayer = 2 * kLayerPad;
+  for (const Mat3& R : {AboutX(0.3), Mat3(AboutY(-1.1) * AboutZ(0.4)), AboutZ(2.0)}) {
+    const Pose X_Wball = At(Vec3(0.2, -0.3, 0.101), R);
+    ContactList contacts;
+    core::MeshMeshContacts(*ball, X_Wball, kLayerPad, *slab, At(Vec3::Zero()), kLayerPad,
+                           &contacts);
+    std::vector<Vec3> near;
+    for (const Vec3& v : ball->mesh().vertices) {
+      const Vec3 w = X_Wball * v;
+      if (w.z() <= kLayer) near.push_back(w);
+    }
+    ASSERT_GT(near.size(), 60u);
+    ASSERT_EQ(contacts.size(), near.size());
+    for (const Vec3& w : near) {
+      const auto at_w = std::find_if(contacts.begin(), contacts.end(), [&w](const Contact& c) {
+        return (c.position.head<2>() - w.head<2>()).norm() < kDepthTolerance;
+      });
+      ASSERT_NE(at_w, contacts.end()) << "vertex at " << w.transpose();
+      EXPECT_NEAR(at_w->position.z(), 0.5 * w.z(), kDepthTolerance);
+      EXPECT_NEAR(at_w->depth, kLayer - w.z(), kDepthTolerance);
+      EXPECT_NEAR((at_w->normal - Vec3::UnitZ()).norm(), 0.0, kNormalTolerance);
+    }
+  }
 }
 
 TEST(BarycentricMapTest, MatchesBarycentricCoordinatesBitwise) {
