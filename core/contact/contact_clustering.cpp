@@ -47,7 +47,14 @@ struct Workspace {
   std::vector<Feature> sample;    ///< the clustered subset, when subsampling
   std::vector<Feature> centres;
   std::vector<double> nearest_squared_distances;  ///< per point, to the nearest seed so far
+  std::vector<double> second_squared_distances;   ///< per point, to the second nearest seed
   std::vector<int> labels;
+  // Hamerly's bounds (not squared): per point, at least as far as its own centre is and at most
+  // as far as any other centre is; per centre, how far the last update moved it
+  std::vector<double> upper;
+  std::vector<double> lower;
+  std::vector<Feature> previous_centres;
+  std::vector<double> moved;
   std::vector<std::size_t> counts;
   std::vector<ClusterSums> sums;
 };
@@ -78,14 +85,59 @@ int NearestCentre(const Feature& point, const std::vector<Feature>& centres) {
   return best;
 }
 
-/// Labels every point with its nearest centre; true when any label changed.
-bool AssignLabels(const std::vector<Feature>& points, const std::vector<Feature>& centres,
-                  std::vector<int>* labels) {
+/// NearestCentre (the same distances, the same ties), also giving the squared distances to the
+/// nearest centre and to the next nearest (infinite with one centre).
+int NearestTwoCentres(const Feature& point, const std::vector<Feature>& centres, double* best,
+                      double* second) {
+  int nearest = 0;
+  *best = (point - centres[0]).squaredNorm();
+  *second = kInf;
+  // selects rather than branches: which centre is nearest changes unpredictably
+  double first = *best, next = kInf;
+  for (std::size_t j = 1; j < centres.size(); ++j) {
+    const double distance = (point - centres[j]).squaredNorm();
+    const bool nearer = distance < first;
+    next = nearer ? first : std::min(next, distance);
+    nearest = nearer ? static_cast<int>(j) : nearest;
+    first = nearer ? distance : first;
+  }
+  *best = first;
+  *second = next;
+  return nearest;
+}
+
+// Relative margin by which a bound must win before a point is left with its centre: the bounds
+// are sums of a few rounded distances, good to about 1e-15 of their size.
+constexpr double kBoundMargin = 1e-9;
+
+/// True when the bounds prove the point's own centre strictly nearer than every other, so that
+/// NearestCentre would keep its label (a NaN bound proves nothing).
+bool BoundsKeep(double upper, double lower) {
+  return upper * (1.0 + kBoundMargin) < lower * (1.0 - kBoundMargin);
+}
+
+/// Labels point i afresh with its nearest centre and resets its bounds.
+void Relabel(const std::vector<Feature>& points, std::size_t i, Workspace* w) {
+  double best = 0.0, second = 0.0;
+  w->labels[i] = NearestTwoCentres(points[i], w->centres, &best, &second);
+  w->upper[i] = std::sqrt(best);
+  w->lower[i] = std::sqrt(second);
+}
+
+/// Labels every point with its nearest centre, as NearestCentre would, skipping the points whose
+/// bounds (Hamerly's) show their centre still nearest; true when any label changed.
+bool AssignLabels(const std::vector<Feature>& points, Workspace* w) {
+  const double most_moved = *std::max_element(w->moved.begin(), w->moved.end());
   bool changed = false;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const int label = NearestCentre(points[i], centres);
-    changed = changed || label != (*labels)[i];
-    (*labels)[i] = label;
+    const int label = w->labels[i];
+    w->upper[i] += w->moved[label];
+    w->lower[i] -= most_moved;
+    if (BoundsKeep(w->upper[i], w->lower[i])) continue;
+    w->upper[i] = (points[i] - w->centres[label]).norm();  // tightened
+    if (BoundsKeep(w->upper[i], w->lower[i])) continue;
+    Relabel(points, i, w);
+    changed = changed || w->labels[i] != label;
   }
   return changed;
 }
@@ -101,7 +153,8 @@ void CountMembers(const std::vector<int>& labels, std::vector<std::size_t>* coun
 /// members in unlucky configurations. With at least as many points as clusters, an empty cluster
 /// implies a cluster of two or more members, so the donor never becomes empty itself.
 void ReseedEmptyClusters(const std::vector<Feature>& points, const std::vector<Feature>& centres,
-                         std::vector<int>* labels, std::vector<std::size_t>* counts) {
+                         std::vector<int>* labels, std::vector<std::size_t>* counts,
+                         std::vector<double>* lower) {
   for (std::size_t empty = 0; empty < counts->size(); ++empty) {
     if ((*counts)[empty] != 0) continue;
     const auto largest =
@@ -118,20 +171,25 @@ void ReseedEmptyClusters(const std::vector<Feature>& points, const std::vector<F
       }
     }
     (*labels)[farthest] = static_cast<int>(empty);
+    (*lower)[farthest] = 0.0;  // its old centre is another one now: labelled afresh next time
     --(*counts)[largest];
     (*counts)[empty] = 1;
   }
 }
 
-/// Moves every non-empty cluster's centre to the mean of its members.
-void UpdateCentres(const std::vector<Feature>& points, const std::vector<int>& labels,
-                   const std::vector<std::size_t>& counts, std::vector<Feature>* centres) {
-  for (std::size_t j = 0; j < centres->size(); ++j) {
-    if (counts[j] != 0) (*centres)[j].setZero();
+/// Moves every non-empty cluster's centre to the mean of its members, and records how far each
+/// centre moved.
+void UpdateCentres(const std::vector<Feature>& points, Workspace* w) {
+  std::vector<Feature>& centres = w->centres;
+  w->previous_centres = centres;
+  for (std::size_t j = 0; j < centres.size(); ++j) {
+    if (w->counts[j] != 0) centres[j].setZero();
   }
-  for (std::size_t i = 0; i < points.size(); ++i) (*centres)[labels[i]] += points[i];
-  for (std::size_t j = 0; j < centres->size(); ++j) {
-    if (counts[j] != 0) (*centres)[j] /= static_cast<double>(counts[j]);
+  for (std::size_t i = 0; i < points.size(); ++i) centres[w->labels[i]] += points[i];
+  w->moved.resize(centres.size());
+  for (std::size_t j = 0; j < centres.size(); ++j) {
+    if (w->counts[j] != 0) centres[j] /= static_cast<double>(w->counts[j]);
+    w->moved[j] = (centres[j] - w->previous_centres[j]).norm();
   }
 }
 
@@ -142,13 +200,17 @@ void CompareWithNewestCentre(const std::vector<Feature>& points, Workspace* work
   const Feature& centre = workspace->centres.back();
   const int label = static_cast<int>(workspace->centres.size()) - 1;
   std::vector<double>& nearest = workspace->nearest_squared_distances;
+  std::vector<double>& second = workspace->second_squared_distances;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const double distance = (points[i] - centre).squaredNorm();
     if (distance < nearest[i]) {
+      second[i] = nearest[i];
       nearest[i] = distance;
       workspace->labels[i] = label;
     } else if (!(distance >= nearest[i])) {
       nearest[i] = distance;  // a NaN distance (a non-finite contact) sticks and never wins
+    } else if (distance < second[i]) {
+      second[i] = distance;
     }
   }
 }
@@ -164,6 +226,7 @@ void SeedCentres(const std::vector<Feature>& points, std::size_t cluster_count,
   const std::vector<double>& nearest = workspace->nearest_squared_distances;
   centres.assign(1, points[0]);
   workspace->nearest_squared_distances.assign(points.size(), kInf);
+  workspace->second_squared_distances.assign(points.size(), kInf);
   workspace->labels.assign(points.size(), 0);
   CompareWithNewestCentre(points, workspace);
   while (centres.size() < cluster_count) {
@@ -188,13 +251,18 @@ bool RunKMeans(const std::vector<Feature>& points, std::size_t cluster_count,
                Workspace* workspace) {
   SeedCentres(points, cluster_count, workspace);
   workspace->counts.resize(workspace->centres.size());
+  workspace->upper.resize(points.size());
+  workspace->lower.resize(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    workspace->upper[i] = std::sqrt(workspace->nearest_squared_distances[i]);
+    workspace->lower[i] = std::sqrt(workspace->second_squared_distances[i]);
+  }
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
-    if (iteration > 0 && !AssignLabels(points, workspace->centres, &workspace->labels)) {
-      return true;
-    }
+    if (iteration > 0 && !AssignLabels(points, workspace)) return true;
     CountMembers(workspace->labels, &workspace->counts);
-    ReseedEmptyClusters(points, workspace->centres, &workspace->labels, &workspace->counts);
-    UpdateCentres(points, workspace->labels, workspace->counts, &workspace->centres);
+    ReseedEmptyClusters(points, workspace->centres, &workspace->labels, &workspace->counts,
+                        &workspace->lower);
+    UpdateCentres(points, workspace);
   }
   return false;
 }

@@ -240,10 +240,18 @@ Vec3 PairNormal(const MeshPair& m, const PairCandidate& c, double* signed_distan
   const Vec3& q = c.hit.point_b;
   const double d = c.hit.distance;
   if (!c.crossing) {
-    const Triangle3 tri_a = m.TriangleA(c.hit.triangle_a);
-    const Triangle3 tri_b = m.TriangleB(c.hit.triangle_b);
-    const FacePlace q_place = PlaceOnFace(m.b, c.hit.triangle_b, BarycentricCoordinates(q, tri_b));
-    const FacePlace p_place = PlaceOnFace(m.a, c.hit.triangle_a, BarycentricCoordinates(p, tri_a));
+    // a closest point that is a corner (TrianglePairHit::foot) lies on a vertex: kElsewhere
+    using Foot = TrianglePairHit::Foot;
+    const FacePlace q_place =
+        c.hit.foot == Foot::kCornerOfBOverA
+            ? FacePlace::kElsewhere
+            : PlaceOnFace(m.b, c.hit.triangle_b,
+                          BarycentricCoordinates(q, m.TriangleB(c.hit.triangle_b)));
+    const FacePlace p_place =
+        c.hit.foot == Foot::kCornerOfAOverB
+            ? FacePlace::kElsewhere
+            : PlaceOnFace(m.a, c.hit.triangle_a,
+                          BarycentricCoordinates(p, m.TriangleA(c.hit.triangle_a)));
     // parallel faces: their closest points are an arbitrary spot of the overlap; the vertex
     // contacts (CollectVertexHits) hold such faces at their corners instead
     if (q_place == FacePlace::kInterior && p_place == FacePlace::kInterior) return Vec3::Zero();
@@ -322,13 +330,18 @@ void SelectPairs(int triangles_a, int triangles_b, MeshMeshScratch* s) {
 constexpr double kPlaneSlack = 1e-9;
 
 // A face of the other mesh that CollectVertexHits holds vertices against, in a's frame. Its
-// barycentric map is made on first use: most vertices are turned away by the plane alone.
+// barycentric map is made on first use: most vertices are turned away by the face's plane or
+// by the ball about its centroid that holds it.
 struct FaceFrame {
   FaceFrame(const MeshPair& m, int face_index, bool face_of_b)
       : face(face_index),
         triangle(face_of_b ? m.TriangleB(face) : m.TriangleA(face)),
         outward(face_of_b ? Vec3(m.X_ab.linear() * m.b.triangle_normals()[face])
-                          : m.a.triangle_normals()[face]) {}
+                          : m.a.triangle_normals()[face]),
+        centroid((triangle[0] + triangle[1] + triangle[2]) / 3.0),
+        radius(std::sqrt(std::max({(triangle[0] - centroid).squaredNorm(),
+                                   (triangle[1] - centroid).squaredNorm(),
+                                   (triangle[2] - centroid).squaredNorm()}))) {}
 
   const BarycentricMap& ToFace() const {
     if (!to_face) to_face.emplace(triangle);
@@ -338,6 +351,8 @@ struct FaceFrame {
   int face;
   Triangle3 triangle;
   Vec3 outward;
+  Vec3 centroid;
+  double radius;  ///< of the ball about the centroid that holds the triangle
 
  private:
   mutable std::optional<BarycentricMap> to_face;
@@ -347,7 +362,10 @@ struct FaceFrame {
 // project onto the face or its boundary (aligned boxes put corners on the partner's edges).
 std::optional<VertexHit> VertexOverFace(const FaceFrame& f, int vertex, const Vec3& v,
                                         double tolerance, bool from_a) {
-  if (!(std::abs(f.outward.dot(v - f.triangle[0])) <= tolerance + kPlaneSlack)) {
+  // a vertex over the face within the tolerance is within radius + tolerance of the centroid
+  const double reach = f.radius + tolerance + kPlaneSlack;
+  if (!(std::abs(f.outward.dot(v - f.triangle[0])) <= tolerance + kPlaneSlack) ||
+      !((v - f.centroid).squaredNorm() <= reach * reach)) {
     return std::nullopt;  // also turns NaN away, as the exact test below would
   }
   const Vec3 barycentric = f.ToFace()(v);
@@ -395,6 +413,23 @@ void KeepNearest(const VertexHit& hit, MeshMeshScratch* s) {
   }
 }
 
+// True when no corner of b's candidate triangles lies within `reach` of a's bounds: none of them
+// can then lie over a face of a within the tolerance. A terrain's far corners under a small
+// mesh are turned away at once instead of face by face.
+bool NoVertexOfBNearA(const MeshPair& m, double reach, const MeshMeshScratch& s) {
+  const Eigen::AlignedBox3d& bounds = m.a.local_bounds();
+  for (const PairCandidate& c : s.candidates) {
+    for (const int vertex : m.b.mesh().triangles[c.hit.triangle_b]) {
+      const Vec3& v = m.VertexB(vertex);
+      // written so that a NaN coordinate counts as near (the exact tests decide then)
+      if (!((v - bounds.max()).maxCoeff() > reach || (bounds.min() - v).maxCoeff() > reach)) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 // The vertices of one mesh that lie over a face of the other within `tolerance` (or behind it by
 // less than `tolerance`), each with its nearest face: a face resting on a face touches at its
 // corners, which the closest points of triangle pairs alone do not find. `from_a` picks whose
@@ -402,10 +437,12 @@ void KeepNearest(const VertexHit& hit, MeshMeshScratch* s) {
 void CollectVertexHits(const MeshPair& m, double tolerance, bool from_a, MeshMeshScratch* s) {
   const CollisionGeometry& own = from_a ? m.a : m.b;
   const CollisionGeometry& other = from_a ? m.b : m.a;
+  s->vertices.clear();
+  s->vertex_hits.clear();
+  if (!from_a && NoVertexOfBNearA(m, tolerance + kPlaneSlack, *s)) return;
   GroupByFace(from_a, other.mesh().triangle_count(), s);
   s->nearest_face.Clear(own.mesh().vertices.size());
   s->tested_face.Clear(own.mesh().vertices.size());
-  s->vertices.clear();
   for (const int face : s->faces) {
     const FaceFrame frame(m, face, from_a);
     for (int i = s->first_of_face[face]; i >= 0; i = s->next_of_face[i]) {
@@ -423,7 +460,6 @@ void CollectVertexHits(const MeshPair& m, double tolerance, bool from_a, MeshMes
     }
   }
   std::sort(s->vertices.begin(), s->vertices.end());
-  s->vertex_hits.clear();
   for (const int vertex : s->vertices) s->vertex_hits.push_back(s->nearest_face[vertex]);
 }
 
