@@ -265,6 +265,11 @@ void DirectSolver::Refine(const std::vector<NewtonBody>& bodies, const std::vect
   v += push;
 }
 
+// Rounds whose friction bounds follow the normal forces at once; later rounds move the bounds
+// halfway, which damps the back-and-forth of contacts whose normal force and friction feed each
+// other (a wheel on rough ground) without moving the fixed point the rounds settle on.
+constexpr int kUndampedRounds = 10;
+
 bool DirectSolver::Solve(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
                          double step, const DirectOptions& options, NewtonResult* result) {
   step_ = step;
@@ -295,20 +300,25 @@ bool DirectSolver::Solve(const std::vector<NewtonBody>& bodies, const std::vecto
   state_.assign(static_cast<size_t>(n), 0);
   int budget = options.max_pivots;
   bool settled = n == 0;
+  Eigen::VectorXd used_lo, used_hi;  // the bounds of the last round
   while (!settled && result->rounds < options.max_rounds) {
     ++result->rounds;
     SetBounds(rows);
+    if (result->rounds > kUndampedRounds) {  // halfway from the last round's bounds
+      lo_ = 0.5 * (lo_ + used_lo);
+      hi_ = 0.5 * (hi_ + used_hi);
+    }
+    used_lo = lo_;
+    used_hi = hi_;
     for (Eigen::Index k = 0; k < n; ++k) {  // λ into the bounds; the rows at a bound stay there
       lambda_(k) = std::clamp(lambda_(k), lo_(k), hi_(k));
       state_[k] = lambda_(k) <= lo_(k) ? -1 : (lambda_(k) >= hi_(k) ? 1 : 0);
     }
     if (!BoxSolve(&budget)) break;
-    const Eigen::VectorXd before_lo = lo_, before_hi = hi_;
     SetBounds(rows);
     settled = true;
     for (Eigen::Index k = 0; k < n && settled; ++k) {
-      const double change =
-          std::max(std::abs(lo_(k) - before_lo(k)), std::abs(hi_(k) - before_hi(k)));
+      const double change = std::max(std::abs(lo_(k) - used_lo(k)), std::abs(hi_(k) - used_hi(k)));
       settled = change <= options.bound_tolerance * std::max(hi_(k) - lo_(k), 1e-12);
     }
   }

@@ -21,7 +21,8 @@
 // part of G: 20 to 60 rows on a humanoid); friction bounds follow the normal forces in rounds as
 // in the Newton solver (newton_solver.h: where friction saturates this is the consistent answer,
 // where Dantzig fixes a bound from the normal force of the moment it pivots the row in; with
-// friction the law may have more than one answer). A solve that does not settle within its
+// friction the law may have more than one answer); after ten rounds the bounds move halfway,
+// which damps rounds that swing back and forth. A solve that does not settle within its
 // budget reports no convergence and the caller hands the island back to dWorldStep
 // (object_islands.h).
 //

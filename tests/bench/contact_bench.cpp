@@ -38,8 +38,7 @@ std::shared_ptr<const core::CollisionGeometry> Mesh(const std::string& relative,
 }
 
 struct BallOnSlab {
-  std::shared_ptr<const core::CollisionGeometry> ball =
-      Mesh("klampt/objects/sphere.off", 0.1);
+  std::shared_ptr<const core::CollisionGeometry> ball = Mesh("klampt/objects/sphere.off", 0.1);
   std::shared_ptr<const core::CollisionGeometry> slab = Mesh("klampt/terrains/block.off", 1.0);
   core::Pose ball_pose = core::Pose::Identity();
   core::NearPairCache cache;
@@ -51,8 +50,8 @@ struct BallOnSlab {
   bool Loaded() const { return ball != nullptr && slab != nullptr; }
   void Contacts(core::ContactList* out) {
     out->clear();
-    core::MeshMeshContacts(*ball, ball_pose, kPadding, *slab, core::Pose::Identity(), kPadding,
-                           out, &cache);
+    core::MeshMeshContacts(*ball, ball_pose, kPadding, *slab, core::Pose::Identity(), kPadding, out,
+                           &cache);
   }
   core::ContactList Merged() {
     core::ContactList contacts;
@@ -74,7 +73,9 @@ void BM_BallOnSlabContacts(benchmark::State& state) {
   }
   state.counters["contacts"] = static_cast<double>(contacts.size());
 }
-BENCHMARK(BM_BallOnSlabContacts)->Name("Contacts/ball_on_slab/mesh_mesh")->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_BallOnSlabContacts)
+    ->Name("Contacts/ball_on_slab/mesh_mesh")
+    ->Unit(benchmark::kMicrosecond);
 
 void BM_BallOnSlabMerge(benchmark::State& state) {
   BallOnSlab scene;
@@ -105,7 +106,9 @@ void BM_BallOnSlabCluster(benchmark::State& state) {
   if (contacts.size() != kMaxContacts) return state.SkipWithError("not reduced to 20 contacts");
   state.counters["in"] = static_cast<double>(merged.size());
 }
-BENCHMARK(BM_BallOnSlabCluster)->Name("Contacts/ball_on_slab/cluster")->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_BallOnSlabCluster)
+    ->Name("Contacts/ball_on_slab/cluster")
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace lamina::bench

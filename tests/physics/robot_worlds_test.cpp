@@ -57,11 +57,16 @@ void ExpectAthleteStands(const core::SolverSettings& solver) {
   const core::SimStatistics& stats = simulator.statistics();
   std::printf(
       "athlete: base (%g %g %g) -> (%g %g %g), %ld steps, %ld rollbacks, %ld corrections, "
-      "max penetration %g m, wall %.2f s\n",
+      "max penetration %g m, %ld of %ld direct solves handed back, wall %.2f s\n",
       at_three.x(), at_three.y(), at_three.z(), BasePosition(simulator).x(),
       BasePosition(simulator).y(), BasePosition(simulator).z(), stats.steps, stats.rollbacks,
-      stats.instability_corrections, stats.max_penetration, wall);
+      stats.instability_corrections, stats.max_penetration,
+      static_cast<long>(stats.direct_fallbacks), static_cast<long>(stats.direct_islands), wall);
   ASSERT_NE(stats.worst_status, core::StepStatus::kError) << stats.error;
+  // the wheels' friction and normal forces feed each other on the rough ground: the direct
+  // solve's damped friction rounds settle (without the damping 4 % of the steps went back to
+  // dWorldStep)
+  EXPECT_LE(stats.direct_fallbacks, stats.direct_islands / 100);
   EXPECT_LT((BasePosition(simulator) - at_three).norm(), 0.01);
   EXPECT_LT(stats.max_penetration, 0.0025 + 0.0025);  // within the two paddings
   EXPECT_EQ(stats.instability_corrections, 0);
