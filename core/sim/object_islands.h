@@ -37,10 +37,16 @@ namespace lamina::core {
 class ObjectIslands {
  public:
   struct Statistics {
-    long long islands = 0;     ///< islands solved by the Newton solver
-    long long fallbacks = 0;   ///< islands handed back to ODE's solver (no convergence)
-    long long iterations = 0;  ///< Newton steps in all
+    long long islands = 0;           ///< islands taken (by either solver)
+    long long fallbacks = 0;         ///< islands handed back to ODE's solver (no convergence)
+    long long iterations = 0;        ///< Newton steps or active-set changes in all
+    long long newton_islands = 0;    ///< islands the Newton solver was given
+    long long direct_islands = 0;    ///< islands the direct solve was given
+    long long direct_fallbacks = 0;  ///< of those, not settled (then Newton's, or ODE's)
   };
+
+  /// Newton steps a large robot's island gets before the direct solve (SolveNewton).
+  static constexpr int kNewtonStepsBeforeDirect = 1;
 
   ObjectIslands();
   ~ObjectIslands();
@@ -48,8 +54,12 @@ class ObjectIslands {
   ObjectIslands& operator=(const ObjectIslands&) = delete;
 
   /// Starts a step over world ids 0 … count-1. `exact`: the islands are the exact solver's
-  /// (its robots: solved directly, direct_solver.h) rather than the Newton solver's.
-  void Begin(int count, bool exact = false);
+  /// (its robots: solved directly, direct_solver.h) rather than the Newton solver's. Under the
+  /// Newton solver an island with a robot joint and at least `direct_bodies` bodies (0: none)
+  /// that takes more than kNewtonStepsBeforeDirect Newton steps is solved directly (the same
+  /// law, without twenty Newton steps over a long chain), and goes to dWorldStep when that does
+  /// not settle.
+  void Begin(int count, bool exact = false, int direct_bodies = 0);
   /// `id`'s island is ODE's (a body with a persistent ODE joint, dragged, a robot the Newton
   /// solver does not take).
   void MarkOde(int id) { ode_[Root(id)] = 1; }
@@ -80,6 +90,8 @@ class ObjectIslands {
   int Root(int id);
   int IslandOf(size_t item);  ///< item: a kept contact, then kept joints after them
   void SolveIsland(dxWorld* world, dxJointGroup* group, double step);
+  bool SolveDirectly(double step);
+  bool SolveNewton(bool large_robot, double step);
   bool BuildIsland(dxWorld* world, double step);
   void HandBack(dxWorld* world, dxJointGroup* group);
 
@@ -92,6 +104,7 @@ class ObjectIslands {
   std::unique_ptr<Island> island_;
   Statistics statistics_;
   bool exact_ = false;
+  int direct_bodies_ = 0;  ///< Begin
 };
 
 }  // namespace lamina::core

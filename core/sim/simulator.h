@@ -307,7 +307,9 @@ class Simulator {
   void SetReuseContactPairs(bool reuse) { contacts_.SetReusePairs(reuse); }
   /// Whether the exact solver solves the islands of robots with at least kDirectRobotBodies
   /// bodies directly (on by default: direct_solver.h) or leaves them to dWorldStep's own LCP,
-  /// as other islands. For tests and comparisons; SetDirectRobotMinimumBodies changes the size.
+  /// as other islands; and whether the Newton solver's islands with such a robot are solved
+  /// directly first (the Newton solver takes them when that does not settle). For tests and
+  /// comparisons; SetDirectRobotMinimumBodies changes the size.
   void SetDirectRobotSolve(bool direct) { direct_robots_ = direct; }
   void SetDirectRobotMinimumBodies(int bodies) { direct_min_bodies_ = bodies; }
   /// dWorldStep's dense LCP grows as the cube of a robot's rows, the direct solve about as its

@@ -151,7 +151,7 @@ void Simulator::KeepRobotJoints(int robot) {
 // joints) and the dragged body stay with ODE's solver, and so does every island they are in; a
 // free body touching a sleeping one too (ODE would wake it through the joint)
 void Simulator::PrepareObjectIslands(bool exact) {
-  islands_.Begin(bodies_.size(), exact);
+  islands_.Begin(bodies_.size(), exact, direct_robots_ ? direct_min_bodies_ : 0);
   for (int r = 0; r < robot_count(); ++r) {
     if (RobotForIslands(r) && (!exact || OwnBodies(r) >= direct_min_bodies_)) {
       KeepRobotJoints(r);

@@ -51,8 +51,12 @@ struct SimStatistics {
   long newton_islands = 0;     ///< object islands the Newton solver took
   long newton_fallbacks = 0;   ///< of those, handed back to ODE's solver (no convergence)
   long newton_iterations = 0;  ///< Newton steps in all
-  long direct_islands = 0;     ///< robot islands the exact solver solved directly (direct_solver.h)
-  long direct_fallbacks = 0;   ///< of those, handed back to dWorldStep (no convergence)
+  /// robot islands solved directly (direct_solver.h): the exact solver's robots, and under the
+  /// Newton solver the islands with a robot of at least Simulator::kDirectRobotBodies bodies
+  /// that one Newton step did not settle (object_islands.h)
+  long direct_islands = 0;
+  /// of those, not settled: handed back to dWorldStep
+  long direct_fallbacks = 0;
   StepStatus worst_status = StepStatus::kNormal;
   std::string error;  ///< what stopped the simulation (kError)
   SimTimeSplit time_split;
