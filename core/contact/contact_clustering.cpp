@@ -70,30 +70,14 @@ Feature MakeFeature(const Contact& contact, double normal_scale) {
   return feature;
 }
 
-/// Index of the centre nearest to `point`, the lowest index on ties. A non-finite point compares
+/// Index of the centre nearest to `point`, the lowest index on ties, with the squared distances
+/// to it and to the next nearest centre (infinite with one centre). A non-finite point compares
 /// false against everything and stays with centre 0.
-int NearestCentre(const Feature& point, const std::vector<Feature>& centres) {
-  int best = 0;
-  double best_distance = (point - centres[0]).squaredNorm();
-  for (std::size_t j = 1; j < centres.size(); ++j) {
-    const double distance = (point - centres[j]).squaredNorm();
-    if (distance < best_distance) {
-      best_distance = distance;
-      best = static_cast<int>(j);
-    }
-  }
-  return best;
-}
-
-/// NearestCentre (the same distances, the same ties), also giving the squared distances to the
-/// nearest centre and to the next nearest (infinite with one centre).
 int NearestTwoCentres(const Feature& point, const std::vector<Feature>& centres, double* best,
                       double* second) {
   int nearest = 0;
-  *best = (point - centres[0]).squaredNorm();
-  *second = kInf;
+  double first = (point - centres[0]).squaredNorm(), next = kInf;
   // selects rather than branches: which centre is nearest changes unpredictably
-  double first = *best, next = kInf;
   for (std::size_t j = 1; j < centres.size(); ++j) {
     const double distance = (point - centres[j]).squaredNorm();
     const bool nearer = distance < first;
@@ -104,6 +88,11 @@ int NearestTwoCentres(const Feature& point, const std::vector<Feature>& centres,
   *best = first;
   *second = next;
   return nearest;
+}
+
+int NearestCentre(const Feature& point, const std::vector<Feature>& centres) {
+  double best = 0.0, second = 0.0;
+  return NearestTwoCentres(point, centres, &best, &second);
 }
 
 // Relative margin by which a bound must win before a point is left with its centre: the bounds
