@@ -297,7 +297,9 @@ void ExpectHrp2StandsWithTheNewtonSolver(bool direct) {
   EXPECT_GE(statistics.newton_islands, statistics.steps);  // the robot's island, every step
   std::printf("hrp2 (newton): %ld islands, %ld solved directly, %ld of those handed back\n",
               statistics.newton_islands, statistics.direct_islands, statistics.direct_fallbacks);
-  if (!direct) EXPECT_EQ(statistics.direct_islands, 0);
+  if (!direct) {
+    EXPECT_EQ(statistics.direct_islands, 0);
+  }
   EXPECT_LE(statistics.direct_fallbacks, statistics.steps / 100);
   EXPECT_EQ(statistics.newton_fallbacks, 0);
 }
