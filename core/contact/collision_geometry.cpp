@@ -439,8 +439,9 @@ bool TrianglesNearBounds(const FclModel& model, const Eigen::AlignedBox3d& bound
 
 // Every pair of a triangle of a and a triangle of b (placed in a's frame by R, T) within the
 // tolerance. Each path only narrows down the candidates; the test of a pair is always the
-// same: the triangles' bounds and planes, then FCL's exact triangle distance with b's corners
-// computed as R v + T (as FCL itself maps them), so all paths report bitwise the same pairs.
+// same: the triangles' bounds and planes, then the exact triangle distance (Measure) with b's
+// corners computed as R v + T (as FCL itself maps them), so all paths report bitwise the same
+// pairs.
 class NearPairSearch {
  public:
   // Reports into `hits` the pairs within `tolerance`, or, with `candidates`, collects the pairs
@@ -462,8 +463,8 @@ class NearPairSearch {
     scratch_.placed_volumes.Clear(b.model.getNumBVs());
   }
 
-  // FCL's distance of every pair, without the cheap tests that spare most pairs: what the
-  // searches below must reproduce bitwise.
+  // The exact distance (Measure) of every pair, without the cheap tests that spare most pairs:
+  // what the searches below must reproduce bitwise.
   void Reference() const {
     for (int ta = 0; ta < a_.model.num_tris; ++ta) {
       for (int tb = 0; tb < b_.model.num_tris; ++tb) Measure(ta, tb, PlacedOfB(tb));
@@ -584,12 +585,14 @@ class NearPairSearch {
         k >= 0) {
       hit.foot = Foot::kCornerOfBOverA;
       hit.corner = k;
+      hit.distance = std::abs(height);
       hit.point_b = placed.corners[k];
       hit.point_a = hit.point_b - height * plane_a.normal;
     } else if (const int j = CornerOverFace(placed.plane, placed.edges, corners_a, &height);
                j >= 0) {
       hit.foot = Foot::kCornerOfAOverB;
       hit.corner = j;
+      hit.distance = std::abs(height);
       hit.point_a = corners_a[j];
       hit.point_b = hit.point_a - height * placed.plane.normal;
     } else {
@@ -599,7 +602,6 @@ class NearPairSearch {
       hit.point_a = p;
       hit.point_b = q;
     }
-    if (hit.foot != Foot::kGeneral) hit.distance = std::abs(height);
     if (hit.distance <= tolerance_) hits_->push_back(hit);
   }
 

@@ -101,7 +101,7 @@ struct TrianglePairHit {
 /// bitwise the same pairs; they differ only in speed.
 enum class PairSearch {
   kAuto,             ///< the fastest for the two meshes' sizes
-  kReference,        ///< FCL's triangle distance of every pair, nothing pruned (for tests)
+  kReference,        ///< the exact distance of every pair, nothing pruned (for tests)
   kEveryPair,        ///< every triangle of a against every triangle of b
   kSmallerInLarger,  ///< the smaller mesh's bounds through the larger mesh's hierarchy
   kBothHierarchies,  ///< a traversal of both hierarchies

@@ -171,7 +171,6 @@ void ObjectIslands::SolveIsland(dWorldID world, dJointGroupID group, double step
   const bool large_robot = direct_bodies_ > 0 && !island.joint_members.empty() &&
                            static_cast<int>(island.bodies.size()) >= direct_bodies_;
   const bool converged = built && (exact_ ? SolveDirectly(step) : SolveNewton(large_robot, step));
-  if (!exact_) ++statistics_.newton_islands;
   if (!converged) {
     ++statistics_.fallbacks;
     HandBack(world, group);
@@ -197,26 +196,16 @@ bool ObjectIslands::SolveDirectly(double step) {
 // the direct solve, and dWorldStep when that does not settle (the Newton solver's whole budget
 // then seldom did either: ATHLETE on fractal terrain, 197 of 198): where few rows change their
 // law (a humanoid standing on a plane) one Newton step is the cheapest answer, where many do
-// (feet and wheels on rough ground: 20 Newton steps and more) one direct solve is. Robot
-// benchmarks, real-time factor, Newton's whole budget -> this: hrp2_plane 6.5x -> 7.4x,
-// hrp2_rough 0.52x -> 1.3x, athlete_fractal_1 2.4x -> 4.7x.
+// (feet and wheels on rough ground: 20 Newton steps and more) one direct solve is (the robot
+// benchmarks of docs/simulator.md).
 bool ObjectIslands::SolveNewton(bool large_robot, double step) {
   Island& island = *island_;
   NewtonOptions options;
-  if (large_robot) {
-    NewtonOptions first_try;
-    first_try.max_iterations = kNewtonStepsBeforeDirect;
-    if (island.solver.Solve(island.bodies, island.rows, step, first_try, &island.result)) {
-      statistics_.iterations += island.result.iterations;
-      return true;
-    }
-    statistics_.iterations += island.result.iterations;
-    return SolveDirectly(step);  // (where it does not settle, more Newton steps seldom do)
-  }
+  if (large_robot) options.max_iterations = kNewtonStepsBeforeDirect;
   const bool converged =
       island.solver.Solve(island.bodies, island.rows, step, options, &island.result);
   statistics_.iterations += island.result.iterations;
-  return converged;
+  return converged || !large_robot ? converged : SolveDirectly(step);
 }
 
 // the island's bodies (a robot's children first, then its parents: the order the joints were

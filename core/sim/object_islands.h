@@ -40,9 +40,8 @@ class ObjectIslands {
     long long islands = 0;           ///< islands taken (by either solver)
     long long fallbacks = 0;         ///< islands handed back to ODE's solver (no convergence)
     long long iterations = 0;        ///< Newton steps or active-set changes in all
-    long long newton_islands = 0;    ///< islands the Newton solver was given
     long long direct_islands = 0;    ///< islands the direct solve was given
-    long long direct_fallbacks = 0;  ///< of those, not settled (then Newton's, or ODE's)
+    long long direct_fallbacks = 0;  ///< of those, not settled (then ODE's)
   };
 
   /// Newton steps a large robot's island gets before the direct solve (SolveNewton).

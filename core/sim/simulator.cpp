@@ -487,7 +487,7 @@ void Simulator::BuildConstraints(double step) {
     statistics_.direct_islands += after.direct_islands - before.direct_islands;
     statistics_.direct_fallbacks += after.direct_fallbacks - before.direct_fallbacks;
     if (newton) {
-      statistics_.newton_islands += after.newton_islands - before.newton_islands;
+      statistics_.newton_islands += after.islands - before.islands;
       statistics_.newton_fallbacks += after.fallbacks - before.fallbacks;
       statistics_.newton_iterations += after.iterations - before.iterations;
     }

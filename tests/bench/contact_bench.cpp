@@ -4,6 +4,7 @@
 // simulator meets it every step. Contacts: the mesh-mesh contacts with kept triangle pairs (the
 // ball still, so every call after the first reuses them); Merge: folding coincident contacts;
 // Cluster: k-means down to the world's 20. Each checks its answer once before timing.
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,6 +17,7 @@
 #include "core/contact/near_pair_cache.h"
 #include "core/io/mesh_file.h"
 #include "core/math_types.h"
+#include "core/sim/contact_set.h"
 
 namespace lamina::bench {
 namespace {
@@ -23,7 +25,9 @@ namespace {
 constexpr double kPadding = 0.04;  // each side, as the ball's padding with the slab's margin
 constexpr double kSunk = 0.03;     // of the 8 cm layer
 constexpr int kMaxContacts = 20;
-constexpr double kMergeRadius = 0.05 * 2 * kPadding;  // contact_set.h: kMergeFraction
+// as FindPairContacts merges them (contact_set.h)
+constexpr double kMergeRadius =
+    std::max(core::kMergeFraction * 2 * kPadding, core::kMinimumMergeRadius);
 
 std::shared_ptr<const core::CollisionGeometry> Mesh(const std::string& relative, double scale) {
   core::Diagnostics diagnostics;

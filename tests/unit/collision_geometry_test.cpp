@@ -308,7 +308,7 @@ void ExpectComplete(const CollisionGeometry& a, const CollisionGeometry& b, cons
 }
 
 // b at `poses` random poses (a's frame, from `random_pose`): every search reports bitwise the
-// same pairs as FCL's distance of every pair with nothing pruned, in (triangle_a, triangle_b)
+// same pairs as the exact distance of every pair with nothing pruned, in (triangle_a, triangle_b)
 // order, and no near pair is missed. Returns how many poses had pairs.
 template <typename RandomPose>
 int CompareSearches(const CollisionGeometry& a, const CollisionGeometry& b, int poses,
