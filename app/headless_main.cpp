@@ -183,6 +183,7 @@ struct RunOptions {
   bool no_error_meter = false;    ///< run without the live accuracy meter
   bool no_pair_reuse = false;     ///< search the mesh hierarchies every step
   bool ode_robots = false;        ///< the exact solver leaves robots to dWorldStep's LCP
+  bool ode_objects = false;       ///< and object islands
   std::vector<std::string> sets;  ///< --set PATH=VALUE
   std::vector<std::string> gets;  ///< --get PATH
   std::string sensor_images;      ///< --sensor-images DIR
@@ -290,6 +291,7 @@ int RunSimulation(const RunOptions& options) {
   simulator.SetErrorMeter(!options.no_error_meter);
   simulator.SetReuseContactPairs(!options.no_pair_reuse);
   simulator.SetDirectRobotSolve(!options.ode_robots);
+  simulator.SetNewtonObjectIslands(!options.ode_objects);
   if (!ApplySimulationSets(*later, &simulator)) return 2;
   const auto targets = ResolveGets(options.gets, simulator);
   if (!targets) return 2;
@@ -356,6 +358,10 @@ int main(int argc, char** argv) {
   run->add_flag("--ode-robots", run_options.ode_robots,
                 "with the exact solver, leave robots to dWorldStep's own LCP instead of the "
                 "direct solve of their islands (the same law; for comparisons)");
+  run->add_flag("--ode-objects", run_options.ode_objects,
+                "with the exact solver, leave islands of free objects with many contacts to "
+                "dWorldStep's own LCP instead of the Newton solver (the same law; for "
+                "comparisons)");
   run->add_flag("--sleep", run_options.sleep,
                 "let idle objects sleep (leave the steps until something touches them)");
   CLI::Option* path = run->add_option("--path", run_options.motion,

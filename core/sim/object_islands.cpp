@@ -55,9 +55,10 @@ ObjectIslands::~ObjectIslands() = default;
 
 // ---- islands ------------------------------------------------------------------------------
 
-void ObjectIslands::Begin(int count, bool exact, int direct_bodies) {
+void ObjectIslands::Begin(int count, bool exact, int direct_bodies, int newton_contacts) {
   exact_ = exact;
   direct_bodies_ = direct_bodies;
+  newton_contacts_ = newton_contacts;
   parent_.resize(count);
   std::iota(parent_.begin(), parent_.end(), 0);
   ode_.assign(count, 0);
@@ -166,13 +167,21 @@ void ObjectIslands::Island::AddBody(int id, dBodyID body, dWorldID world, double
 
 void ObjectIslands::SolveIsland(dWorldID world, dJointGroupID group, double step) {
   Island& island = *island_;
+  const bool robot = !island.joint_members.empty();
+  if (exact_ && !robot && island.members.size() < static_cast<size_t>(newton_contacts_)) {
+    HandBack(world, group);  // few rows: dWorldStep's own LCP is the cheaper exact answer
+    return;
+  }
   ++statistics_.islands;
   const bool built = BuildIsland(world, step);
-  const bool large_robot = direct_bodies_ > 0 && !island.joint_members.empty() &&
-                           static_cast<int>(island.bodies.size()) >= direct_bodies_;
-  const bool converged = built && (exact_ ? SolveDirectly(step) : SolveNewton(large_robot, step));
+  const bool large_robot =
+      direct_bodies_ > 0 && robot && static_cast<int>(island.bodies.size()) >= direct_bodies_;
+  const bool newton = !exact_ || !robot;
+  statistics_.newton_islands += newton;
+  const bool converged = built && (newton ? SolveNewton(large_robot, step) : SolveDirectly(step));
   if (!converged) {
     ++statistics_.fallbacks;
+    statistics_.newton_fallbacks += newton;
     HandBack(world, group);
     return;
   }
@@ -187,7 +196,6 @@ bool ObjectIslands::SolveDirectly(double step) {
   Island& island = *island_;
   ++statistics_.direct_islands;
   const bool settled = island.direct.Solve(island.bodies, island.rows, step, {}, &island.result);
-  statistics_.iterations += island.result.iterations;
   if (!settled) ++statistics_.direct_fallbacks;
   return settled;
 }

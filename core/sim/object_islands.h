@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The share of a step that Lamina's own solvers take: under solver "newton" every island of free
 // rigid objects, robots and their contacts (newton_solver.h); under the exact solver ("step")
-// every island of a robot and its contacts with the fixed world, solved directly
-// (direct_solver.h: dWorldStep's answer without its dense matrix of every row). Below, "the
+// the islands where dWorldStep's dense LCP is the costly answer: a robot's island with the fixed
+// world, solved directly (direct_solver.h: dWorldStep's answer without its dense matrix of every
+// row), and an island of free objects with many contacts, solved by the Newton solver (a ball on
+// a mesh with 20 contacts: 60 rows in dWorldStep's matrix, 6 velocities in Newton's). Below, "the
 // solver" is whichever takes the island.
 //
 // - The contact joints of such an island are kept as dContacts instead of being created in ODE.
@@ -39,7 +41,9 @@ class ObjectIslands {
   struct Statistics {
     long long islands = 0;           ///< islands taken (by either solver)
     long long fallbacks = 0;         ///< islands handed back to ODE's solver (no convergence)
-    long long iterations = 0;        ///< Newton steps or active-set changes in all
+    long long newton_islands = 0;    ///< islands the Newton solver was given first
+    long long newton_fallbacks = 0;  ///< of those, handed back to ODE's solver
+    long long iterations = 0;        ///< Newton steps in all
     long long direct_islands = 0;    ///< islands the direct solve was given
     long long direct_fallbacks = 0;  ///< of those, not settled (then ODE's)
   };
@@ -53,12 +57,14 @@ class ObjectIslands {
   ObjectIslands& operator=(const ObjectIslands&) = delete;
 
   /// Starts a step over world ids 0 … count-1. `exact`: the islands are the exact solver's
-  /// (its robots: solved directly, direct_solver.h) rather than the Newton solver's. Under the
-  /// Newton solver an island with a robot joint and at least `direct_bodies` bodies (0: none)
-  /// that takes more than kNewtonStepsBeforeDirect Newton steps is solved directly (the same
-  /// law, without twenty Newton steps over a long chain), and goes to dWorldStep when that does
-  /// not settle.
-  void Begin(int count, bool exact = false, int direct_bodies = 0);
+  /// rather than the Newton solver's: an island with a robot joint is solved directly
+  /// (direct_solver.h), one without is the Newton solver's when it holds at least
+  /// `newton_contacts` kept contacts and dWorldStep's otherwise (0: always). Under the Newton
+  /// solver an island with a robot joint and at least `direct_bodies` bodies (0: none) that
+  /// takes more than kNewtonStepsBeforeDirect Newton steps is solved directly (the same law,
+  /// without twenty Newton steps over a long chain), and goes to dWorldStep when that does not
+  /// settle.
+  void Begin(int count, bool exact = false, int direct_bodies = 0, int newton_contacts = 0);
   /// `id`'s island is ODE's (a body with a persistent ODE joint, dragged, a robot the Newton
   /// solver does not take).
   void MarkOde(int id) { ode_[Root(id)] = 1; }
@@ -103,7 +109,8 @@ class ObjectIslands {
   std::unique_ptr<Island> island_;
   Statistics statistics_;
   bool exact_ = false;
-  int direct_bodies_ = 0;  ///< Begin
+  int direct_bodies_ = 0;    ///< Begin
+  int newton_contacts_ = 0;  ///< Begin
 };
 
 }  // namespace lamina::core

@@ -463,13 +463,14 @@ void Simulator::BuildConstraints(double step) {
                   s.friction_anchor_gain, s.friction_anchor_slip);
   const Vec3* anchor_velocities = anchors_.velocities().data();
   const bool newton = s.solver == SolverType::kNewton;
-  // the exact solver solves its robots' islands directly (direct_solver.h)
-  bool direct = false;
+  // the exact solver solves its robots' islands directly (direct_solver.h) and its large
+  // object islands by Newton's method (object_islands.h)
+  bool exact_islands = s.solver == SolverType::kStep && newton_objects_;
   for (int r = 0; r < robot_count() && s.solver == SolverType::kStep && direct_robots_; ++r) {
-    direct = direct || OwnBodies(r) >= direct_min_bodies_;
+    exact_islands = exact_islands || OwnBodies(r) >= direct_min_bodies_;
   }
-  islands_active_ = newton || direct;
-  if (islands_active_) PrepareObjectIslands(direct);
+  islands_active_ = newton || exact_islands;
+  if (islands_active_) PrepareObjectIslands(!newton);
   for (const ContactPair& pair : contacts_.pairs()) {
     // no joint ties a sleeper to what cannot wake it (ODE would enable it through the joint)
     if (!s.sleeping || !sleep_.SleepsAgainstInert(bodies_, pair)) {
@@ -486,11 +487,9 @@ void Simulator::BuildConstraints(double step) {
     const ObjectIslands::Statistics& after = islands_.statistics();
     statistics_.direct_islands += after.direct_islands - before.direct_islands;
     statistics_.direct_fallbacks += after.direct_fallbacks - before.direct_fallbacks;
-    if (newton) {
-      statistics_.newton_islands += after.islands - before.islands;
-      statistics_.newton_fallbacks += after.fallbacks - before.fallbacks;
-      statistics_.newton_iterations += after.iterations - before.iterations;
-    }
+    statistics_.newton_islands += after.newton_islands - before.newton_islands;
+    statistics_.newton_fallbacks += after.newton_fallbacks - before.newton_fallbacks;
+    statistics_.newton_iterations += after.iterations - before.iterations;
   }
 }
 

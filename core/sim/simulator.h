@@ -315,6 +315,16 @@ class Simulator {
   /// dWorldStep's dense LCP grows as the cube of a robot's rows, the direct solve about as its
   /// bodies: HRP-2 (36 bodies) steps 3× faster directly, the TX90L arm (6) 1.8× slower.
   static constexpr int kDirectRobotBodies = 12;
+  /// Whether the exact solver gives an island of free objects with at least
+  /// kNewtonObjectContacts contacts (and no robot) to the Newton solver (on by default:
+  /// object_islands.h; the same row law, its answer where ODE's Dantzig solver is exact, the
+  /// consistent one where friction saturates) or leaves it to dWorldStep's own LCP. For tests
+  /// and comparisons.
+  void SetNewtonObjectIslands(bool newton) { newton_objects_ = newton; }
+  /// dWorldStep's dense LCP grows as the cube of the rows (three per contact), a Newton step
+  /// with the bodies: the 10-box stack's island (40 contacts) takes a fourteenth of dWorldStep's
+  /// solver time, a ball on a mesh (20) a fifth; a block sliding on 4 contacts twice as long.
+  static constexpr int kNewtonObjectContacts = 8;
   /// Hierarchy searches of mesh–mesh pairs, and queries answered from kept candidates.
   long long ContactPairSearches() const { return contacts_.PairCollections(); }
   long long ContactPairReuses() const { return contacts_.PairReuses(); }
@@ -423,12 +433,13 @@ class Simulator {
 
   // contact joints and feedback (simulator_contacts.cpp)
   void AddContactJoints(const ContactPair& pair, const Vec3* anchor_velocities, double step);
-  /// solver "newton": the islands of free objects and robots, before the contact joints
-  /// (object_islands.h)
+  /// The islands of free objects and robots Lamina's solvers take, before the contact joints
+  /// (object_islands.h); `exact`: the exact solver's
   void PrepareObjectIslands(bool exact);
   /// The world id that stands for `id`'s ODE body in the islands (a merged link: the link that
   /// owns the body), or -1 when it does not move freely or sleeps
   int IslandBody(int id) const;
+  bool IsRobotLink(int id) const;
   /// Robot `robot` can go to the Newton solver this step: every body moving freely and awake,
   /// none dragged, no joint on its bodies but its own
   bool RobotForIslands(int robot);
@@ -528,6 +539,7 @@ class Simulator {
   ObjectIslands islands_;  ///< solver "newton": this step's object islands; "step": its robots'
   bool islands_active_ = false;  ///< islands_ takes part in this step
   bool direct_robots_ = true;    ///< SetDirectRobotSolve
+  bool newton_objects_ = true;   ///< SetNewtonObjectIslands
   int direct_min_bodies_ = kDirectRobotBodies;
   SleepTracker sleep_;
   DragState drag_;

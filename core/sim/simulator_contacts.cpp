@@ -149,11 +149,15 @@ void Simulator::KeepRobotJoints(int robot) {
 
 // robots that cannot go to the Newton solver, bodies held by a persistent ODE joint (world
 // joints) and the dragged body stay with ODE's solver, and so does every island they are in; a
-// free body touching a sleeping one too (ODE would wake it through the joint)
+// free body touching a sleeping one too (ODE would wake it through the joint). The exact solver
+// takes its large robots (direct_solver.h) and, with newton_objects_, its islands of free
+// objects (object_islands.h decides by their contacts); a free object touching one of its
+// robots leaves that island to dWorldStep.
 void Simulator::PrepareObjectIslands(bool exact) {
-  islands_.Begin(bodies_.size(), exact, direct_robots_ ? direct_min_bodies_ : 0);
+  islands_.Begin(bodies_.size(), exact, direct_robots_ ? direct_min_bodies_ : 0,
+                 newton_objects_ ? kNewtonObjectContacts : 0);
   for (int r = 0; r < robot_count(); ++r) {
-    if (RobotForIslands(r) && (!exact || OwnBodies(r) >= direct_min_bodies_)) {
+    if (RobotForIslands(r) && (!exact || (direct_robots_ && OwnBodies(r) >= direct_min_bodies_))) {
       KeepRobotJoints(r);
       continue;
     }
@@ -166,8 +170,7 @@ void Simulator::PrepareObjectIslands(bool exact) {
   for (int id = 0; id < bodies_.size(); ++id) {
     const BodyRecord& record = bodies_[id];
     if (record.body == nullptr || record.kind == WorldId::Kind::kRobotLink) continue;
-    // (the exact solver keeps dWorldStep for every island with a free object: only robots gain)
-    if (exact || !record.is_object() || dBodyGetNumJoints(record.body) > 0 ||
+    if ((exact && !newton_objects_) || !record.is_object() || dBodyGetNumJoints(record.body) > 0 ||
         (drag_.active && drag_.body == id)) {
       islands_.MarkOde(id);
     }
@@ -176,11 +179,16 @@ void Simulator::PrepareObjectIslands(bool exact) {
     const int a = IslandBody(pair.a), b = IslandBody(pair.b);
     if (a >= 0 && b >= 0) {
       islands_.Link(a, b);
+      if (exact && IsRobotLink(a) != IsRobotLink(b)) islands_.MarkOde(a);
     } else if ((a >= 0) != (b >= 0)) {
       const BodyRecord& other = bodies_[a >= 0 ? pair.b : pair.a];
       if (other.body != nullptr && !dBodyIsEnabled(other.body)) islands_.MarkOde(a >= 0 ? a : b);
     }
   }
+}
+
+bool Simulator::IsRobotLink(int id) const {
+  return bodies_[id].kind == WorldId::Kind::kRobotLink;
 }
 
 // ---- feedback ---------------------------------------------------------------------------

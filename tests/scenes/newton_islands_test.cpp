@@ -52,9 +52,11 @@ Gap Compare(core::Simulator& a, core::Simulator& b) {  // (body() is not const)
 
 using WorldSetup = std::function<void(core::Simulator*)>;
 
-// both solvers from the world's start (after `setup`), step by step
+// dWorldStep alone and `fast_solver` (the Newton solver, or the exact solver with its own
+// islands: object_islands.h) from the world's start (after `setup`), step by step
 Gap LockStep(const std::string& world_file, double step, int steps, core::SimStatistics* newton,
-             const WorldSetup& setup = nullptr, double friction = -1.0) {
+             const WorldSetup& setup = nullptr, double friction = -1.0,
+             core::SolverType fast_solver = core::SolverType::kNewton) {
   test::LoadedWorld loaded;
   test::LoadWorld(test::WorldsPath(world_file), &loaded);
   EXPECT_TRUE(loaded.ok) << world_file;
@@ -68,8 +70,9 @@ Gap LockStep(const std::string& world_file, double step, int steps, core::SimSta
     }
   }
   core::Simulator exact(loaded.world, {core::SolverType::kStep, 20});
-  exact.SetDirectRobotSolve(false);  // dWorldStep's own LCP for robots too
-  core::Simulator fast(loaded.world, {core::SolverType::kNewton, 20});
+  exact.SetDirectRobotSolve(false);     // dWorldStep's own LCP for robots too
+  exact.SetNewtonObjectIslands(false);  // and for every island of objects
+  core::Simulator fast(loaded.world, {fast_solver, 20});
   fast.SetDirectRobotSolve(false);  // the Newton solver's own iterations for robots too
   if (setup) {
     setup(&exact);
@@ -131,6 +134,19 @@ const Case kCases[] = {
     {"klampt/athlete_plane.xml", 0.001, 300, 1e-12, 1e-10, true, 0.0},
 };
 
+// a test's name from its world file: accuracy/box_stack_20.xml -> BoxStack20
+std::string CaseName(const std::string& world) {
+  std::string name = world.substr(world.rfind('/') + 1);
+  name = name.substr(0, name.find('.'));
+  std::string camel;
+  for (size_t i = 0; i < name.size(); ++i) {
+    if (name[i] == '_') continue;
+    const bool first = i == 0 || name[i - 1] == '_';
+    camel += first ? static_cast<char>(std::toupper(name[i])) : name[i];
+  }
+  return camel;
+}
+
 class NewtonIslandsWorldTest : public testing::TestWithParam<Case> {};
 
 TEST_P(NewtonIslandsWorldTest, StepsAsDWorldStepDoes) {
@@ -158,16 +174,60 @@ TEST_P(NewtonIslandsWorldTest, StepsAsDWorldStepDoes) {
 
 INSTANTIATE_TEST_SUITE_P(Worlds, NewtonIslandsWorldTest, testing::ValuesIn(kCases),
                          [](const testing::TestParamInfo<Case>& param_info) {
-                           std::string name = param_info.param.world;
-                           name = name.substr(name.find('/') + 1);
-                           name = name.substr(0, name.find('.'));
-                           std::string camel;  // box_stack_20 -> BoxStack20
-                           for (size_t i = 0; i < name.size(); ++i) {
-                             if (name[i] == '_') continue;
-                             const bool first = i == 0 || name[i - 1] == '_';
-                             camel += first ? static_cast<char>(std::toupper(name[i])) : name[i];
-                           }
-                           return param_info.param.friction == 0.0 ? camel + "Frictionless" : camel;
+                           const std::string name = CaseName(param_info.param.world);
+                           return param_info.param.friction == 0.0 ? name + "Frictionless" : name;
+                         });
+
+// The exact solver's own object islands (object_islands.h): an island of free objects with at
+// least kNewtonObjectContacts contacts is the Newton solver's, a smaller one stays with
+// dWorldStep (the runs are then one, bit for bit). The same law, so the same steps where the
+// Dantzig solver is exact; stiffness_test.xml's hard balls bounce with their friction saturated
+// (ODE fixes each friction bound when it pivots the row in: newton_solver.h), and the runs part
+// by micrometres; without friction they agree to rounding.
+struct ExactCase {
+  const char* world;
+  double step;  ///< s
+  int steps;
+  double position;         ///< largest gap allowed (m)
+  double velocity;         ///< m/s
+  bool newton;             ///< the Newton solver takes islands (else none: the runs are one)
+  double friction = -1.0;  ///< >= 0: every surface's friction coefficient
+};
+
+const ExactCase kExactCases[] = {
+    {"accuracy/box_stack.xml", 0.01, 150, 1e-12, 1e-10, true},            // 40 contacts
+    {"accuracy/heavy_on_light_1000.xml", 0.01, 300, 1e-12, 1e-10, true},  // 8
+    // 8.3e-6 m, 2.5e-5 m/s measured; frictionless 1.2e-14 m, 1.0e-12 m/s
+    {"klampt/simulation_test_worlds/stiffness_test.xml", 0.001, 800, 2e-5, 1e-4, true},
+    {"klampt/simulation_test_worlds/stiffness_test.xml", 0.001, 800, 1e-12, 1e-10, true, 0.0},
+    {"accuracy/sliding_block_22_5.xml", 0.001, 500, 0.0, 0.0, false},  // 4 contacts
+};
+
+class ExactObjectIslandsTest : public testing::TestWithParam<ExactCase> {};
+
+TEST_P(ExactObjectIslandsTest, StepAsDWorldStepDoes) {
+  const ExactCase& c = GetParam();
+  core::SimStatistics statistics;
+  const Gap gap =
+      LockStep(c.world, c.step, c.steps, &statistics, nullptr, c.friction, core::SolverType::kStep);
+  std::printf("%s: gap %g m, %g m/s; Newton islands %ld, fallbacks %ld, steps %ld\n", c.world,
+              gap.position, gap.velocity, statistics.newton_islands, statistics.newton_fallbacks,
+              statistics.newton_iterations);
+  EXPECT_LE(gap.position, c.position);
+  EXPECT_LE(gap.velocity, c.velocity);
+  EXPECT_EQ(statistics.direct_islands, 0);
+  if (c.newton) {
+    EXPECT_GE(statistics.newton_islands, c.steps / 2);
+  } else {
+    EXPECT_EQ(statistics.newton_islands, 0);
+  }
+  EXPECT_LE(statistics.newton_fallbacks * 500, statistics.newton_islands);
+}
+
+INSTANTIATE_TEST_SUITE_P(Worlds, ExactObjectIslandsTest, testing::ValuesIn(kExactCases),
+                         [](const testing::TestParamInfo<ExactCase>& param_info) {
+                           const std::string name = CaseName(param_info.param.world);
+                           return param_info.param.friction == 0.0 ? name + "Frictionless" : name;
                          });
 
 // A kinematic pusher (infinite mass, its velocity in the rows' right-hand side) shoves a box that
