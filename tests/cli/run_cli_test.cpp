@@ -83,6 +83,28 @@ TEST(RunCommandTest, JsonReportsContactsAndTheTimeSplit) {
   EXPECT_LE(parts, json["wall_time"].get<double>() * 1.05 + 1e-3);
 }
 
+// The exact solver gives the 10-box stack's island (40 contacts) to the Newton solver every step;
+// --ode-objects leaves it to dWorldStep's own LCP, with the same result to rounding
+TEST(RunCommandTest, OdeObjectsLeavesTheStackToDWorldStep) {
+  const std::string world = test::WorldsPath("accuracy/box_stack.xml");
+  const CommandResult own = RunHeadless("run --json --duration 0.2 --dt 0.001 " + world);
+  const CommandResult ode =
+      RunHeadless("run --json --duration 0.2 --dt 0.001 --ode-objects " + world);
+  ASSERT_EQ(own.exit_code, 0) << own.out;
+  ASSERT_EQ(ode.exit_code, 0) << ode.out;
+  const nlohmann::json with = nlohmann::json::parse(own.out);
+  const nlohmann::json without = nlohmann::json::parse(ode.out);
+  EXPECT_EQ(with["newton"]["islands"], 200);
+  EXPECT_EQ(with["newton"]["fallbacks"], 0);
+  EXPECT_EQ(without["newton"]["islands"], 0);
+  for (size_t i = 0; i < 10; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(with["objects"][i]["position"][k].get<double>(),
+                  without["objects"][i]["position"][k].get<double>(), 1e-12);
+    }
+  }
+}
+
 TEST(RunCommandTest, LogFollowsKlamptColumns) {
   const std::string log = test::ScratchDir() + "/log.csv";
   const CommandResult result =
