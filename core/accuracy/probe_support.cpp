@@ -22,6 +22,31 @@ Vec3 ObjectComVelocity(const Simulator& simulator, int object) {
   return twist.linear + twist.angular.cross(arm);
 }
 
+void RestingWatch::Observe(const StepEvent& event) {
+  if (event.time < settle_ - 1e-12) return;
+  const Simulator& simulator = event.simulator;
+  if (weight_ == 0.0) settled_ = ObjectCom(simulator, 0);
+  speed2_ += ObjectComVelocity(simulator, 0).squaredNorm() * event.h;
+  spin2_ += simulator.GetObjectVelocity(0).angular.squaredNorm() * event.h;
+  weight_ += event.h;
+  fewest_ = std::min(fewest_, event.contact_joints);
+  most_ = std::max(most_, event.contact_joints);
+}
+
+double RestingWatch::RmsSpeed() const {
+  return std::sqrt(speed2_ / weight_);
+}
+
+double RestingWatch::RmsSpin() const {
+  return std::sqrt(spin2_ / weight_);
+}
+
+std::vector<ProbeMetric> RestingWatch::Metrics(const Simulator& simulator) const {
+  return {{"moved m", (ObjectCom(simulator, 0) - settled_).norm()},
+          {"contact count range", static_cast<double>(most_ - fewest_)},
+          {"contacts", static_cast<double>(most_)}};
+}
+
 double ObjectLayerOverlap(const Simulator& simulator, const std::vector<ContactPair>& pairs,
                           int object) {
   const int id = simulator.world().ObjectId(object);

@@ -13,6 +13,7 @@ namespace lamina::core {
 
 class Simulator;
 struct ContactPair;
+struct StepEvent;
 
 /// Centre of mass of rigid object `object` (m, world).
 Vec3 ObjectCom(const Simulator& simulator, int object);
@@ -24,6 +25,26 @@ double ObjectLayerOverlap(const Simulator& simulator, const std::vector<ContactP
                           int object);
 /// Angular momentum about the centre of mass (kg·m²/s, world): R I Rᵀ ω.
 Vec3 ObjectAngularMomentum(const Simulator& simulator, int object);
+
+/// What a probe of object 0 coming to rest gathers from the steps after `settle` seconds: the
+/// RMS speed of its centre of mass (m/s) and its RMS angular speed (rad/s), where the centre was
+/// when the measurement began, and the range of the contact-joint count.
+class RestingWatch {
+ public:
+  explicit RestingWatch(double settle) : settle_(settle) {}
+  void Observe(const StepEvent& event);
+  bool Started() const { return weight_ > 0.0; }
+  double RmsSpeed() const;
+  double RmsSpin() const;
+  /// "moved m" (the centre since the measurement began), "contact count range", "contacts"
+  std::vector<ProbeMetric> Metrics(const Simulator& simulator) const;
+
+ private:
+  double settle_;  ///< s
+  Vec3 settled_ = Vec3::Zero();
+  double speed2_ = 0.0, spin2_ = 0.0, weight_ = 0.0;
+  int fewest_ = 1 << 30, most_ = 0;
+};
 
 /// CPU time of the calling thread (s): what the sweeps time a run by.
 double ThreadCpuSeconds();

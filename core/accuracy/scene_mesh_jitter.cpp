@@ -25,7 +25,6 @@
 // four lowest bumps, as a real bumpy object does: 3 contacts at 1 ms, at rest to 1e-16 m/s
 // under dWorldStep and 1e-13 m/s under the Newton solver; QuickStep(20) rocks on its bumps at
 // 1 ms (5.6e-4 m/s RMS, the contact count varying by 4) but not at 10 ms.
-#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -43,30 +42,16 @@ constexpr double kSettle = 0.5;    // s before the measurement starts
 class MeshJitterProbe : public AccuracyProbe {
  public:
   void Begin(const Simulator&) override {}
-  void Observe(const StepEvent& event) override {
-    if (event.time < kSettle - 1e-12) return;
-    const Simulator& simulator = event.simulator;
-    if (weight_ == 0.0) settled_ = ObjectCom(simulator, 0);
-    speed2_ += ObjectComVelocity(simulator, 0).squaredNorm() * event.h;
-    spin2_ += simulator.GetObjectVelocity(0).angular.squaredNorm() * event.h;
-    weight_ += event.h;
-    fewest_ = std::min(fewest_, event.contact_joints);
-    most_ = std::max(most_, event.contact_joints);
-  }
+  void Observe(const StepEvent& event) override { watch_.Observe(event); }
   ProbeResult Finish(const Simulator& simulator) override {
-    if (weight_ == 0.0) return {kInf, {}, "shorter than the settling time"};
-    ProbeResult result{std::sqrt(speed2_ / weight_), {}, ""};
-    result.metrics = {{"RMS angular speed rad/s", std::sqrt(spin2_ / weight_)},
-                      {"moved m", (ObjectCom(simulator, 0) - settled_).norm()},
-                      {"contact count range", static_cast<double>(most_ - fewest_)},
-                      {"contacts", static_cast<double>(most_)}};
+    if (!watch_.Started()) return {kInf, {}, "shorter than the settling time"};
+    ProbeResult result{watch_.RmsSpeed(), {{"RMS angular speed rad/s", watch_.RmsSpin()}}, ""};
+    for (ProbeMetric& metric : watch_.Metrics(simulator)) result.metrics.push_back(metric);
     return result;
   }
 
  private:
-  Vec3 settled_ = Vec3::Zero();
-  double speed2_ = 0.0, spin2_ = 0.0, weight_ = 0.0;
-  int fewest_ = 1 << 30, most_ = 0;
+  RestingWatch watch_{kSettle};
 };
 
 }  // namespace
