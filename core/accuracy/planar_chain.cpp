@@ -48,8 +48,9 @@ double GravityLever(const PlanarChain& chain, int i) {
   return sum;
 }
 
-PlanarChainState Derivative(const PlanarChain& chain, const PlanarChainState& state) {
-  return {state.rate, chain.Accelerations(state)};
+PlanarChainState Derivative(const PlanarChain& chain, const PlanarChainConstants& constants,
+                            const PlanarChainState& state) {
+  return {state.rate, chain.Accelerations(state, constants)};
 }
 
 PlanarChainState Advance(const PlanarChainState& state, const PlanarChainState& slope, double h) {
@@ -62,8 +63,19 @@ Eigen::Vector2d Direction(double angle) {
 
 }  // namespace
 
+PlanarChainConstants PlanarChain::Constants() const {
+  PlanarChainConstants constants{Coupling(*this), Eigen::VectorXd(links.size())};
+  for (int i = 0; i < constants.lever.size(); ++i) constants.lever[i] = GravityLever(*this, i);
+  return constants;
+}
+
 Eigen::VectorXd PlanarChain::Accelerations(const PlanarChainState& state) const {
-  const Eigen::MatrixXd b = Coupling(*this);
+  return Accelerations(state, Constants());
+}
+
+Eigen::VectorXd PlanarChain::Accelerations(const PlanarChainState& state,
+                                           const PlanarChainConstants& constants) const {
+  const Eigen::MatrixXd& b = constants.coupling;
   const int n = static_cast<int>(links.size());
   Eigen::VectorXd force(n);
   for (int i = 0; i < n; ++i) {
@@ -72,7 +84,7 @@ Eigen::VectorXd PlanarChain::Accelerations(const PlanarChainState& state) const 
       coriolis +=
           b(i, j) * std::sin(state.angle[i] - state.angle[j]) * state.rate[j] * state.rate[j];
     }
-    force[i] = -coriolis - g * std::sin(state.angle[i]) * GravityLever(*this, i);
+    force[i] = -coriolis - g * std::sin(state.angle[i]) * constants.lever[i];
   }
   return MassMatrix(*this, b, state.angle).ldlt().solve(force);
 }
@@ -96,23 +108,26 @@ std::vector<Eigen::Vector2d> PlanarChain::Centres(const Eigen::VectorXd& angle) 
   return centres;
 }
 
-PlanarChainState Rk4Step(const PlanarChain& chain, const PlanarChainState& state, double step) {
-  const PlanarChainState k1 = Derivative(chain, state);
-  const PlanarChainState k2 = Derivative(chain, Advance(state, k1, 0.5 * step));
-  const PlanarChainState k3 = Derivative(chain, Advance(state, k2, 0.5 * step));
-  const PlanarChainState k4 = Derivative(chain, Advance(state, k3, step));
+PlanarChainState Rk4Step(const PlanarChain& chain, const PlanarChainConstants& constants,
+                         const PlanarChainState& state, double step) {
+  const PlanarChainState k1 = Derivative(chain, constants, state);
+  const PlanarChainState k2 = Derivative(chain, constants, Advance(state, k1, 0.5 * step));
+  const PlanarChainState k3 = Derivative(chain, constants, Advance(state, k2, 0.5 * step));
+  const PlanarChainState k4 = Derivative(chain, constants, Advance(state, k3, step));
   return {state.angle + step / 6.0 * (k1.angle + 2.0 * k2.angle + 2.0 * k3.angle + k4.angle),
           state.rate + step / 6.0 * (k1.rate + 2.0 * k2.rate + 2.0 * k3.rate + k4.rate)};
 }
 
 PlanarChainTrajectory::PlanarChainTrajectory(PlanarChain chain, const PlanarChainState& start,
                                              double duration, double step)
-    : chain_(std::move(chain)), step_(step) {
+    : chain_(std::move(chain)), constants_(chain_.Constants()), step_(step) {
   const int count = std::max(1, static_cast<int>(std::ceil(duration / step - 1e-9)));
   samples_.reserve(count + 1);
   samples_.push_back(start);
-  for (int i = 0; i < count; ++i) samples_.push_back(Rk4Step(chain_, samples_.back(), step_));
-  for (const PlanarChainState& s : samples_) accelerations_.push_back(chain_.Accelerations(s));
+  for (int i = 0; i < count; ++i)
+    samples_.push_back(Rk4Step(chain_, constants_, samples_.back(), step_));
+  for (const PlanarChainState& s : samples_)
+    accelerations_.push_back(chain_.Accelerations(s, constants_));
 }
 
 PlanarChainState PlanarChainTrajectory::State(double t) const {

@@ -36,12 +36,22 @@ struct PlanarChainState {
   Eigen::VectorXd angle, rate;
 };
 
+/// What the equations above hold constant while the links are: B and the gravity levers.
+struct PlanarChainConstants {
+  Eigen::MatrixXd coupling;  ///< B (kg·m²)
+  Eigen::VectorXd lever;     ///< per angle i, Σ_k m_k·ℓ_ki (kg·m)
+};
+
 struct PlanarChain {
   std::vector<PlanarLink> links;
   double g = 9.8;  ///< m/s²
 
+  PlanarChainConstants Constants() const;
   /// θ̈ of the equations above.
   Eigen::VectorXd Accelerations(const PlanarChainState& state) const;
+  /// The same with the constants computed once (Constants()).
+  Eigen::VectorXd Accelerations(const PlanarChainState& state,
+                                const PlanarChainConstants& constants) const;
   /// Kinetic plus potential energy (J; potential 0 at the pivot's height).
   double Energy(const PlanarChainState& state) const;
   /// The centres of mass in the plane, (down, side) coordinates from the pivot (m).
@@ -60,13 +70,15 @@ class PlanarChainTrajectory {
 
  private:
   PlanarChain chain_;
+  PlanarChainConstants constants_;
   double step_;
   std::vector<PlanarChainState> samples_;
   std::vector<Eigen::VectorXd> accelerations_;
 };
 
-/// One RK4 step of `step` seconds.
-PlanarChainState Rk4Step(const PlanarChain& chain, const PlanarChainState& state, double step);
+/// One RK4 step of `step` seconds (`constants`: chain.Constants()).
+PlanarChainState Rk4Step(const PlanarChain& chain, const PlanarChainConstants& constants,
+                         const PlanarChainState& state, double step);
 
 /// A world's chain of hinges as a planar chain, with what maps it back to the world: the hinge
 /// axis, the pivot, the plane's down and side directions and each centre's constant offset along
