@@ -43,6 +43,7 @@ struct ObjectIslands::Island {
   NewtonSolver solver;
   DirectSolver direct;
   NewtonResult result;
+  bool newton_tried = false;  ///< this island's solve began with Newton steps
 
   void Clear();
   void AddBody(int id, dBodyID body, dWorldID world, double step);
@@ -176,12 +177,12 @@ void ObjectIslands::SolveIsland(dWorldID world, dJointGroupID group, double step
   const bool built = BuildIsland(world, step);
   const bool large_robot =
       direct_bodies_ > 0 && robot && static_cast<int>(island.bodies.size()) >= direct_bodies_;
-  const bool newton = !exact_ || !robot;
-  statistics_.newton_islands += newton;
-  const bool converged = built && (newton ? SolveNewton(large_robot, step) : SolveDirectly(step));
+  // (the exact solver keeps only large robots: direct_bodies_)
+  island.newton_tried = false;
+  const bool converged = built && (large_robot ? SolveLargeRobot(step) : SolveNewton(false, step));
   if (!converged) {
     ++statistics_.fallbacks;
-    statistics_.newton_fallbacks += newton;
+    statistics_.newton_fallbacks += island.newton_tried;
     HandBack(world, group);
     return;
   }
@@ -192,6 +193,31 @@ void ObjectIslands::SolveIsland(dWorldID world, dJointGroupID group, double step
   }
 }
 
+// A large robot's island: kNewtonStepsBeforeDirect Newton steps, then the direct solve, unless
+// its last Newton steps failed (kMostDirectSteps)
+bool ObjectIslands::SolveLargeRobot(double step) {
+  RobotBackoff& backoff = BackoffOf(joints_[island_->joint_members.front()].joint);
+  if (!robot_newton_ || backoff.direct_steps > 0) {
+    backoff.direct_steps = std::max(0, backoff.direct_steps - 1);
+    return SolveDirectly(step);
+  }
+  if (SolveNewton(true, step)) {
+    backoff.failures = 0;
+    return true;
+  }
+  backoff.direct_steps = std::min(1 << std::min(backoff.failures, 4), kMostDirectSteps);
+  ++backoff.failures;
+  return SolveDirectly(step);
+}
+
+ObjectIslands::RobotBackoff& ObjectIslands::BackoffOf(const dxJoint* robot) {
+  for (RobotBackoff& backoff : backoff_) {
+    if (backoff.robot == robot) return backoff;
+  }
+  backoff_.push_back({robot, 0, 0});
+  return backoff_.back();
+}
+
 bool ObjectIslands::SolveDirectly(double step) {
   Island& island = *island_;
   ++statistics_.direct_islands;
@@ -200,20 +226,22 @@ bool ObjectIslands::SolveDirectly(double step) {
   return settled;
 }
 
-// The Newton solver's island. A large robot's gets kNewtonStepsBeforeDirect Newton steps, then
-// the direct solve, and dWorldStep when that does not settle (the Newton solver's whole budget
-// then seldom did either: ATHLETE on fractal terrain, 197 of 198): where few rows change their
-// law (a humanoid standing on a plane) one Newton step is the cheapest answer, where many do
-// (feet and wheels on rough ground: 20 Newton steps and more) one direct solve is (the robot
-// benchmarks of docs/simulator.md).
+// The Newton solver's island; a large robot's gets kNewtonStepsBeforeDirect Newton steps
+// (SolveLargeRobot goes on to the direct solve, and dWorldStep when that does not settle: the
+// Newton solver's whole budget then seldom did either, ATHLETE on fractal terrain 197 of 198).
+// Where few rows change their law (a humanoid standing on a plane) one Newton step is the
+// cheapest answer, where many do (feet and wheels on rough ground: 20 Newton steps and more) one
+// direct solve is (the robot benchmarks of docs/simulator.md).
 bool ObjectIslands::SolveNewton(bool large_robot, double step) {
   Island& island = *island_;
+  ++statistics_.newton_islands;
+  island.newton_tried = true;
   NewtonOptions options;
   if (large_robot) options.max_iterations = kNewtonStepsBeforeDirect;
   const bool converged =
       island.solver.Solve(island.bodies, island.rows, step, options, &island.result);
   statistics_.iterations += island.result.iterations;
-  return converged || !large_robot ? converged : SolveDirectly(step);
+  return converged;
 }
 
 // the island's bodies (a robot's children first, then its parents: the order the joints were

@@ -2,10 +2,11 @@
 // The share of a step that Lamina's own solvers take: under solver "newton" every island of free
 // rigid objects, robots and their contacts (newton_solver.h); under the exact solver ("step")
 // the islands where dWorldStep's dense LCP is the costly answer: a robot's island with the fixed
-// world, solved directly (direct_solver.h: dWorldStep's answer without its dense matrix of every
-// row), and an island of free objects with many contacts, solved by the Newton solver (a ball on
-// a mesh with 20 contacts: 60 rows in dWorldStep's matrix, 6 velocities in Newton's). Below, "the
-// solver" is whichever takes the island.
+// world, given one Newton step and, when that does not settle it, solved directly
+// (direct_solver.h: dWorldStep's answer without its dense matrix of every row), and an island of
+// free objects with many contacts, solved by the Newton solver (a ball on a mesh with 20 contacts:
+// 60 rows in dWorldStep's matrix, 6 velocities in Newton's). Below, "the solver" is whichever takes
+// the island.
 //
 // - The contact joints of such an island are kept as dContacts instead of being created in ODE.
 //   After the solve (newton_solver.h) every body gets its constraint wrench M (v' − v_free) / h
@@ -50,6 +51,10 @@ class ObjectIslands {
 
   /// Newton steps a large robot's island gets before the direct solve (SolveNewton).
   static constexpr int kNewtonStepsBeforeDirect = 1;
+  /// After a large robot's Newton step has not settled its island n times in a row, its island
+  /// goes straight to the direct solve for the next min(2^(n−1), kMostDirectSteps) steps: on
+  /// rough ground, where the Newton step seldom settles, it is not paid every step.
+  static constexpr int kMostDirectSteps = 16;
 
   ObjectIslands();
   ~ObjectIslands();
@@ -65,6 +70,11 @@ class ObjectIslands {
   /// without twenty Newton steps over a long chain), and goes to dWorldStep when that does not
   /// settle.
   void Begin(int count, bool exact = false, int direct_bodies = 0, int newton_contacts = 0);
+  /// Whether a large robot's island (`direct_bodies` above) gets kNewtonStepsBeforeDirect
+  /// Newton steps before the direct solve, under both solvers (on by default): where few rows
+  /// change their law, as on a humanoid standing on a plane, one Newton step is the cheapest
+  /// exact answer. Off: the direct solve alone.
+  void SetRobotNewtonStep(bool newton) { robot_newton_ = newton; }
   /// `id`'s island is ODE's (a body with a persistent ODE joint, dragged, a robot the Newton
   /// solver does not take).
   void MarkOde(int id) { ode_[Root(id)] = 1; }
@@ -97,6 +107,15 @@ class ObjectIslands {
   void SolveIsland(dxWorld* world, dxJointGroup* group, double step);
   bool SolveDirectly(double step);
   bool SolveNewton(bool large_robot, double step);
+  bool SolveLargeRobot(double step);
+  /// The count of steps to go straight to the direct solve, and of failed Newton steps in a
+  /// row, of a large robot (keyed by its first kept joint).
+  struct RobotBackoff {
+    const dxJoint* robot = nullptr;
+    int direct_steps = 0;
+    int failures = 0;
+  };
+  RobotBackoff& BackoffOf(const dxJoint* robot);
   bool BuildIsland(dxWorld* world, double step);
   void HandBack(dxWorld* world, dxJointGroup* group);
 
@@ -109,8 +128,10 @@ class ObjectIslands {
   std::unique_ptr<Island> island_;
   Statistics statistics_;
   bool exact_ = false;
-  int direct_bodies_ = 0;    ///< Begin
-  int newton_contacts_ = 0;  ///< Begin
+  int direct_bodies_ = 0;     ///< Begin
+  int newton_contacts_ = 0;   ///< Begin
+  bool robot_newton_ = true;  ///< SetRobotNewtonStep
+  std::vector<RobotBackoff> backoff_;
 };
 
 }  // namespace lamina::core

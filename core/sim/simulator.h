@@ -305,13 +305,16 @@ class Simulator {
   /// bitwise the same contacts either way: core/contact/near_pair_cache.h). For tests and
   /// benchmarks.
   void SetReuseContactPairs(bool reuse) { contacts_.SetReusePairs(reuse); }
-  /// Whether the exact solver solves the islands of robots with at least kDirectRobotBodies
-  /// bodies directly (on by default: direct_solver.h) or leaves them to dWorldStep's own LCP,
-  /// as other islands; and whether the Newton solver's islands with such a robot are solved
-  /// directly first (the Newton solver takes them when that does not settle). For tests and
-  /// comparisons; SetDirectRobotMinimumBodies changes the size.
+  /// Whether the islands of robots with at least kDirectRobotBodies bodies go to the direct
+  /// solve (direct_solver.h) when one Newton step does not settle them (on by default), under
+  /// both solvers; off, the exact solver leaves them to dWorldStep's own LCP, as other islands,
+  /// and the Newton solver takes them alone. For tests and comparisons;
+  /// SetDirectRobotMinimumBodies changes the size.
   void SetDirectRobotSolve(bool direct) { direct_robots_ = direct; }
   void SetDirectRobotMinimumBodies(int bodies) { direct_min_bodies_ = bodies; }
+  /// Whether such a robot's island first gets one Newton step, under both solvers (on by
+  /// default: object_islands.h; the direct solve takes what it does not settle). For tests.
+  void SetRobotNewtonStep(bool newton) { islands_.SetRobotNewtonStep(newton); }
   /// dWorldStep's dense LCP grows as the cube of a robot's rows, the direct solve about as its
   /// bodies: HRP-2 (36 bodies) steps 3× faster directly, the TX90L arm (6) 1.8× slower.
   static constexpr int kDirectRobotBodies = 12;

@@ -294,7 +294,10 @@ void ExpectHrp2StandsWithTheNewtonSolver(bool direct) {
   EXPECT_NEAR(q[2], 0.0, 0.006);
   EXPECT_LT(q.segment(3, 3).cwiseAbs().maxCoeff(), 0.01);
   const core::SimStatistics& statistics = simulator.statistics();
-  EXPECT_GE(statistics.newton_islands, statistics.steps);  // the robot's island, every step
+  // the robot's island, every step: the Newton solver's, or after a Newton step that did not
+  // settle it, for a few steps the direct solve's alone (object_islands.h)
+  EXPECT_GE(statistics.newton_islands + statistics.direct_islands, statistics.steps);
+  EXPECT_GE(statistics.newton_islands, statistics.steps * 9 / 10);
   std::printf("hrp2 (newton): %ld islands, %ld solved directly, %ld of those handed back\n",
               statistics.newton_islands, statistics.direct_islands, statistics.direct_fallbacks);
   if (!direct) {

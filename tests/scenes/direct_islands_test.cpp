@@ -39,6 +39,7 @@ struct Runs {
 Runs CompareRuns(const core::WorldDesc& world, double duration, const std::string& motion = "") {
   core::Simulator direct(world, {core::SolverType::kStep, 20});
   direct.SetDirectRobotMinimumBodies(1);  // small robots too (dWorldStep is faster on them)
+  direct.SetRobotNewtonStep(false);       // the direct solve alone
   core::Simulator ode(world, {core::SolverType::kStep, 20});
   ode.SetDirectRobotSolve(false);
   if (!motion.empty()) {
@@ -89,6 +90,7 @@ TEST(DirectIslandsTest, CartPushedIntoItsSliderStopRunsAsWithDWorldStep) {
   world.robots.push_back(cartpole->robot);
   core::Simulator direct(world, {core::SolverType::kStep, 20});
   direct.SetDirectRobotMinimumBodies(1);
+  direct.SetRobotNewtonStep(false);
   core::Simulator ode(world, {core::SolverType::kStep, 20});
   ode.SetDirectRobotSolve(false);
   const int cart = world.RobotLinkId(0, 0);
@@ -113,6 +115,7 @@ TEST(DirectIslandsTest, OnlyRobotsOfTwelveBodiesOrMoreAreSolvedDirectly) {
   arm.Simulate(0.05);
   EXPECT_EQ(arm.statistics().direct_islands, 0);  // 6 bodies: dWorldStep
   core::Simulator humanoid(test::LoadShippedWorld("klampt/hrp2_plane.xml"));
+  humanoid.SetRobotNewtonStep(false);
   humanoid.Simulate(0.05);
   EXPECT_EQ(humanoid.statistics().direct_islands, 50);
 }
