@@ -177,7 +177,7 @@ void ObjectIslands::SolveIsland(dWorldID world, dJointGroupID group, double step
   const bool built = BuildIsland(world, step);
   const bool large_robot =
       direct_bodies_ > 0 && robot && static_cast<int>(island.bodies.size()) >= direct_bodies_;
-  // (the exact solver keeps only large robots: direct_bodies_)
+  // (every robot the exact solver keeps is a large one: Simulator::PrepareObjectIslands)
   island.newton_tried = false;
   const bool converged = built && (large_robot ? SolveLargeRobot(step) : SolveNewton(false, step));
   if (!converged) {

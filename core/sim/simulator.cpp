@@ -463,8 +463,8 @@ void Simulator::BuildConstraints(double step) {
                   s.friction_anchor_gain, s.friction_anchor_slip);
   const Vec3* anchor_velocities = anchors_.velocities().data();
   const bool newton = s.solver == SolverType::kNewton;
-  // the exact solver solves its robots' islands directly (direct_solver.h) and its large
-  // object islands by Newton's method (object_islands.h)
+  // the exact solver takes its large robots' islands (a Newton step, then the direct solve:
+  // direct_solver.h) and its object islands of many contacts (Newton's method: object_islands.h)
   bool exact_islands = s.solver == SolverType::kStep && newton_objects_;
   for (int r = 0; r < robot_count() && s.solver == SolverType::kStep && direct_robots_; ++r) {
     exact_islands = exact_islands || OwnBodies(r) >= direct_min_bodies_;
