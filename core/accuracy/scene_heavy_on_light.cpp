@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "core/accuracy/probe_support.h"
 #include "core/accuracy/scene_bars.h"
@@ -29,7 +30,7 @@ namespace {
 
 constexpr double kDuration = 2.0;  // s
 
-// Index of the heaviest object (the heavy box); the other one is the light box.
+// Index of the heaviest object (the heavy box); the others are light boxes.
 int Heaviest(const WorldDesc& world) {
   int heaviest = 0;
   for (std::size_t i = 1; i < world.objects.size(); ++i) {
@@ -41,22 +42,30 @@ int Heaviest(const WorldDesc& world) {
 class HeavyOnLightProbe : public AccuracyProbe {
  public:
   explicit HeavyOnLightProbe(const WorldDesc& world)
-      : heavy_(Heaviest(world)), light_(1 - heavy_), padding_(world.objects.at(0).sim.padding) {}
+      : heavy_(Heaviest(world)), padding_(world.objects.at(0).sim.padding) {
+    for (int i = 0; i < static_cast<int>(world.objects.size()); ++i) {
+      if (i != heavy_) light_.push_back(i);
+    }
+  }
   void Begin(const Simulator& simulator) override {
     heavy_start_ = ObjectCom(simulator, heavy_);
-    light_start_ = ObjectCom(simulator, light_);
+    for (int i : light_) light_start_.push_back(ObjectCom(simulator, i));
   }
   void Observe(const StepEvent& event) override {
     largest_ = std::max(largest_, Sink(event.simulator));
   }
   ProbeResult Finish(const Simulator& simulator) override {
-    const Vec3 moved = ObjectCom(simulator, light_) - light_start_;
+    double sideways = 0.0;  // the light box pushed farthest
+    for (std::size_t k = 0; k < light_.size(); ++k) {
+      const Vec3 moved = ObjectCom(simulator, light_[k]) - light_start_[k];
+      sideways = std::max(sideways, moved.head<2>().norm());
+    }
     ProbeResult result{simulator.statistics().max_penetration, {}, ""};
     result.metrics = {{"largest sink m", largest_},
                       {"final sink m", Sink(simulator)},
-                      {"light box sideways m", moved.head<2>().norm()},
+                      {"light box sideways m", sideways},
                       {"padding m", padding_}};
-    if (largest_ > 0.1) result.note = "the heavy box crushed the light one";
+    if (largest_ > 0.1) result.note = "the heavy box crushed a light one";
     return result;
   }
 
@@ -64,9 +73,11 @@ class HeavyOnLightProbe : public AccuracyProbe {
   double Sink(const Simulator& simulator) const {
     return heavy_start_.z() - ObjectCom(simulator, heavy_).z();
   }
-  int heavy_, light_;
+  int heavy_;
+  std::vector<int> light_;
   double padding_;
-  Vec3 heavy_start_ = Vec3::Zero(), light_start_ = Vec3::Zero();
+  Vec3 heavy_start_ = Vec3::Zero();
+  std::vector<Vec3> light_start_;
   double largest_ = 0.0;
 };
 

@@ -78,6 +78,20 @@ void AddContactCases(std::vector<StressCase>* cases) {
   }
 
   c = {};
+  c.name = "heavy_on_two_400";
+  c.world = "stress/heavy_on_two_400.xml";
+  c.what = "a 2 m, 400 kg box on two 1 kg, 0.1 m boxes under its ends";
+  c.duration = 2.0;
+  c.probe = SceneProbe("heavy_on_light_100");
+  c.metric = "final sink m";
+  c.metric_text = "heavy box's height loss at the end";
+  c.unit = "m";
+  c.keep_out = {Below(0.0)};
+  AddRuns(c, {{kExact, 1e-3}, {kExact, 1e-2}, {kNewton, 1e-3}, {kNewton, 1e-2}}, cases);
+  c.expected = StressVerdict::kFlagged;
+  AddRuns(c, {{kQuick, 1e-3}}, cases);
+
+  c = {};
   c.name = "box_stack_20";
   c.world = "stress/box_stack_20.xml";
   c.what = "20 boxes stacked with sideways offsets up to 2 cm";

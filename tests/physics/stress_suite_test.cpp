@@ -3,6 +3,7 @@
 // each ends with the verdict the suite expects of it, and each case's own number is what a
 // working simulator gives (bounds from the rigid answer, with the measured value beside them).
 // One test: CTest runs every test in a process of its own, and the suite takes ~4.5 s of CPU.
+#include <cmath>
 #include <map>
 #include <string>
 
@@ -34,7 +35,16 @@ void ExpectContactNumbers(const Records& records) {
     EXPECT_LT(records.at(name).max_penetration, 0.0025) << name;
   }
   EXPECT_EQ(records.at("mass_ratio_1000/quick20/1ms").lost.size(), 1u);  // the light box
-  EXPECT_LT(metric("mesh_jitter/exact/1ms"), 1e-6);                      // m/s; measured 1.3e-15
+  // 400:1 on two light boxes (Solver2D's high mass ratio 2): a sink of 1e-9 m measured at both
+  // steps, overlaps of 5e-10 m (1 ms) and 5e-9 m (10 ms); QuickStep's 20 iterations crush the
+  // light boxes 55 mm deep (flagged: contact unreliable)
+  for (const char* name : {"heavy_on_two_400/exact/1ms", "heavy_on_two_400/exact/10ms",
+                           "heavy_on_two_400/newton/1ms", "heavy_on_two_400/newton/10ms"}) {
+    EXPECT_LT(std::abs(metric(name)), 1e-6) << name;
+    EXPECT_LT(records.at(name).max_penetration, 1e-6) << name;
+  }
+  EXPECT_GT(records.at("heavy_on_two_400/quick20/1ms").max_penetration, 0.0025);
+  EXPECT_LT(metric("mesh_jitter/exact/1ms"), 1e-6);  // m/s; measured 1.3e-15
   EXPECT_LT(metric("mesh_jitter/exact/10ms"), 1e-6);
   // the offset stack stands still (the rigid answer is 0; measured 1.9e-8 m at 1 ms, 1.6e-8 m at
   // 10 ms: the settle into the layers). It crept by 2 mm in 2 s (8 cm at 10 ms) while the boxes

@@ -1,0 +1,3 @@
+Primitive
+AABB
+-1 -0.2 -1   1 0.2 1
