@@ -316,8 +316,10 @@ const ParamSpec kParams[] = {
      SetSetting<&SimSettings::robot_robot_collisions>},
     // ---- settings: Lamina's <globals> ----
     {"solver", "solver", "", kSettings, T::kChoice, 0, 2, false, false, false, A::kLive, false,
-     "step: ODE's exact dWorldStep; quick: the iterative dWorldQuickStep (faster, softer); "
-     "newton: islands of free objects by Lamina's Newton solver, the rest by dWorldStep",
+     "step: the exact solver, ODE's dWorldStep, with islands of many contacts and large robots "
+     "solved to the same law by Lamina's own solvers; quick: the iterative dWorldQuickStep "
+     "(faster, softer); newton: islands of free objects and robots by Lamina's Newton solver, "
+     "the rest by dWorldStep",
      kSolverChoices, GetSolver, SetSolver},
     {"quickStepIterations", "quick step iterations", "", kSettings, T::kInteger, 1, 1e6, false,
      false, true, A::kLive, false, "iterations of dWorldQuickStep per step", kNoChoices,

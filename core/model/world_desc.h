@@ -178,11 +178,13 @@ struct RobotDesc {
   std::vector<std::pair<int, int>> SelfCollisionPairs() const;
 };
 
-/// The physics solver: ODE's exact dWorldStep (a Dantzig LCP, stiff stacks and mass ratios
-/// hold), its iterative dWorldQuickStep (projected Gauss-Seidel, faster on large robots), or
-/// Lamina's Newton solver for the islands of free objects with dWorldStep for the rest
-/// (core/sim/object_islands.h: ODE's rows, the same answer, a factorization of the bodies'
-/// size instead of the rows'). The values are the table's choices, in order.
+/// The physics solver: the exact one, ODE's dWorldStep (a Dantzig LCP, stiff stacks and mass
+/// ratios hold) with the islands where its dense LCP is costly (many contacts, large robots)
+/// solved to the same law by Lamina's own solvers; ODE's iterative dWorldQuickStep (projected
+/// Gauss-Seidel, faster on large robots, softer); or Lamina's Newton solver for every island of
+/// free objects and robots, with dWorldStep for the rest (core/sim/object_islands.h: ODE's rows,
+/// the same answer, a factorization of the bodies' size instead of the rows'). The values are
+/// the table's choices, in order.
 enum class SolverType { kStep, kQuickStep, kNewton };
 
 /// The solver of a simulation (SimSettings::solver and quick_step_iterations).
