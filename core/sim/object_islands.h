@@ -62,13 +62,13 @@ class ObjectIslands {
   ObjectIslands& operator=(const ObjectIslands&) = delete;
 
   /// Starts a step over world ids 0 … count-1. `exact`: the islands are the exact solver's
-  /// rather than the Newton solver's: an island with a robot joint is solved directly
-  /// (direct_solver.h), one without is the Newton solver's when it holds at least
-  /// `newton_contacts` kept contacts and dWorldStep's otherwise (0: always). Under the Newton
-  /// solver an island with a robot joint and at least `direct_bodies` bodies (0: none) that
-  /// takes more than kNewtonStepsBeforeDirect Newton steps is solved directly (the same law,
-  /// without twenty Newton steps over a long chain), and goes to dWorldStep when that does not
-  /// settle.
+  /// rather than the Newton solver's: an island without a robot joint is the Newton solver's
+  /// when it holds at least `newton_contacts` kept contacts and dWorldStep's otherwise (0:
+  /// always the Newton solver's). Under both, an island with a robot joint and at least
+  /// `direct_bodies` bodies (0: none) that kNewtonStepsBeforeDirect Newton steps do not settle
+  /// is solved directly (the same law, without twenty Newton steps over a long chain), and goes
+  /// to dWorldStep when that does not settle either (every robot the exact solver keeps is such
+  /// a one).
   void Begin(int count, bool exact = false, int direct_bodies = 0, int newton_contacts = 0);
   /// Whether a large robot's island (`direct_bodies` above) gets kNewtonStepsBeforeDirect
   /// Newton steps before the direct solve, under both solvers (on by default): where few rows

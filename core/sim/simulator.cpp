@@ -465,7 +465,12 @@ void Simulator::BuildConstraints(double step) {
   const bool newton = s.solver == SolverType::kNewton;
   // the exact solver takes its large robots' islands (a Newton step, then the direct solve:
   // direct_solver.h) and its object islands of many contacts (Newton's method: object_islands.h)
-  bool exact_islands = s.solver == SolverType::kStep && newton_objects_;
+  const auto touches_object = [&](const ContactPair& pair) {
+    return bodies_[pair.a].is_object() || bodies_[pair.b].is_object();
+  };
+  bool exact_islands =
+      s.solver == SolverType::kStep && newton_objects_ &&
+      std::any_of(contacts_.pairs().begin(), contacts_.pairs().end(), touches_object);
   for (int r = 0; r < robot_count() && s.solver == SolverType::kStep && direct_robots_; ++r) {
     exact_islands = exact_islands || OwnBodies(r) >= direct_min_bodies_;
   }

@@ -325,8 +325,9 @@ class Simulator {
   /// and comparisons.
   void SetNewtonObjectIslands(bool newton) { newton_objects_ = newton; }
   /// dWorldStep's dense LCP grows as the cube of the rows (three per contact), a Newton step
-  /// with the bodies: the 10-box stack's island (40 contacts) takes a fourteenth of dWorldStep's
-  /// solver time, a ball on a mesh (20) a fifth; a block sliding on 4 contacts twice as long.
+  /// with the bodies: the 10-box stack's island (40 contacts) takes about a ninth of
+  /// dWorldStep's solver time, stiffness_test.xml's balls on a mesh (up to 20) a quarter; a block
+  /// sliding on 4 contacts twice as long (docs/simulator.md).
   static constexpr int kNewtonObjectContacts = 8;
   /// Hierarchy searches of mesh–mesh pairs, and queries answered from kept candidates.
   long long ContactPairSearches() const { return contacts_.PairCollections(); }
@@ -539,7 +540,7 @@ class Simulator {
   FrictionAnchors anchors_;
   StepGuard guard_;
   FeedbackRecorder feedback_;
-  ObjectIslands islands_;  ///< solver "newton": this step's object islands; "step": its robots'
+  ObjectIslands islands_;  ///< this step's islands for Lamina's own solvers (object_islands.h)
   bool islands_active_ = false;  ///< islands_ takes part in this step
   bool direct_robots_ = true;    ///< SetDirectRobotSolve
   bool newton_objects_ = true;   ///< SetNewtonObjectIslands
