@@ -16,7 +16,7 @@ namespace {
 using test::CommandResult;
 using test::RunHeadless;
 
-constexpr double kGravity = 9.8;
+using test::kGravity;
 
 // tests/data/worlds/sliding_block.xml: "block" slides at 1 m/s, friction 0.5 on both surfaces
 std::string SlidingBlock() {

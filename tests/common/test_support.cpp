@@ -17,6 +17,28 @@
 
 namespace lamina::test {
 
+core::Pose PoseAt(const core::Vec3& position, const core::Mat3& rotation) {
+  core::Pose pose = core::Pose::Identity();
+  pose.linear() = rotation;
+  pose.translation() = position;
+  return pose;
+}
+
+core::VecX Vec(std::initializer_list<double> values) {
+  core::VecX v(static_cast<Eigen::Index>(values.size()));
+  Eigen::Index i = 0;
+  for (double x : values) v[i++] = x;
+  return v;
+}
+
+double SignedVolume(const core::TriangleMesh& mesh) {
+  double volume = 0.0;
+  for (const Eigen::Vector3i& t : mesh.triangles) {
+    volume += mesh.vertices[t[0]].dot(mesh.vertices[t[1]].cross(mesh.vertices[t[2]])) / 6.0;
+  }
+  return volume;
+}
+
 std::string DataPath(const std::string& relative) {
   return LAMINA_TEST_DATA_DIR "/" + relative;
 }

@@ -2,6 +2,7 @@
 // Helpers shared by the tests: data paths, scratch files, loading with collected diagnostics.
 #pragma once
 
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,6 +12,21 @@
 #include "core/model/world_desc.h"
 
 namespace lamina::test {
+
+// Names several test files share. Each test area compiles in unity batches (several files as one
+// translation unit, LAMINA_UNITY_TESTS), so a name at a test file's namespace scope, anonymous
+// namespace included, is defined in one file only; what more than one file needs lives here.
+
+/// The gravity of the scene tests' worlds, m/s² (downwards along z).
+inline constexpr double kGravity = 9.8;
+/// Side of the scene tests' 1 kg boxes, m.
+inline constexpr double kBoxSide = 0.1;
+/// `position` with `rotation`, as a pose.
+core::Pose PoseAt(const core::Vec3& position, const core::Mat3& rotation = core::Mat3::Identity());
+/// The vector of `values`.
+core::VecX Vec(std::initializer_list<double> values);
+/// The volume a closed mesh encloses, positive when its triangles wind outwards, m³.
+double SignedVolume(const core::TriangleMesh& mesh);
 
 /// Absolute path of `relative` under tests/data.
 std::string DataPath(const std::string& relative);

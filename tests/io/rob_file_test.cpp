@@ -21,17 +21,17 @@ using ::testing::IsEmpty;
 constexpr double kDegree = core::kPi / 180.0;
 
 using test::LoadedRobot;
-constexpr auto Load = test::LoadRobot;
+using test::LoadRobot;
 
 std::unique_ptr<LoadedRobot> LoadExample(const std::string& name) {
-  return Load(test::WorldsPath("klampt/robots/" + name));
+  return LoadRobot(test::WorldsPath("klampt/robots/" + name));
 }
 
 // writes `text` as a scratch .rob file and loads it
-std::unique_ptr<LoadedRobot> LoadText(const std::string& text, std::string* path = nullptr) {
+std::unique_ptr<LoadedRobot> LoadRobText(const std::string& text, std::string* path = nullptr) {
   const std::string file = test::WriteScratchFile("robot.rob", text);
   if (path != nullptr) *path = file;
-  return Load(file);
+  return LoadRobot(file);
 }
 
 std::vector<double> DriverValues(const core::RobotDesc& robot, double core::DriverDesc::*field) {
@@ -186,7 +186,7 @@ TEST(RobFile, Tx90lGetsDefaultJointsAndDrivers) {
 }
 
 TEST(RobFile, KlamptDefaults) {
-  auto loaded = LoadText(
+  auto loaded = LoadRobText(
       "TParent 1 0 0 0 1 0 0 0 1 0 0 0 \\\n"
       "        1 0 0 0 1 0 0 0 1 0 0 1\n");
   ASSERT_TRUE(loaded->ok) << loaded->diagnostics.FormatAll();
@@ -215,7 +215,7 @@ TEST(RobFile, KlamptDefaults) {
 
 TEST(RobFile, DegreesConvertOnlyRevoluteEntriesWhateverTheKeywordOrder) {
   // Klamp't converts the prismatic entry too when qmindeg comes before jointtype
-  auto loaded = LoadText(
+  auto loaded = LoadRobText(
       "TParent 1 0 0 0 1 0 0 0 1 0 0 0  1 0 0 0 1 0 0 0 1 0 0 1\n"
       "qMinDeg -90 -90\n"
       "qmaxdeg 90 90\n"
@@ -228,7 +228,7 @@ TEST(RobFile, DegreesConvertOnlyRevoluteEntriesWhateverTheKeywordOrder) {
 }
 
 TEST(RobFile, DenavitHartenbergParameters) {
-  auto loaded = LoadText(
+  auto loaded = LoadRobText(
       "alphadeg 0 90\n"
       "a 0 0.5\n"
       "d 0.1 0.2\n"
@@ -244,7 +244,7 @@ TEST(RobFile, DenavitHartenbergParameters) {
 }
 
 TEST(RobFile, TranslationAndRotationPlaceTheRoots) {
-  auto loaded = LoadText(
+  auto loaded = LoadRobText(
       "TParent 1 0 0 0 1 0 0 0 1 0 0 0.5  1 0 0 0 1 0 0 0 1 1 0 0\n"
       "translation 1 2 3\n"
       "rotation 0 -1 0  1 0 0  0 0 1\n");
@@ -256,7 +256,7 @@ TEST(RobFile, TranslationAndRotationPlaceTheRoots) {
 }
 
 TEST(RobFile, GeometryScaleMarginAndTransform) {
-  auto loaded = LoadText(
+  auto loaded = LoadRobText(
       "TParent 1 0 0 0 1 0 0 0 1 0 0 0  1 0 0 0 1 0 0 0 1 0 0 1\n"
       "geometry \"" +
       kBox + "\" \"" + kBox +
@@ -280,7 +280,7 @@ TEST(RobFile, GeometryScaleMarginAndTransform) {
 }
 
 TEST(RobFile, AutomassFromGeometry) {
-  auto loaded = LoadText(
+  auto loaded = LoadRobText(
       "TParent 1 0 0 0 1 0 0 0 1 0 0 0  1 0 0 0 1 0 0 0 1 0 0 1 \\\n"
       "        1 0 0 0 1 0 0 0 1 0 0 0  1 0 0 0 1 0 0 0 1 0 0 1\n"
       "geometry \"" +
@@ -304,7 +304,7 @@ TEST(RobFile, AutomassFromGeometry) {
 }
 
 TEST(RobFile, AutomassIncludesMountedMeshes) {
-  auto loaded = LoadText(
+  auto loaded = LoadRobText(
       "TParent 1 0 0 0 1 0 0 0 1 0 0 0\n"
       "geometry \"" +
       kBox +
@@ -322,7 +322,7 @@ TEST(RobFile, AutomassIncludesMountedMeshes) {
 }
 
 TEST(RobFile, AutotorqueFollowsKlamptsHeuristic) {
-  auto loaded = LoadText(
+  auto loaded = LoadRobText(
       "TParent 1 0 0 0 1 0 0 0 1 0 0 0  1 0 0 0 1 0 0 0 1 0 0 1\n"
       "mass 2 1\n"
       "com 0 0 0  0.5 0 0\n"
@@ -335,7 +335,7 @@ TEST(RobFile, AutotorqueFollowsKlamptsHeuristic) {
 }
 
 TEST(RobFile, MountsARobotWithAPrefix) {
-  auto loaded = Load(test::DataPath("robots/arm.rob"));
+  auto loaded = LoadRobot(test::DataPath("robots/arm.rob"));
   ASSERT_TRUE(loaded->ok) << loaded->diagnostics.FormatAll();
   const core::RobotDesc& robot = loaded->robot;
   EXPECT_EQ(test::LinkNames(robot),
@@ -363,7 +363,7 @@ TEST(RobFile, MountsARobotWithAPrefix) {
 }
 
 TEST(RobFile, MountingMergesAnExplicitSelfCollisionList) {
-  auto loaded = LoadText(
+  auto loaded = LoadRobText(
       "TParent 1 0 0 0 1 0 0 0 1 0 0 0  1 0 0 0 1 0 0 0 1 0 0 1\n"
       "geometry \"" +
       kBox + "\" \"" + kBox +
@@ -379,7 +379,7 @@ TEST(RobFile, MountingMergesAnExplicitSelfCollisionList) {
 }
 
 TEST(RobFile, SelfCollisionPairsByNameOrIndex) {
-  auto loaded = LoadText(
+  auto loaded = LoadRobText(
       "links \"a\" \"b\" \"c\"\n"
       "TParent 1 0 0 0 1 0 0 0 1 0 0 0  1 0 0 0 1 0 0 0 1 0 0 1  1 0 0 0 1 0 0 0 1 0 0 1\n"
       "selfcollision a c  1 2\n"
@@ -390,7 +390,7 @@ TEST(RobFile, SelfCollisionPairsByNameOrIndex) {
 }
 
 TEST(RobFile, JointAndDriverTypes) {
-  auto loaded = LoadText(
+  auto loaded = LoadRobText(
       "TParent 1 0 0 0 1 0 0 0 1 0 0 0 \\\n"
       "        1 0 0 0 1 0 0 0 1 0 0 0 \\\n"
       "        1 0 0 0 1 0 0 0 1 0 0 0 \\\n"
@@ -428,7 +428,7 @@ TEST(RobFile, JointAndDriverTypes) {
 
 TEST(RobFile, PropertiesKeepTheirText) {
   test::WriteScratchFile("sensors.xml", "<sensors><JointPositionSensor name=\"q\"/></sensors>");
-  auto loaded = LoadText(
+  auto loaded = LoadRobText(
       "TParent 1 0 0 0 1 0 0 0 1 0 0 0\n"
       "property controller <controller type=\"JointTrackingController\"  rate=\"100\"/>\n"
       "property sensors sensors.xml\n"
@@ -442,7 +442,7 @@ TEST(RobFile, PropertiesKeepTheirText) {
 }
 
 TEST(RobFile, KeywordsAreCaseInsensitive) {
-  auto loaded = LoadText(
+  auto loaded = LoadRobText(
       "TPARENT 1 0 0 0 1 0 0 0 1 0 0 0\n"
       "Mass 4\n"
       "ServoP 7\n");
@@ -453,22 +453,22 @@ TEST(RobFile, KeywordsAreCaseInsensitive) {
 
 // ---- malformed input -----------------------------------------------------------------------
 
-struct BadCase {
+struct RobBadCase {
   const char* name;
   const char* lines;                  // appended to a valid two-link robot (from line 4)
   std::vector<std::string> messages;  // errors, without the "path:" prefix
 };
 
-constexpr char kTwoLinks[] =
+constexpr char kTwoLinkRob[] =
     "links \"a\" \"b\"\n"
     "TParent 1 0 0 0 1 0 0 0 1 0 0 0 \\\n"
     "        1 0 0 0 1 0 0 0 1 0 0 1\n";
 
-class RobFileErrors : public ::testing::TestWithParam<BadCase> {};
+class RobFileErrors : public ::testing::TestWithParam<RobBadCase> {};
 
 TEST_P(RobFileErrors, ReportsExactMessages) {
   std::string path;
-  auto loaded = LoadText(std::string(kTwoLinks) + GetParam().lines, &path);
+  auto loaded = LoadRobText(std::string(kTwoLinkRob) + GetParam().lines, &path);
   std::vector<std::string> expected;
   for (const std::string& message : GetParam().messages) {
     std::string text = message;
@@ -483,117 +483,119 @@ TEST_P(RobFileErrors, ReportsExactMessages) {
 INSTANTIATE_TEST_SUITE_P(
     Rob, RobFileErrors,
     ::testing::Values(
-        BadCase{"UnknownKeyword",
-                "qmaxx 1 1\n",
-                {"4: error: unknown keyword 'qmaxx' (did you mean 'qmax'?)"}},
-        BadCase{"BadNumber", "mass 1 abc\n", {"4: error: 'abc' in 'mass' is not a number"}},
-        BadCase{"NaN", "mass nan 1\n", {"4: error: 'nan' in 'mass' is not a number"}},
-        BadCase{"NegativeMass", "mass 1 -2\n", {"4: error: mass of link 1 must be >= 0, got '-2'"}},
-        BadCase{"WrongLength",
-                "qmin 0 0 0\n",
-                {"4: error: 'qmin' expects 2 values (one per link), got 3"}},
-        BadCase{"NotAMultiple",
-                "com 0 0\n",
-                {"4: error: 'com' expects a multiple of 3 numbers, got 2",
-                 "4: error: 'com' expects 6 numbers (3 per link), got 2"}},
-        BadCase{"ParentOutOfRange",
-                "parents -1 5\n",
-                {"4: error: parent of link 1 must be -1 or a link index below 1, got 5"}},
-        BadCase{"ParentCycle",
-                "parents 1 0\n",
-                {"4: error: parent of link 0 must be -1 or a link index below 0, got 1"}},
-        BadCase{"JointTypeLetter",
-                "jointtype r x\n",
-                {"4: error: invalid joint type 'x', expected 'r' or 'p'"}},
-        BadCase{"JointLinkOutOfRange",
-                "joint normal 0\njoint normal 7\n",
-                {"5: error: 'joint' link 7 is out of range (robot has 2 links)"}},
-        BadCase{"UnknownJointType",
-                "joint hinge 1\n",
-                {"4: error: unknown joint type 'hinge', expected normal, spin, weld, floating, "
-                 "floatingplanar or ballandsocket"}},
-        BadCase{"FloatingBaseNotAnAncestor",
-                "joint floating 0 1\njoint normal 1\n",
-                {"4: error: joint base 1 is not an ancestor of link 0"}},
-        BadCase{"FloatingPlanarSpan",
-                "joint floatingplanar 1 -1\n",
-                {"4: error: 'floatingplanar' joint must span 3 links, got 2"}},
-        BadCase{"LinkInTwoJoints",
-                "joint normal 0\njoint normal 1\njoint weld 1\n",
-                {"6: error: link 1 is already part of the joint on line 5"}},
-        BadCase{
+        RobBadCase{"UnknownKeyword",
+                   "qmaxx 1 1\n",
+                   {"4: error: unknown keyword 'qmaxx' (did you mean 'qmax'?)"}},
+        RobBadCase{"BadNumber", "mass 1 abc\n", {"4: error: 'abc' in 'mass' is not a number"}},
+        RobBadCase{"NaN", "mass nan 1\n", {"4: error: 'nan' in 'mass' is not a number"}},
+        RobBadCase{
+            "NegativeMass", "mass 1 -2\n", {"4: error: mass of link 1 must be >= 0, got '-2'"}},
+        RobBadCase{"WrongLength",
+                   "qmin 0 0 0\n",
+                   {"4: error: 'qmin' expects 2 values (one per link), got 3"}},
+        RobBadCase{"NotAMultiple",
+                   "com 0 0\n",
+                   {"4: error: 'com' expects a multiple of 3 numbers, got 2",
+                    "4: error: 'com' expects 6 numbers (3 per link), got 2"}},
+        RobBadCase{"ParentOutOfRange",
+                   "parents -1 5\n",
+                   {"4: error: parent of link 1 must be -1 or a link index below 1, got 5"}},
+        RobBadCase{"ParentCycle",
+                   "parents 1 0\n",
+                   {"4: error: parent of link 0 must be -1 or a link index below 0, got 1"}},
+        RobBadCase{"JointTypeLetter",
+                   "jointtype r x\n",
+                   {"4: error: invalid joint type 'x', expected 'r' or 'p'"}},
+        RobBadCase{"JointLinkOutOfRange",
+                   "joint normal 0\njoint normal 7\n",
+                   {"5: error: 'joint' link 7 is out of range (robot has 2 links)"}},
+        RobBadCase{"UnknownJointType",
+                   "joint hinge 1\n",
+                   {"4: error: unknown joint type 'hinge', expected normal, spin, weld, floating, "
+                    "floatingplanar or ballandsocket"}},
+        RobBadCase{"FloatingBaseNotAnAncestor",
+                   "joint floating 0 1\njoint normal 1\n",
+                   {"4: error: joint base 1 is not an ancestor of link 0"}},
+        RobBadCase{"FloatingPlanarSpan",
+                   "joint floatingplanar 1 -1\n",
+                   {"4: error: 'floatingplanar' joint must span 3 links, got 2"}},
+        RobBadCase{"LinkInTwoJoints",
+                   "joint normal 0\njoint normal 1\njoint weld 1\n",
+                   {"6: error: link 1 is already part of the joint on line 5"}},
+        RobBadCase{
             "InertiaNotSymmetric",
             "inertia 1 2 0 0 1 0 0 0 1  1 0 0 0 1 0 0 0 1\n",
             {"4: error: inertia of link 0 must be a symmetric positive semi-definite 3x3 matrix, "
              "got '1 2 0 0 1 0 0 0 1'"}},
-        BadCase{
+        RobBadCase{
             "InertiaNegativeMoment",
             "inertiadiag 1 -1 1  1 1 1\n",
             {"4: error: inertia of link 0 must be a symmetric positive semi-definite 3x3 matrix, "
              "got '1 0 0 0 -1 0 0 0 1'"}},
-        BadCase{
+        RobBadCase{
             "QminAboveQmax",
             "qmin 1 0\nqmax 0 0\n",
             {"4: error: jointLimits of link 0 (qmin, qmax) must be 2 numbers min <= max (inf and "
              "-inf allowed), got '1 0'"}},
-        BadCase{"ServoCount",
-                "servoP 1 2 3\n",
-                {"4: error: 'servoP' expects 2 values (one per driver), got 3"}},
-        BadCase{"ServoNegative",
-                "servoP 1 -5\n",
-                {"4: error: 'servoP' of driver 1 must be >= 0, got '-5'"}},
-        BadCase{"DriverNamesCount",
-                "drivers \"x\"\n",
-                {"4: error: 'drivers' expects 2 names (one per driver), got 1"}},
-        BadCase{"DrivenTwice",
-                "driver normal 1\ndriver normal 1\n",
-                {"5: error: link 1 is already driven by the driver on line 4"}},
-        BadCase{"UnknownDriverType",
-                "driver pwm 1\n",
-                {"4: error: unknown driver type 'pwm', expected normal, affine, translation or "
-                 "rotation"}},
-        BadCase{"AffineCounts",
-                "driver affine 2 0 1 1\n",
-                {"4: error: 'driver affine' expects a count n >= 1, then n links, n scales, n "
-                 "offsets and optionally 6 limits, got 4 values"}},
-        BadCase{"MissingMesh",
-                "geometry \"nope.off\" \"\"\n",
-                {"4: error: cannot open mesh file 'DIR/nope.off'"}},
-        BadCase{"GeometryCount",
-                "geometry \"\"\n",
-                {"4: error: 'geometry' expects 2 file names (one per link), got 1"}},
-        BadCase{"GeomTransformLastRow",
-                "geomtransform 0 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 2\n",
-                {"4: error: 'geomtransform' matrix must end with the row '0 0 0 1'"}},
-        BadCase{"Scale", "scale 2\n", {"4: error: 'scale' other than 1 is not supported, got '2'"}},
-        BadCase{
+        RobBadCase{"ServoCount",
+                   "servoP 1 2 3\n",
+                   {"4: error: 'servoP' expects 2 values (one per driver), got 3"}},
+        RobBadCase{"ServoNegative",
+                   "servoP 1 -5\n",
+                   {"4: error: 'servoP' of driver 1 must be >= 0, got '-5'"}},
+        RobBadCase{"DriverNamesCount",
+                   "drivers \"x\"\n",
+                   {"4: error: 'drivers' expects 2 names (one per driver), got 1"}},
+        RobBadCase{"DrivenTwice",
+                   "driver normal 1\ndriver normal 1\n",
+                   {"5: error: link 1 is already driven by the driver on line 4"}},
+        RobBadCase{"UnknownDriverType",
+                   "driver pwm 1\n",
+                   {"4: error: unknown driver type 'pwm', expected normal, affine, translation or "
+                    "rotation"}},
+        RobBadCase{"AffineCounts",
+                   "driver affine 2 0 1 1\n",
+                   {"4: error: 'driver affine' expects a count n >= 1, then n links, n scales, n "
+                    "offsets and optionally 6 limits, got 4 values"}},
+        RobBadCase{"MissingMesh",
+                   "geometry \"nope.off\" \"\"\n",
+                   {"4: error: cannot open mesh file 'DIR/nope.off'"}},
+        RobBadCase{"GeometryCount",
+                   "geometry \"\"\n",
+                   {"4: error: 'geometry' expects 2 file names (one per link), got 1"}},
+        RobBadCase{"GeomTransformLastRow",
+                   "geomtransform 0 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 2\n",
+                   {"4: error: 'geomtransform' matrix must end with the row '0 0 0 1'"}},
+        RobBadCase{
+            "Scale", "scale 2\n", {"4: error: 'scale' other than 1 is not supported, got '2'"}},
+        RobBadCase{
             "Collision",
             "collision 0\nnocollision 1\n",
             {"4: error: 'collision' is not supported", "5: error: 'nocollision' is not supported"}},
-        BadCase{"MountTransform",
-                "mount 0 \"x.off\" 1 0 0\n",
-                {"4: error: 'mount' transform expects 12 numbers, got 3"}},
-        BadCase{"MountLink",
-                "mount 5 \"x.rob\"\nmount wrist \"x.off\"\n",
-                {"4: error: 'mount' link 5 is out of range (robot has 2 links)",
-                 "5: error: 'mount' link 'wrist' is not a link name or index"}},
-        BadCase{"MissingMountedRobot",
-                "mount 0 \"missing.rob\"\n",
-                {"4: error: cannot open robot file 'DIR/missing.rob'"}},
-        BadCase{"UnknownPairLink",
-                "noselfcollision a c\n",
-                {"4: error: unknown link 'c' in 'noselfcollision'"}},
-        BadCase{"AutomassFraction",
-                "automass 2\n",
-                {"4: error: 'automass' surface fraction must be in [0, 1], got '2'"}},
-        BadCase{"TranslationCount",
-                "translation 1 2\n",
-                {"4: error: 'translation' expects 3 numbers, got 2"}}),
-    [](const ::testing::TestParamInfo<BadCase>& param_info) { return param_info.param.name; });
+        RobBadCase{"MountTransform",
+                   "mount 0 \"x.off\" 1 0 0\n",
+                   {"4: error: 'mount' transform expects 12 numbers, got 3"}},
+        RobBadCase{"MountLink",
+                   "mount 5 \"x.rob\"\nmount wrist \"x.off\"\n",
+                   {"4: error: 'mount' link 5 is out of range (robot has 2 links)",
+                    "5: error: 'mount' link 'wrist' is not a link name or index"}},
+        RobBadCase{"MissingMountedRobot",
+                   "mount 0 \"missing.rob\"\n",
+                   {"4: error: cannot open robot file 'DIR/missing.rob'"}},
+        RobBadCase{"UnknownPairLink",
+                   "noselfcollision a c\n",
+                   {"4: error: unknown link 'c' in 'noselfcollision'"}},
+        RobBadCase{"AutomassFraction",
+                   "automass 2\n",
+                   {"4: error: 'automass' surface fraction must be in [0, 1], got '2'"}},
+        RobBadCase{"TranslationCount",
+                   "translation 1 2\n",
+                   {"4: error: 'translation' expects 3 numbers, got 2"}}),
+    [](const ::testing::TestParamInfo<RobBadCase>& param_info) { return param_info.param.name; });
 
 TEST(RobFile, NoLinkFrames) {
   std::string path;
-  auto loaded = LoadText("links \"a\"\nmass 1\n", &path);
+  auto loaded = LoadRobText("links \"a\"\nmass 1\n", &path);
   EXPECT_FALSE(loaded->ok);
   EXPECT_THAT(loaded->diagnostics.Messages(Severity::kError),
               ElementsAre(path + ": error: no link frames: expected 'tparent' or all of 'alpha', "
@@ -602,7 +604,7 @@ TEST(RobFile, NoLinkFrames) {
 
 TEST(RobFile, ReportsEveryProblemOfAFileInOneRun) {
   const std::string path = test::DataPath("bad/rob_many_errors.rob");
-  auto loaded = Load(path);
+  auto loaded = LoadRobot(path);
   EXPECT_FALSE(loaded->ok);
   EXPECT_THAT(loaded->diagnostics.Messages(Severity::kError),
               ElementsAre(path + ":6: error: 'fast' in 'velmax' is not a number",
@@ -614,7 +616,7 @@ TEST(RobFile, ReportsEveryProblemOfAFileInOneRun) {
 
 TEST(RobFile, RejectsARobotThatMountsItself) {
   const std::string path = test::DataPath("bad/rob_mount_self.rob");
-  auto loaded = Load(path);
+  auto loaded = LoadRobot(path);
   EXPECT_FALSE(loaded->ok);
   EXPECT_THAT(
       loaded->diagnostics.Messages(Severity::kError),

@@ -13,7 +13,7 @@ namespace lamina {
 namespace {
 
 using test::LoadedRobot;
-constexpr auto Load = test::LoadRobot;
+using test::LoadRobot;
 
 std::unique_ptr<LoadedRobot> Parse(const std::string& text, const std::string& path) {
   auto loaded = std::make_unique<LoadedRobot>();
@@ -112,7 +112,7 @@ class RobWriterExamples : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(RobWriterExamples, ReadsBackIdentically) {
   const std::string path = test::WorldsPath(std::string("klampt/robots/") + GetParam());
-  auto loaded = Load(path);
+  auto loaded = LoadRobot(path);
   ASSERT_TRUE(loaded->ok) << loaded->diagnostics.FormatAll();
   ExpectRoundTrip(loaded->robot, core::DirectoryOf(path));
 }
@@ -124,7 +124,7 @@ INSTANTIATE_TEST_SUITE_P(Klampt, RobWriterExamples,
                                            "mirobot.urdf"));
 
 TEST(RobWriter, MountedRobotReadsBackFromAnotherDirectory) {
-  auto loaded = Load(test::DataPath("robots/arm.rob"));
+  auto loaded = LoadRobot(test::DataPath("robots/arm.rob"));
   ASSERT_TRUE(loaded->ok) << loaded->diagnostics.FormatAll();
   ExpectRoundTrip(loaded->robot, test::ScratchDir());
   // mesh paths are written relative to the new directory
@@ -172,7 +172,7 @@ TEST(RobWriter, DriverTypesPropertiesAndGeometryTransforms) {
 }
 
 TEST(RobWriter, NonUniformScaleIsFoldedIntoTheGeomTransform) {
-  auto loaded = Load(test::DataPath("robots/arm.rob"));
+  auto loaded = LoadRobot(test::DataPath("robots/arm.rob"));
   ASSERT_TRUE(loaded->ok) << loaded->diagnostics.FormatAll();
   core::RobotDesc robot = loaded->robot;
   robot.links[1].geometry[0].scale = core::Vec3(1, 2, 3);

@@ -20,17 +20,17 @@ using ::testing::ElementsAre;
 using ::testing::IsEmpty;
 
 using test::LoadedRobot;
-constexpr auto Load = test::LoadRobot;
+using test::LoadRobot;
 
-std::unique_ptr<LoadedRobot> LoadText(const std::string& text, std::string* path = nullptr) {
+std::unique_ptr<LoadedRobot> LoadUrdfText(const std::string& text, std::string* path = nullptr) {
   const std::string file = test::WriteScratchFile("robot.urdf", text);
   if (path != nullptr) *path = file;
-  return Load(file);
+  return LoadRobot(file);
 }
 
 TEST(UrdfFile, Mirobot) {
   const std::string path = test::WorldsPath("klampt/robots/mirobot.urdf");
-  auto loaded = Load(path);
+  auto loaded = LoadRobot(path);
   ASSERT_TRUE(loaded->ok) << loaded->diagnostics.FormatAll();
   // the file misspells Klamp't's default_acc_max; Klamp't ignores it silently
   EXPECT_THAT(loaded->diagnostics.Messages(Severity::kWarning),
@@ -84,7 +84,7 @@ TEST(UrdfFile, Mirobot) {
 
 TEST(UrdfFile, EveryJointTypePrimitivesAndPackages) {
   const std::string path = test::DataPath("robots/urdf/all_joints.urdf");
-  auto loaded = Load(path);
+  auto loaded = LoadRobot(path);
   ASSERT_TRUE(loaded->ok) << loaded->diagnostics.FormatAll();
   EXPECT_THAT(loaded->diagnostics.Messages(Severity::kWarning), IsEmpty());
   EXPECT_THAT(loaded->diagnostics.Messages(Severity::kNote),
@@ -205,7 +205,7 @@ constexpr char kFloatingRobot[] = R"(<?xml version="1.0"?>
 )";
 
 TEST(UrdfFile, ARootOtherThanTheWorldFloats) {
-  auto loaded = LoadText(std::string(kFloatingRobot) + "</robot>\n");
+  auto loaded = LoadUrdfText(std::string(kFloatingRobot) + "</robot>\n");
   ASSERT_TRUE(loaded->ok) << loaded->diagnostics.FormatAll();
   const core::RobotDesc& robot = loaded->robot;
   // Klamp't's floating base: x, y, z, yaw, pitch virtual links; the body itself is the roll
@@ -227,16 +227,17 @@ TEST(UrdfFile, ARootOtherThanTheWorldFloats) {
 
 TEST(UrdfFile, KlamptExtension) {
   const std::string box = test::DataPath("robots/box.off");
-  auto loaded = LoadText(std::string(kFloatingRobot) +
-                         "  <klampt freeze_root_link=\"1\" default_acc_max=\"3\" "
-                         "default_mass=\"0.25\">\n"
-                         "    <link name=\"arm\" servoP=\"7\" dryFriction=\"0.5\" accMax=\"4\"/>\n"
-                         "    <noselfcollision pairs=\"body arm\"/>\n"
-                         "    <mount link=\"arm\" file=\"" +
-                         box +
-                         "\" transform=\"1 0 0 0 1 0 0 0 1 0 0 1\"/>\n"
-                         "    <sensors><JointPositionSensor name=\"q\"/></sensors>\n"
-                         "  </klampt>\n</robot>\n");
+  auto loaded =
+      LoadUrdfText(std::string(kFloatingRobot) +
+                   "  <klampt freeze_root_link=\"1\" default_acc_max=\"3\" "
+                   "default_mass=\"0.25\">\n"
+                   "    <link name=\"arm\" servoP=\"7\" dryFriction=\"0.5\" accMax=\"4\"/>\n"
+                   "    <noselfcollision pairs=\"body arm\"/>\n"
+                   "    <mount link=\"arm\" file=\"" +
+                   box +
+                   "\" transform=\"1 0 0 0 1 0 0 0 1 0 0 1\"/>\n"
+                   "    <sensors><JointPositionSensor name=\"q\"/></sensors>\n"
+                   "  </klampt>\n</robot>\n");
   ASSERT_TRUE(loaded->ok) << loaded->diagnostics.FormatAll();
   const core::RobotDesc& robot = loaded->robot;
   ASSERT_EQ(robot.joints.size(), 7u);  // six welds for the frozen base, then the hinge
@@ -258,7 +259,7 @@ TEST(UrdfFile, KlamptExtension) {
 
 TEST(UrdfFile, FileSchemeAndVisualGeometryOption) {
   const std::string box = test::DataPath("robots/box.off");
-  auto loaded = LoadText(
+  auto loaded = LoadUrdfText(
       "<robot name=\"r\">\n"
       "  <link name=\"world\"/>\n"
       "  <joint name=\"j\" type=\"fixed\"><parent link=\"world\"/><child link=\"a\"/></joint>\n"
@@ -279,7 +280,7 @@ TEST(UrdfFile, FileSchemeAndVisualGeometryOption) {
 TEST(UrdfFile, MimicChainsComposeIntoOneAffineDriver) {
   std::string path;
   const std::string limit = "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>";
-  auto loaded = LoadText(
+  auto loaded = LoadUrdfText(
       "<robot name=\"r\">\n"
       "  <link name=\"world\"/><link name=\"a\"/><link name=\"b\"/><link name=\"c\"/>\n"
       "  <link name=\"d\"/>\n"
@@ -317,7 +318,7 @@ TEST(UrdfFile, MimicChainsComposeIntoOneAffineDriver) {
 // ---- malformed input -----------------------------------------------------------------------
 
 std::vector<std::string> Errors(const std::string& path) {
-  auto loaded = Load(path);
+  auto loaded = LoadRobot(path);
   EXPECT_FALSE(loaded->ok);
   return loaded->diagnostics.Messages(Severity::kError);
 }
@@ -359,7 +360,7 @@ TEST(UrdfFile, UrdfdomErrorsAreReported) {
 
 TEST(UrdfFile, StructuralErrors) {
   std::string path;
-  auto loaded = LoadText(
+  auto loaded = LoadUrdfText(
       "<robot name=\"r\">\n"
       "  <link name=\"a\"/>\n"
       "  <link name=\"a\"/>\n"
@@ -372,7 +373,7 @@ TEST(UrdfFile, StructuralErrors) {
               ElementsAre(path + ":3: error: link 'a' is defined twice (first on line 2)",
                           path + ":4: error: <link> has no 'name' attribute",
                           path + ":5: error: joint 'j' has no <child link=...>"));
-  auto world = LoadText("<world/>\n", &path);
+  auto world = LoadUrdfText("<world/>\n", &path);
   EXPECT_THAT(world->diagnostics.Messages(Severity::kError),
               ElementsAre(path + ":1: error: expected a <robot> root element, got <world>"));
 }

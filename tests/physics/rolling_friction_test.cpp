@@ -24,9 +24,9 @@ namespace {
 
 using core::Vec3;
 
-constexpr double kRadius = 0.1;   // m
-constexpr double kMass = 1.0;     // kg
-constexpr double kGravity = 9.8;  // m/s², SimSettings' default
+constexpr double kRadius = 0.1;  // m
+constexpr double kMass = 1.0;    // kg
+using test::kGravity;
 
 // A 0.1 m, 1 kg solid ball (I = 2/5 m r²) resting on a rigid plane, both surfaces with the given
 // Coulomb, rolling and spinning friction (equal sides: the harmonic mean keeps the value). The

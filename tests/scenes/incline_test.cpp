@@ -12,15 +12,16 @@
 #include "core/geometry/tessellate.h"
 #include "core/sim/simulator.h"
 #include "tests/common/scene_builders.h"
+#include "tests/common/test_support.h"
 
 namespace lamina {
 namespace {
 
 using core::Vec3;
 
-constexpr double kGravity = 9.8;
+using test::kGravity;
 constexpr double kMu = 0.5;
-constexpr double kSide = 0.1;
+using test::kBoxSide;
 constexpr double kObjectPadding = 0.0025;  // the plane terrain has none
 
 double Radians(double degrees) {
@@ -41,13 +42,14 @@ enum class BoxShape { kPrimitive, kMesh };
 core::WorldDesc BoxOnPlane(BoxShape shape) {
   core::WorldDesc world;
   world.terrains.push_back(test::PlaneTerrain(kMu, 0.0));
-  core::RigidObjectDesc box = test::BoxObject(kSide, 1.0, Vec3(0, 0, 0.5 * kSide + kObjectPadding));
+  core::RigidObjectDesc box =
+      test::BoxObject(kBoxSide, 1.0, Vec3(0, 0, 0.5 * kBoxSide + kObjectPadding));
   box.sim.padding = kObjectPadding;
   box.sim.surface = {0.0, kMu, core::kInf, core::kInf};
   if (shape == BoxShape::kMesh) {
     box.geometry.kind = core::GeometryKind::kMesh;
     box.geometry.mesh = std::make_shared<const core::TriangleMesh>(
-        core::Tessellate(core::Primitive::Box(Vec3::Constant(kSide))));
+        core::Tessellate(core::Primitive::Box(Vec3::Constant(kBoxSide))));
   }
   world.objects.push_back(box);
   return world;
@@ -73,7 +75,7 @@ std::vector<double> SlopeDisplacements(BoxShape shape, double theta_degrees,
   EXPECT_LT(simulator.statistics().worst_status, core::StepStatus::kUnstable)
       << simulator.statistics().error;
   // the box stays on the slope: no tipping (tan(theta) < 1 for a cube) and no bouncing off
-  EXPECT_NEAR(simulator.GetObjectPose(0).translation().z(), 0.5 * kSide + kObjectPadding, 1e-3);
+  EXPECT_NEAR(simulator.GetObjectPose(0).translation().z(), 0.5 * kBoxSide + kObjectPadding, 1e-3);
   return out;
 }
 

@@ -25,7 +25,7 @@ using core::ParamValue;
 using core::Vec3;
 using core::VecX;
 
-constexpr double kSide = 0.1;
+using test::kBoxSide;
 
 const core::ParamSpec& Row(std::string_view key, core::ElementKind kind) {
   const core::ParamSpec* spec = core::FindParam(key, kind);
@@ -37,8 +37,8 @@ const core::ParamSpec& Row(std::string_view key, core::ElementKind kind) {
 core::WorldDesc TwoBoxes() {
   core::WorldDesc world;
   world.terrains.push_back(test::PlaneTerrain(0.5, 0.0));
-  world.objects.push_back(test::BoxObject(kSide, 1.0, Vec3(0, 0, kSide / 2)));
-  world.objects.push_back(test::BoxObject(kSide, 1.0, Vec3(1, 0, kSide / 2)));
+  world.objects.push_back(test::BoxObject(kBoxSide, 1.0, Vec3(0, 0, kBoxSide / 2)));
+  world.objects.push_back(test::BoxObject(kBoxSide, 1.0, Vec3(1, 0, kBoxSide / 2)));
   world.objects[0].initial_velocity.linear = Vec3(1.0, 0, 0);
   return world;
 }
@@ -112,14 +112,14 @@ TEST(LiveEditTest, InitialConditionEditsChangeOnlyWhatResetStartsFrom) {
   simulator.Simulate(0.1);
   const core::SimState now = simulator.GetState();
   core::Pose start = core::Pose::Identity();
-  start.translation() = Vec3(2, 0, kSide / 2);
+  start.translation() = Vec3(2, 0, kBoxSide / 2);
   std::string error;
   ASSERT_TRUE(simulator.SetParam(ElementIndex::Object(1),
                                  Row("transform", core::ElementKind::kObject),
                                  core::PoseToValue(start), &error));
   EXPECT_EQ(simulator.GetState(), now);
   simulator.Reset();
-  EXPECT_EQ(simulator.GetObjectPose(1).translation(), Vec3(2, 0, kSide / 2));
+  EXPECT_EQ(simulator.GetObjectPose(1).translation(), Vec3(2, 0, kBoxSide / 2));
 }
 
 TEST(LiveEditTest, GainsAndFrictionEditedLiveSurviveResetAndReachTheSavedWorld) {
@@ -213,7 +213,7 @@ core::WorldDesc Stack() {
   core::WorldDesc world;
   world.terrains.push_back(test::PlaneTerrain(0.5, 0.2));
   for (int i = 0; i < 4; ++i) {
-    world.objects.push_back(test::BoxObject(kSide, 1.0, Vec3(0.01 * i, 0, 0.06 + 0.105 * i)));
+    world.objects.push_back(test::BoxObject(kBoxSide, 1.0, Vec3(0.01 * i, 0, 0.06 + 0.105 * i)));
   }
   return world;
 }
@@ -251,7 +251,7 @@ TEST(ChunkingTest, ARobotUnderItsControllerToo) {
 TEST(HeldWrenchTest, AHeldForceLastsAcrossCallsUntilCleared) {
   core::WorldDesc world;
   world.terrains.push_back(test::PlaneTerrain(0.0, 0.0));
-  world.objects.push_back(test::BoxObject(kSide, 2.0, Vec3(0, 0, kSide / 2)));
+  world.objects.push_back(test::BoxObject(kBoxSide, 2.0, Vec3(0, 0, kBoxSide / 2)));
   world.objects[0].sim.surface.friction = 0.0;
   core::Simulator held(world), once(world);
   held.SetAppliedWrench(1, Vec3(4, 0, 0), Vec3::Zero());
@@ -305,7 +305,7 @@ TEST(ChangeRuleTest, FakeSimulateInvalidatesLikeSetRobotConfig) {
         test::PrimitiveGeometry(core::Primitive::Box(Vec3(0.4, 0.4, 0.02)))};
     world.robots[0].links[0].com = Vec3::Zero();
     world.robots[0].config = VecX::Zero(1);
-    world.objects.push_back(test::BoxObject(kSide, 0.2, Vec3(0, 0, 1.0 + 0.01 + kSide / 2)));
+    world.objects.push_back(test::BoxObject(kBoxSide, 0.2, Vec3(0, 0, 1.0 + 0.01 + kBoxSide / 2)));
     core::Simulator simulator(world);
     simulator.Simulate(0.5);
     const int link = simulator.world().RobotLinkId(0, 0);
@@ -401,7 +401,7 @@ TEST(LiveEditTest, BadArgumentsAreRefusedWithAMessage) {
   EXPECT_THROW(simulator.SetState(state), std::invalid_argument);
   core::DragSpringSettings limp;
   limp.frequency = 0.0;
-  EXPECT_THROW(simulator.StartDrag(1, Vec3(0, 0, kSide), limp), std::invalid_argument);
+  EXPECT_THROW(simulator.StartDrag(1, Vec3(0, 0, kBoxSide), limp), std::invalid_argument);
   EXPECT_FALSE(simulator.dragging());
 }
 

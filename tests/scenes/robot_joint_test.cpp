@@ -21,7 +21,7 @@ namespace {
 using core::Vec3;
 using core::VecX;
 
-constexpr double kGravity = 9.8;
+using test::kGravity;
 constexpr double kLength = 0.5;     // pivot to centre of mass, m
 constexpr double kMass = 2.0;       // kg
 constexpr double kInertiaC = 0.01;  // about the COM, kg·m²
@@ -107,11 +107,11 @@ core::WorldDesc CoupledPair(const std::string& order, double servo_i) {
 TEST(RobotJointTest, AnAffinePairHoldsALoadAsItsTransmissionLawSays) {
   constexpr double kP = 100.0, kHandleMass = 1.0, kArm = 0.2;
   const auto load = [&](double q) { return kHandleMass * kGravity * kArm * std::cos(q); };
-  struct Case {
+  struct PairCase {
     const char* order;
     double servo_i, loaded, other;  // offsets from the command, in units of tau / kP
   } cases[] = {{"0 1", 0.0, 2.5, -1.5}, {"1 0", 0.0, 2.5, -1.5}, {"0 1", 100.0, 2.0, -2.0}};
-  for (const Case& c : cases) {
+  for (const PairCase& c : cases) {
     SCOPED_TRACE(std::string("links ") + c.order + ", kI " + std::to_string(c.servo_i));
     core::Simulator simulator(CoupledPair(c.order, c.servo_i));
     simulator.Simulate(10.0);

@@ -14,6 +14,7 @@
 #include "core/io/robot_file.h"
 #include "core/model/world_compare.h"
 #include "tests/common/scene_builders.h"
+#include "tests/common/test_support.h"
 
 namespace lamina {
 namespace {
@@ -21,17 +22,18 @@ namespace {
 using core::ParamValue;
 using core::Vec3;
 
-constexpr double kGravity = 9.8;
-constexpr double kSide = 0.1;
-constexpr double kPadding = 0.0025;
+using test::kBoxSide;
+using test::kGravity;
+constexpr double kBoxPadding = 0.0025;
 
 // a 1 kg, 10 cm box named "box" resting on a rigid plane, both with friction 0.5, no bounce
 core::WorldDesc BoxOnPlane() {
   core::WorldDesc world;
   world.terrains.push_back(test::PlaneTerrain(0.5, 0.0));
-  core::RigidObjectDesc box = test::BoxObject(kSide, 1.0, Vec3(0, 0, 0.5 * kSide + kPadding));
+  core::RigidObjectDesc box =
+      test::BoxObject(kBoxSide, 1.0, Vec3(0, 0, 0.5 * kBoxSide + kBoxPadding));
   box.name = "box";
-  box.sim.padding = kPadding;
+  box.sim.padding = kBoxPadding;
   box.sim.surface = {0.0, 0.5, core::kInf, core::kInf};
   world.objects.push_back(box);
   return world;
@@ -116,7 +118,7 @@ TEST(SimAccessTest, RowsAreReadAndWrittenThroughTheSimulatedDescription) {
 // z0 - g t²/2 - g h t/2 (semi-implicit Euler with step h) under the new gravity
 TEST(SimAccessTest, GravityComponentSetReachesTheFreeFall) {
   core::WorldDesc world;
-  world.objects.push_back(test::BoxObject(kSide, 1.0, Vec3(0, 0, 10)));
+  world.objects.push_back(test::BoxObject(kBoxSide, 1.0, Vec3(0, 0, 10)));
   world.objects[0].name = "box";
   core::Simulator simulator(world);
   Set(&simulator, "settings.gravity[2]", {-1.62});

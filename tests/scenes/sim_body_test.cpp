@@ -10,13 +10,14 @@
 
 #include "core/sim/simulator.h"
 #include "tests/common/scene_builders.h"
+#include "tests/common/test_support.h"
 
 namespace lamina {
 namespace {
 
 using core::Vec3;
 
-constexpr double kGravity = 9.8;
+using test::kGravity;
 
 core::WorldDesc FloatingBox(double mass) {
   core::WorldDesc world;

@@ -8,20 +8,21 @@
 
 #include "core/sim/simulator.h"
 #include "tests/common/scene_builders.h"
+#include "tests/common/test_support.h"
 
 namespace lamina {
 namespace {
 
 using core::Vec3;
 
-constexpr double kSide = 0.1;
-constexpr double kRest = 0.5 * kSide + 0.0025;  // centre height of a box resting on the plane
+using test::kBoxSide;
+constexpr double kRest = 0.5 * kBoxSide + 0.0025;  // centre height of a box resting on the plane
 
 core::WorldDesc BoxesOnPlane(const std::vector<Vec3>& positions) {
   core::WorldDesc world;
   world.terrains.push_back(test::PlaneTerrain(0.5, 0.0));
   for (const Vec3& position : positions) {
-    core::RigidObjectDesc box = test::BoxObject(kSide, 1.0, position);
+    core::RigidObjectDesc box = test::BoxObject(kBoxSide, 1.0, position);
     box.sim.surface = {0.0, 0.5, core::kInf, core::kInf};
     world.objects.push_back(box);
   }
@@ -71,7 +72,7 @@ TEST(SleepTest, ABoxLandingOnASleeperWakesItAndTheStackSleepsAgain) {
   ASSERT_GT(TimeToSleep(simulator, 0, 2.0), 0.0);
   const double z0 = simulator.GetObjectPose(0).translation().z();
   core::Pose above = core::Pose::Identity();
-  above.translation() = Vec3(0.01, 0, kRest + kSide + 0.0025 + 0.05);  // 5 cm above box 0
+  above.translation() = Vec3(0.01, 0, kRest + kBoxSide + 0.0025 + 0.05);  // 5 cm above box 0
   simulator.SetObjectPose(1, above);
   simulator.SetObjectVelocity(1, core::Twist{});
   EXPECT_FALSE(simulator.ObjectAsleep(1));
@@ -84,7 +85,7 @@ TEST(SleepTest, ABoxLandingOnASleeperWakesItAndTheStackSleepsAgain) {
   ASSERT_GT(TimeToSleep(simulator, 0, simulator.time() + 3.0), 0.0);
   EXPECT_TRUE(simulator.ObjectAsleep(1));  // the island sleeps together
   EXPECT_NEAR(simulator.GetObjectPose(0).translation().z(), z0, 5e-4);
-  EXPECT_NEAR(simulator.GetObjectPose(1).translation().z(), z0 + kSide + 2 * 0.0025, 1e-3);
+  EXPECT_NEAR(simulator.GetObjectPose(1).translation().z(), z0 + kBoxSide + 2 * 0.0025, 1e-3);
 }
 
 TEST(SleepTest, ForcesSettersAndGravityWakeASleeper) {
@@ -132,7 +133,8 @@ TEST(SleepTest, AForceLastingTheCallKeepsABoxAwakeAndLeavesNoImpulseBehind) {
 }
 
 TEST(SleepTest, ASleeperWhoseSupportIsMovedAwayFalls) {
-  core::Simulator simulator(BoxesOnPlane({Vec3(0, 0, kRest), Vec3(0, 0, kRest + kSide + 0.005)}));
+  core::Simulator simulator(
+      BoxesOnPlane({Vec3(0, 0, kRest), Vec3(0, 0, kRest + kBoxSide + 0.005)}));
   simulator.SetSleeping(true);
   ASSERT_GT(TimeToSleep(simulator, 1, 3.0), 0.0);
   ASSERT_TRUE(simulator.ObjectAsleep(0));

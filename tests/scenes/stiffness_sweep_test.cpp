@@ -11,17 +11,18 @@
 
 #include "core/sim/simulator.h"
 #include "tests/common/scene_builders.h"
+#include "tests/common/test_support.h"
 
 namespace lamina {
 namespace {
 
 using core::Vec3;
 
-constexpr double kGravity = 9.8;
-constexpr double kMass = 1.0;
-constexpr double kSide = 0.1;      // box side; also the sphere's diameter
-constexpr double kPadding = 0.01;  // object padding; the rigid plane has none
-constexpr double kDrop = 0.015;    // from the top of the layer
+using test::kGravity;
+constexpr double kBodyMass = 1.0;
+constexpr double kBodySize = 0.1;       // box side; also the sphere's diameter
+constexpr double kSweepPadding = 0.01;  // object padding; the rigid plane has none
+constexpr double kDrop = 0.015;         // from the top of the layer
 
 enum class Shape { kBox, kSphere };
 
@@ -38,7 +39,7 @@ std::string Describe(const SweepCase& c) {
 
 // Damping ratio zeta of a mass on the spring: c = 2 zeta sqrt(k m) (zeta = 1 is critical).
 double Damping(double stiffness, double zeta) {
-  return 2.0 * zeta * std::sqrt(stiffness * kMass);
+  return 2.0 * zeta * std::sqrt(stiffness * kBodyMass);
 }
 
 // What one run measured.
@@ -56,11 +57,11 @@ SweepRun Run(const SweepCase& c) {
   core::WorldDesc world;
   // the plane is rigid, so the blended stiffness and damping are the body's own (series rule)
   world.terrains.push_back(test::PlaneTerrain(0.5, 0.0));
-  const double half = 0.5 * kSide;
-  const Vec3 start(0, 0, half + kPadding + kDrop);
-  core::RigidObjectDesc body = c.shape == Shape::kBox ? test::BoxObject(kSide, kMass, start)
-                                                      : test::SphereObject(half, kMass, start);
-  body.sim.padding = kPadding;
+  const double half = 0.5 * kBodySize;
+  const Vec3 start(0, 0, half + kSweepPadding + kDrop);
+  core::RigidObjectDesc body = c.shape == Shape::kBox ? test::BoxObject(kBodySize, kBodyMass, start)
+                                                      : test::SphereObject(half, kBodyMass, start);
+  body.sim.padding = kSweepPadding;
   body.sim.surface = {0.0, 0.5, c.stiffness, c.damping};
   world.objects.push_back(body);
   world.settings.timestep = 0.001;
@@ -78,7 +79,7 @@ SweepRun Run(const SweepCase& c) {
       break;
     }
     // the rebounds: everything after the body first entered the layer
-    touched = touched || pose.translation().z() < half + kPadding;
+    touched = touched || pose.translation().z() < half + kSweepPadding;
     if (touched) run.highest_after = std::max(run.highest_after, pose.translation().z());
   }
   run.worst = std::max(run.worst, simulator.statistics().worst_status);
@@ -87,7 +88,7 @@ SweepRun Run(const SweepCase& c) {
   // the gap between the underlying geometry and the plane is z - half; the layer overlap is
   // the padding sum (with the layer-edge nanometre, core/contact/contact.h) minus that gap
   run.final_depth =
-      kPadding + core::kLayerEdgeSlack - (simulator.GetObjectPose(0).translation().z() - half);
+      kSweepPadding + core::kLayerEdgeSlack - (simulator.GetObjectPose(0).translation().z() - half);
   return run;
 }
 
@@ -105,8 +106,8 @@ void ExpectStableSettledRun(const SweepCase& c) {
   // pair's total normal force is k x however many contact points carry it, so the body settles
   // where k x = m g: x = m g / k, from 0.98 mm (1e4) down to 9.8 nm (1e9), all inside the
   // 10 mm layer. Within 5 %.
-  const double expected_depth = kMass * kGravity / c.stiffness;
-  ASSERT_LT(expected_depth, kPadding);
+  const double expected_depth = kBodyMass * kGravity / c.stiffness;
+  ASSERT_LT(expected_depth, kSweepPadding);
   EXPECT_NEAR(run.final_depth, expected_depth, 0.05 * expected_depth);
 }
 

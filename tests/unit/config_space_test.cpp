@@ -9,7 +9,7 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kTol = 1e-12;
+constexpr double kConfigTol = 1e-12;
 
 // three links: a normal revolute joint, a spin joint (link 1) and a prismatic one
 RobotDesc ThreeLinks() {
@@ -25,29 +25,29 @@ TEST(ConfigSpaceTest, NormalLinksMoveLinearlyAndSpinJointsTheShortWayRound) {
   const VecX a = Vec3(0.0, 3.0, 0.5), b = Vec3(2.0, -3.0, 1.5);
   // the spin joint goes from 3 to -3 through pi: 2pi - 6 = 0.283 rad, not -6 rad
   const VecX d = ConfigDifference(robot, a, b);
-  EXPECT_NEAR(d[0], 2.0, kTol);
-  EXPECT_NEAR(d[1], 2 * kPi - 6.0, kTol);
-  EXPECT_NEAR(d[2], 1.0, kTol);
+  EXPECT_NEAR(d[0], 2.0, kConfigTol);
+  EXPECT_NEAR(d[1], 2 * kPi - 6.0, kConfigTol);
+  EXPECT_NEAR(d[2], 1.0, kConfigTol);
   const VecX half = InterpolateConfig(robot, a, b, 0.5);
-  EXPECT_NEAR(half[0], 1.0, kTol);
-  EXPECT_NEAR(half[1], 3.0 + (kPi - 3.0), kTol);  // pi, the seam
-  EXPECT_NEAR(half[2], 1.0, kTol);
+  EXPECT_NEAR(half[0], 1.0, kConfigTol);
+  EXPECT_NEAR(half[1], 3.0 + (kPi - 3.0), kConfigTol);  // pi, the seam
+  EXPECT_NEAR(half[2], 1.0, kConfigTol);
   // past the seam the spin joint reads wrapped: 3 + 0.75 * 0.283 = 3.212 -> 3.212 - 2pi
   EXPECT_NEAR(InterpolateConfig(robot, a, b, 0.75)[1], 3.0 + 0.75 * (2 * kPi - 6.0) - 2 * kPi,
-              kTol);
+              kConfigTol);
 }
 
 TEST(ConfigSpaceTest, EndsAreTheGivenConfigurations) {
   const RobotDesc robot = ThreeLinks();
   const VecX a = Vec3(-1.0, 0.5, 0.25), b = Vec3(1.0, -0.5, -0.25);
-  EXPECT_TRUE(InterpolateConfig(robot, a, b, 0.0).isApprox(a, kTol));
-  EXPECT_TRUE(InterpolateConfig(robot, a, b, 1.0).isApprox(b, kTol));
+  EXPECT_TRUE(InterpolateConfig(robot, a, b, 0.0).isApprox(a, kConfigTol));
+  EXPECT_TRUE(InterpolateConfig(robot, a, b, 1.0).isApprox(b, kConfigTol));
   // without spin joints the difference is b - a exactly
   RobotDesc plain = robot;
   plain.joints[1].type = JointType::kNormal;
   const VecX far = Vec3(0.0, 10.0, 0.0);
-  EXPECT_NEAR(ConfigDifference(plain, a, far)[1], 9.5, kTol);
-  EXPECT_NEAR(InterpolateConfig(plain, a, far, 0.5)[1], 5.25, kTol);
+  EXPECT_NEAR(ConfigDifference(plain, a, far)[1], 9.5, kConfigTol);
+  EXPECT_NEAR(InterpolateConfig(plain, a, far, 0.5)[1], 5.25, kConfigTol);
 }
 
 }  // namespace

@@ -13,14 +13,15 @@
 #include "core/model/params.h"
 #include "core/number_text.h"
 #include "tests/common/scene_builders.h"
+#include "tests/common/test_support.h"
 
 namespace lamina::core {
 namespace {
 
 using ::testing::HasSubstr;
 
-constexpr double kMass = 1.0;  // kg
-constexpr double kSide = 0.1;  // m
+constexpr double kBoxMass = 1.0;  // kg
+using test::kBoxSide;
 
 // a soft box (e 0.2, μ 0.5, k 2e5, c 2e3) resting on a soft ground (e 0.6, μ 1, k 6e5, c 6e3)
 WorldDesc SoftBoxOnGround() {
@@ -28,12 +29,12 @@ WorldDesc SoftBoxOnGround() {
   world.terrains.push_back(test::PlaneTerrain(1.0, 0.6));
   world.terrains[0].sim.surface.stiffness = 6e5;
   world.terrains[0].sim.surface.damping = 6e3;
-  world.objects.push_back(test::BoxObject(kSide, kMass, Vec3(0, 0, kSide / 2)));
+  world.objects.push_back(test::BoxObject(kBoxSide, kBoxMass, Vec3(0, 0, kBoxSide / 2)));
   world.objects[0].sim.surface = {0.2, 0.5, 2e5, 2e3};
   return world;
 }
 
-constexpr int kGround = 0, kBox = 1;  // world ids
+constexpr int kGroundId = 0, kBoxId = 1;  // world ids
 
 double Harmonic(double a, double b) {
   return 2 * a * b / (a + b);
@@ -41,12 +42,12 @@ double Harmonic(double a, double b) {
 
 TEST(ContactReadoutTest, ABoxOnGroundReadsTheAnalyticBlendAndItsWeight) {
   Simulator sim(SoftBoxOnGround());
-  sim.EnableContactFeedback(kBox, kGround);
+  sim.EnableContactFeedback(kBoxId, kGroundId);
   sim.Simulate(1.0);  // settled: the overdamped layer (c = 1500 > 2 √(k m) = 775) rests in ms
-  const std::vector<PairReadout> readouts = ReadContacts(sim, kBox);
+  const std::vector<PairReadout> readouts = ReadContacts(sim, kBoxId);
   ASSERT_EQ(readouts.size(), 1u);
   const PairReadout& r = readouts[0];
-  EXPECT_EQ(r.partner, kGround);
+  EXPECT_EQ(r.partner, kGroundId);
   EXPECT_EQ(r.partner_name, "ground");
   EXPECT_DOUBLE_EQ(r.friction.value, Harmonic(0.5, 1.0));  // 2/3
   EXPECT_DOUBLE_EQ(r.restitution.value, 0.4);
@@ -62,7 +63,7 @@ TEST(ContactReadoutTest, ABoxOnGroundReadsTheAnalyticBlendAndItsWeight) {
   // a box face on a plane: its four corners
   EXPECT_EQ(r.contact_count, 4);
   // the pair pushes with k times its deepest overlap: m g / k = 65 µm, within the 2.5 mm padding
-  const double weight = kMass * sim.world().settings.gravity.norm();
+  const double weight = kBoxMass * sim.world().settings.gravity.norm();
   EXPECT_LE(r.max_depth, r.padding_sum);
   EXPECT_DOUBLE_EQ(r.padding_sum, 0.0025);
   EXPECT_NEAR(r.max_depth, weight / 1.5e5, 0.01 * weight / 1.5e5);
@@ -75,9 +76,9 @@ TEST(ContactReadoutTest, ABoxOnGroundReadsTheAnalyticBlendAndItsWeight) {
   EXPECT_DOUBLE_EQ(r.cfm, 1.0 / (hk + 1.5e3));
   EXPECT_THAT(r.law, HasSubstr("soft: ERP "));
   // the ground sees the same pair from its side
-  const std::vector<PairReadout> ground = ReadContacts(sim, kGround);
+  const std::vector<PairReadout> ground = ReadContacts(sim, kGroundId);
   ASSERT_EQ(ground.size(), 1u);
-  EXPECT_EQ(ground[0].partner, kBox);
+  EXPECT_EQ(ground[0].partner, kBoxId);
   EXPECT_EQ(ground[0].friction.value, r.friction.value);
   EXPECT_EQ(ground[0].friction.rule, "harmonic mean of 1 (ground) and 0.5 (box)");
   EXPECT_NEAR(ground[0].normal_force, weight, 0.01 * weight);  // along normals into the ground
@@ -86,7 +87,7 @@ TEST(ContactReadoutTest, ABoxOnGroundReadsTheAnalyticBlendAndItsWeight) {
 TEST(ContactReadoutTest, WithoutFeedbackTheForceIsSaidToBeUnknown) {
   Simulator sim(SoftBoxOnGround());
   sim.Simulate(0.1);
-  const std::vector<PairReadout> readouts = ReadContacts(sim, kBox);
+  const std::vector<PairReadout> readouts = ReadContacts(sim, kBoxId);
   ASSERT_EQ(readouts.size(), 1u);
   EXPECT_FALSE(readouts[0].normal_force_known);
   EXPECT_EQ(readouts[0].normal_force, 0.0);
@@ -97,8 +98,8 @@ TEST(ContactReadoutTest, WithoutFeedbackTheForceIsSaidToBeUnknown) {
 WorldDesc StackAndSphere() {
   WorldDesc world;
   world.terrains.push_back(test::PlaneTerrain(0.5, 0.0));
-  world.objects.push_back(test::BoxObject(kSide, kMass, Vec3(0, 0, kSide / 2)));
-  world.objects.push_back(test::BoxObject(kSide, kMass, Vec3(0, 0, 1.5 * kSide + 0.0025)));
+  world.objects.push_back(test::BoxObject(kBoxSide, kBoxMass, Vec3(0, 0, kBoxSide / 2)));
+  world.objects.push_back(test::BoxObject(kBoxSide, kBoxMass, Vec3(0, 0, 1.5 * kBoxSide + 0.0025)));
   world.objects[1].name = "upper";
   world.objects.push_back(test::SphereObject(0.05, 1.0, Vec3(2, 0, 3)));
   return world;
@@ -113,7 +114,7 @@ TEST(ContactReadoutTest, AStackListsEachBoxsOwnPartners) {
   ASSERT_EQ(top.size(), 1u);
   EXPECT_EQ(top[0].partner, lower);
   EXPECT_EQ(top[0].partner_name, "box");
-  const double weight = kMass * 9.8;
+  const double weight = kBoxMass * 9.8;
   EXPECT_NEAR(top[0].normal_force, weight, 0.01 * weight);
   // rigid on rigid: a hard contact, its stiffness inf by the rule that says so
   EXPECT_FALSE(top[0].soft);
@@ -145,10 +146,10 @@ TEST(ContactReadoutTest, AnIdThatIsNoBodyGivesNothing) {
 
 TEST(ContactReadoutTest, AFrictionEditReachesTheReadoutAndTheJointsAtTheNextStep) {
   Simulator sim(SoftBoxOnGround());
-  sim.EnableContactFeedback(kBox, kGround);
+  sim.EnableContactFeedback(kBoxId, kGroundId);
   sim.Simulate(0.1);
   const auto joint_friction = [&] {
-    const std::vector<FeedbackContact> contacts = sim.GetContacts(kBox, kGround);
+    const std::vector<FeedbackContact> contacts = sim.GetContacts(kBoxId, kGroundId);
     EXPECT_FALSE(contacts.empty());
     for (const FeedbackContact& c : contacts) EXPECT_EQ(c.friction, contacts[0].friction);
     return contacts.empty() ? -1.0 : contacts[0].friction;  // what the ODE joints got (row.mu)
@@ -158,11 +159,12 @@ TEST(ContactReadoutTest, AFrictionEditReachesTheReadoutAndTheJointsAtTheNextStep
   ASSERT_TRUE(sim.SetParam(ElementIndex::Object(0), *FindParam("kFriction", ElementKind::kObject),
                            {0.2}, &error))
       << error;
-  EXPECT_DOUBLE_EQ(ReadContacts(sim, kBox)[0].friction.value, Harmonic(0.2, 1.0));
-  EXPECT_EQ(ReadContacts(sim, kBox)[0].friction.rule, "harmonic mean of 0.2 (box) and 1 (ground)");
+  EXPECT_DOUBLE_EQ(ReadContacts(sim, kBoxId)[0].friction.value, Harmonic(0.2, 1.0));
+  EXPECT_EQ(ReadContacts(sim, kBoxId)[0].friction.rule,
+            "harmonic mean of 0.2 (box) and 1 (ground)");
   sim.Simulate(sim.sim_step());
   EXPECT_DOUBLE_EQ(joint_friction(), Harmonic(0.2, 1.0));
-  EXPECT_EQ(joint_friction(), ReadContacts(sim, kBox)[0].friction.value);
+  EXPECT_EQ(joint_friction(), ReadContacts(sim, kBoxId)[0].friction.value);
 }
 
 // rolling and spinning friction read as the contact rows use them: off while either side is 0
@@ -173,7 +175,7 @@ TEST(ContactReadoutTest, RollingAndSpinningFrictionReadTheirBlendAndRule) {
   world.terrains[0].sim.surface.spinning_friction = 0.001;
   Simulator sim(world);
   sim.Simulate(0.1);
-  const std::vector<PairReadout> readouts = ReadContacts(sim, kBox);
+  const std::vector<PairReadout> readouts = ReadContacts(sim, kBoxId);
   ASSERT_EQ(readouts.size(), 1u);
   EXPECT_DOUBLE_EQ(readouts[0].rolling.value, Harmonic(0.002, 0.006));  // 0.003
   EXPECT_EQ(readouts[0].rolling.own, 0.002);
@@ -181,7 +183,7 @@ TEST(ContactReadoutTest, RollingAndSpinningFrictionReadTheirBlendAndRule) {
   EXPECT_EQ(readouts[0].rolling.rule, "harmonic mean of 0.002 (box) and 0.006 (ground)");
   EXPECT_EQ(readouts[0].spinning.value, 0.0);
   EXPECT_EQ(readouts[0].spinning.rule, "off on one side (box): 0");
-  EXPECT_EQ(readouts[0].rolling.value, sim.PairSurface(kBox, kGround).rolling);
+  EXPECT_EQ(readouts[0].rolling.value, sim.PairSurface(kBoxId, kGroundId).rolling);
   EXPECT_EQ(DescribeResistance(0.0, 0.0, "box", "ground"), "off on both sides: 0");
   EXPECT_EQ(DescribeResistance(0.01, 0.0, "box", "ground"), "off on one side (ground): 0");
 }

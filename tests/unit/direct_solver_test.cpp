@@ -15,14 +15,12 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kG = test::kIslandGravity;
 using test::AddContact;
 using test::AddFace;
+using test::kIslandGravity;
 using test::NormalSum;
 
-core::NewtonBody Body(double mass, const Vec6& start, double step) {
-  return test::IslandBody(mass, start, step);
-}
+using test::IslandBody;
 
 // a ball joint's three unbounded rows holding a's point `point_a` on b's `point_b`
 void AddBall(std::vector<NewtonRow>* rows, int a, int b, const Vec3& point_a, const Vec3& point_b) {
@@ -72,14 +70,15 @@ TEST(DirectSolverTest, AHangingChainIsHeldByItsUnboundedRowsAlone) {
   std::vector<NewtonBody> bodies;
   std::vector<NewtonRow> rows;
   for (int k = 0; k < 3; ++k) {
-    bodies.push_back(Body(1.0, Vec6::Zero(), h));
+    bodies.push_back(IslandBody(1.0, Vec6::Zero(), h));
     AddBall(&rows, k, k == 0 ? -1 : k - 1, {0, 0, 0.05}, {0, 0, k == 0 ? 0.0 : -0.05});
   }
   DirectSolver solver;
   NewtonResult result;
   ASSERT_TRUE(solver.Solve(bodies, rows, h, {}, &result));
   for (int k = 0; k < 3; ++k) {
-    EXPECT_NEAR(result.force[3 * k + 2], (3 - k) * kG, 1e-5 * (3 - k) * kG) << k;  // joint k's z
+    EXPECT_NEAR(result.force[3 * k + 2], (3 - k) * kIslandGravity, 1e-5 * (3 - k) * kIslandGravity)
+        << k;  // joint k's z
     EXPECT_LE(result.velocity[k].norm(), 1e-7) << k;
   }
   EXPECT_EQ(result.iterations, 0);  // no bounded row
@@ -99,7 +98,7 @@ TEST(DirectSolverTest, RandomIslandsGiveTheNewtonSolversAnswer) {
     for (int k = 0; k < n; ++k) {
       Vec6 start;
       for (int j = 0; j < 6; ++j) start(j) = 0.05 * unit(random);
-      bodies.push_back(Body(std::pow(10.0, unit(random)), start, h));
+      bodies.push_back(IslandBody(std::pow(10.0, unit(random)), start, h));
     }
     std::vector<NewtonRow> rows;
     AddFace(&rows, 0, -1, 0.6 + 0.4 * unit(random));

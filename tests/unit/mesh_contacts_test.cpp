@@ -63,12 +63,7 @@ const CollisionGeometry& Cube() {
   return *cube;
 }
 
-Pose At(const Vec3& position, const Mat3& rotation = Mat3::Identity()) {
-  Pose pose = Pose::Identity();
-  pose.linear() = rotation;
-  pose.translation() = position;
-  return pose;
-}
+using test::PoseAt;
 
 Mat3 AboutX(double angle) {
   return core::RotationFromRollPitchYaw(angle, 0, 0);
@@ -117,7 +112,8 @@ void ExpectIdentical(const ContactList& first, const ContactList& second) {
 // ---- mesh-mesh ----
 
 TEST(MeshMeshContactsTest, CubeRestingOnCubeHasBoundaryLayerDepth) {
-  const ContactList contacts = MeshMesh(Cube(), At(Vec3(0, 0, 1.001)), Cube(), At(Vec3::Zero()));
+  const ContactList contacts =
+      MeshMesh(Cube(), PoseAt(Vec3(0, 0, 1.001)), Cube(), PoseAt(Vec3::Zero()));
   ExpectAll(contacts, 0.004, Vec3::UnitZ());
   for (const Contact& c : contacts) {
     // midway between the padded surfaces at z = 1.001 - 0.0025 and z = 1 + 0.0025
@@ -129,27 +125,28 @@ TEST(MeshMeshContactsTest, CubeRestingOnCubeHasBoundaryLayerDepth) {
 
 TEST(MeshMeshContactsTest, WholeSceneTurnedKeepsTheNormalInTheSceneFrame) {
   for (const Mat3& R : {AboutX(0.25 * core::kPi), AboutZ(0.25 * core::kPi)}) {
-    const Pose scene = At(Vec3(0.3, -0.2, 0.1), R);
-    const ContactList contacts = MeshMesh(Cube(), scene * At(Vec3(0, 0, 1.001)), Cube(), scene);
+    const Pose scene = PoseAt(Vec3(0.3, -0.2, 0.1), R);
+    const ContactList contacts = MeshMesh(Cube(), scene * PoseAt(Vec3(0, 0, 1.001)), Cube(), scene);
     ExpectAll(contacts, 0.004, R * Vec3::UnitZ());
   }
 }
 
 TEST(MeshMeshContactsTest, TopCubeTurnedAboutTheVerticalStillPushesUp) {
   // turned 45 degrees about its own vertical axis, resting 1 mm above
-  const Pose top = At(Vec3(0.5, 0.5, 1.001)) * At(Vec3::Zero(), AboutZ(0.25 * core::kPi)) *
-                   At(Vec3(-0.5, -0.5, 0));
-  ExpectAll(MeshMesh(Cube(), top, Cube(), At(Vec3::Zero())), 0.004, Vec3::UnitZ());
+  const Pose top = PoseAt(Vec3(0.5, 0.5, 1.001)) * PoseAt(Vec3::Zero(), AboutZ(0.25 * core::kPi)) *
+                   PoseAt(Vec3(-0.5, -0.5, 0));
+  ExpectAll(MeshMesh(Cube(), top, Cube(), PoseAt(Vec3::Zero())), 0.004, Vec3::UnitZ());
 }
 
 TEST(MeshMeshContactsTest, SeparatedBeyondThePaddingGivesNothing) {
-  EXPECT_TRUE(MeshMesh(Cube(), At(Vec3(0, 0, 1.0051)), Cube(), At(Vec3::Zero())).empty());
-  ExpectAll(MeshMesh(Cube(), At(Vec3(0, 0, 1.0049)), Cube(), At(Vec3::Zero())), 0.0001,
+  EXPECT_TRUE(MeshMesh(Cube(), PoseAt(Vec3(0, 0, 1.0051)), Cube(), PoseAt(Vec3::Zero())).empty());
+  ExpectAll(MeshMesh(Cube(), PoseAt(Vec3(0, 0, 1.0049)), Cube(), PoseAt(Vec3::Zero())), 0.0001,
             Vec3::UnitZ());
 }
 
 TEST(MeshMeshContactsTest, OverlappingCubesArePenetrating) {
-  const ContactList contacts = MeshMesh(Cube(), At(Vec3(0.3, 0.2, 0.9)), Cube(), At(Vec3::Zero()));
+  const ContactList contacts =
+      MeshMesh(Cube(), PoseAt(Vec3(0.3, 0.2, 0.9)), Cube(), PoseAt(Vec3::Zero()));
   ASSERT_FALSE(contacts.empty());
   int penetrating = 0;
   for (const Contact& c : contacts) {
@@ -163,13 +160,14 @@ TEST(MeshMeshContactsTest, OverlappingCubesArePenetrating) {
 TEST(MeshMeshContactsTest, TouchingFacesTakeTheFaceNormal) {
   // exactly touching (distance 0): the normal comes from the features, not the points
   const ContactList contacts =
-      MeshMesh(Cube(), At(Vec3(0.25, 0.25, 1.0)), Cube(), At(Vec3::Zero()));
+      MeshMesh(Cube(), PoseAt(Vec3(0.25, 0.25, 1.0)), Cube(), PoseAt(Vec3::Zero()));
   ExpectAll(contacts, kTolerance, Vec3::UnitZ());
 }
 
 TEST(MeshMeshContactsTest, CornerOnCornerTakesTheVertexNormals) {
   // a's corner (0,0,0) on b's corner (1,1,1): n_b - n_a = 2 (1,1,1)/sqrt(3)
-  const ContactList contacts = MeshMesh(Cube(), At(Vec3(1, 1, 1)), Cube(), At(Vec3::Zero()));
+  const ContactList contacts =
+      MeshMesh(Cube(), PoseAt(Vec3(1, 1, 1)), Cube(), PoseAt(Vec3::Zero()));
   ExpectAll(contacts, kTolerance, Vec3(1, 1, 1).normalized());
 }
 
@@ -177,10 +175,10 @@ TEST(MeshMeshContactsTest, CrossedEdgesTakeTheEdgeNormal) {
   // a turned 45 degrees about x (lowest feature: an edge along x), b turned about y (highest
   // feature: an edge along y), the edges crossing 1 micrometre apart
   const double half_diagonal = std::sqrt(0.5);
-  const Pose centre_a = At(Vec3(0.5, 0.5, 0.5));  // cube centre in its own frame
+  const Pose centre_a = PoseAt(Vec3(0.5, 0.5, 0.5));  // cube centre in its own frame
   const Pose a =
-      At(Vec3(0, 0, 2 * half_diagonal + 1e-6), AboutX(0.25 * core::kPi)) * centre_a.inverse();
-  const Pose b = At(Vec3::Zero(), AboutY(0.25 * core::kPi)) * centre_a.inverse();
+      PoseAt(Vec3(0, 0, 2 * half_diagonal + 1e-6), AboutX(0.25 * core::kPi)) * centre_a.inverse();
+  const Pose b = PoseAt(Vec3::Zero(), AboutY(0.25 * core::kPi)) * centre_a.inverse();
   const ContactList contacts = MeshMesh(Cube(), a, Cube(), b);
   ASSERT_FALSE(contacts.empty());
   for (const Contact& c : contacts) {
@@ -200,8 +198,8 @@ TEST(MeshMeshContactsTest, CornerSunkOnAFaceDiagonalIsPushedStraightOut) {
       AboutZ(0.3) * Eigen::Quaterniond::FromTwoVectors(Vec3(1, 1, 1).normalized(), -Vec3::UnitZ())
                         .toRotationMatrix();
   const Vec3 lowest_corner = corner_down * Vec3(1, 1, 1);
-  const Pose a = At(Vec3(0.5, 0.5, 1 - 0.003) - lowest_corner, corner_down);
-  const ContactList contacts = MeshMesh(Cube(), a, Cube(), At(Vec3::Zero()));
+  const Pose a = PoseAt(Vec3(0.5, 0.5, 1 - 0.003) - lowest_corner, corner_down);
+  const ContactList contacts = MeshMesh(Cube(), a, Cube(), PoseAt(Vec3::Zero()));
   ASSERT_FALSE(contacts.empty());
   double deepest = 0.0;
   for (const Contact& c : contacts) {
@@ -213,32 +211,34 @@ TEST(MeshMeshContactsTest, CornerSunkOnAFaceDiagonalIsPushedStraightOut) {
 }
 
 TEST(MeshMeshContactsTest, SameCallTwiceGivesIdenticalContacts) {
-  const Pose a = At(Vec3(0.1, 0.2, 1.002), core::RotationFromRollPitchYaw(0.001, -0.002, 0.3));
-  const ContactList first = MeshMesh(Cube(), a, Cube(), At(Vec3::Zero()));
-  const ContactList second = MeshMesh(Cube(), a, Cube(), At(Vec3::Zero()));
+  const Pose a = PoseAt(Vec3(0.1, 0.2, 1.002), core::RotationFromRollPitchYaw(0.001, -0.002, 0.3));
+  const ContactList first = MeshMesh(Cube(), a, Cube(), PoseAt(Vec3::Zero()));
+  const ContactList second = MeshMesh(Cube(), a, Cube(), PoseAt(Vec3::Zero()));
   ASSERT_FALSE(first.empty());
   ExpectIdentical(first, second);
   // and a tilted box sunk into the cube mesh's top corner
   const Primitive box = Primitive::Box(Vec3(0.3, 0.2, 0.1));
-  const Pose box_pose = At(Vec3(0.95, 0.9, 1.03), core::RotationFromRollPitchYaw(0.3, 0.2, 0.1));
-  const ContactList box_first = MeshPrimitive(Cube(), At(Vec3::Zero()), box, box_pose);
+  const Pose box_pose =
+      PoseAt(Vec3(0.95, 0.9, 1.03), core::RotationFromRollPitchYaw(0.3, 0.2, 0.1));
+  const ContactList box_first = MeshPrimitive(Cube(), PoseAt(Vec3::Zero()), box, box_pose);
   ASSERT_FALSE(box_first.empty());
-  ExpectIdentical(box_first, MeshPrimitive(Cube(), At(Vec3::Zero()), box, box_pose));
+  ExpectIdentical(box_first, MeshPrimitive(Cube(), PoseAt(Vec3::Zero()), box, box_pose));
 }
 
 TEST(MeshMeshContactsTest, EarlierCallsOnOtherMeshesDoNotChangeTheContacts) {
   // calls reuse working memory sized by the meshes they see: a small pair, then large meshes in
   // both roles, then the small pair again
   const auto sphere = MeshGeometry("klampt/objects/sphere.off", 0.5);
-  const Pose on_top = At(Vec3(0.1, 0.2, 1.002), core::RotationFromRollPitchYaw(0.01, -0.02, 0.3));
-  const ContactList first = MeshMesh(Cube(), on_top, Cube(), At(Vec3::Zero()));
+  const Pose on_top =
+      PoseAt(Vec3(0.1, 0.2, 1.002), core::RotationFromRollPitchYaw(0.01, -0.02, 0.3));
+  const ContactList first = MeshMesh(Cube(), on_top, Cube(), PoseAt(Vec3::Zero()));
   ASSERT_FALSE(first.empty());
-  const Pose sphere_on_cube = At(Vec3(0.5, 0.5, 1.501));
-  const ContactList sphere_first = MeshMesh(*sphere, sphere_on_cube, Cube(), At(Vec3::Zero()));
+  const Pose sphere_on_cube = PoseAt(Vec3(0.5, 0.5, 1.501));
+  const ContactList sphere_first = MeshMesh(*sphere, sphere_on_cube, Cube(), PoseAt(Vec3::Zero()));
   ASSERT_FALSE(sphere_first.empty());
-  ASSERT_FALSE(MeshMesh(Cube(), At(Vec3::Zero()), *sphere, sphere_on_cube).empty());
-  ExpectIdentical(first, MeshMesh(Cube(), on_top, Cube(), At(Vec3::Zero())));
-  ExpectIdentical(sphere_first, MeshMesh(*sphere, sphere_on_cube, Cube(), At(Vec3::Zero())));
+  ASSERT_FALSE(MeshMesh(Cube(), PoseAt(Vec3::Zero()), *sphere, sphere_on_cube).empty());
+  ExpectIdentical(first, MeshMesh(Cube(), on_top, Cube(), PoseAt(Vec3::Zero())));
+  ExpectIdentical(sphere_first, MeshMesh(*sphere, sphere_on_cube, Cube(), PoseAt(Vec3::Zero())));
 }
 
 TEST(MeshMeshContactsTest, BallOverASlabTouchesOnceAtEachNearVertex) {
@@ -251,9 +251,9 @@ TEST(MeshMeshContactsTest, BallOverASlabTouchesOnceAtEachNearVertex) {
   const auto slab = MeshGeometry("klampt/terrains/block.off");
   constexpr double kLayerPad = 0.02, kLayer = 2 * kLayerPad;
   for (const Mat3& R : {AboutX(0.3), Mat3(AboutY(-1.1) * AboutZ(0.4)), AboutZ(2.0)}) {
-    const Pose X_Wball = At(Vec3(0.2, -0.3, 0.101), R);
+    const Pose X_Wball = PoseAt(Vec3(0.2, -0.3, 0.101), R);
     ContactList contacts;
-    core::MeshMeshContacts(*ball, X_Wball, kLayerPad, *slab, At(Vec3::Zero()), kLayerPad,
+    core::MeshMeshContacts(*ball, X_Wball, kLayerPad, *slab, PoseAt(Vec3::Zero()), kLayerPad,
                            &contacts);
     std::vector<Vec3> near;
     for (const Vec3& v : ball->mesh().vertices) {
@@ -290,7 +290,8 @@ TEST(BarycentricMapTest, MatchesBarycentricCoordinatesBitwise) {
 
 TEST(MeshPlaneContactsTest, SphereMeshRestingOnAPlaneTouchesWithItsLowestVertex) {
   const auto sphere = MeshGeometry("klampt/objects/sphere.off");  // unit sphere, pole at -z
-  const ContactList contacts = MeshPrimitive(*sphere, At(Vec3(0, 0, 1.001)), Primitive::Plane());
+  const ContactList contacts =
+      MeshPrimitive(*sphere, PoseAt(Vec3(0, 0, 1.001)), Primitive::Plane());
   ASSERT_EQ(contacts.size(), 1u);
   ExpectAll(contacts, 0.004, Vec3::UnitZ());
   EXPECT_NEAR((contacts[0].position - Vec3(0, 0, 0.0005)).norm(), 0.0, kDepthTolerance);
@@ -298,8 +299,8 @@ TEST(MeshPlaneContactsTest, SphereMeshRestingOnAPlaneTouchesWithItsLowestVertex)
 
 TEST(MeshPlaneContactsTest, TiltedPlaneThroughAMeshMatchesEveryVertex) {
   const auto sphere = MeshGeometry("klampt/objects/sphere.off");
-  const Pose plane = At(Vec3(0.2, 0.1, 0.3), core::RotationFromRollPitchYaw(0.4, -0.3, 0.2));
-  const Pose X_Wa = At(Vec3(0.1, 0, 0.5));
+  const Pose plane = PoseAt(Vec3(0.2, 0.1, 0.3), core::RotationFromRollPitchYaw(0.4, -0.3, 0.2));
+  const Pose X_Wa = PoseAt(Vec3(0.1, 0, 0.5));
   const ContactList contacts = MeshPrimitive(*sphere, X_Wa, Primitive::Plane(), plane);
   // brute force over every vertex, in the same (vertex) order
   const Vec3 n = plane.linear().col(2);
@@ -319,15 +320,16 @@ TEST(MeshPlaneContactsTest, TiltedPlaneThroughAMeshMatchesEveryVertex) {
 
 TEST(MeshPlaneContactsTest, PlaneFacingDownPushesTheMeshDown) {
   // the plane turned upside down at z = 1.001 above the cube: its half-space is z >= 1.001
-  const Pose plane = At(Vec3(0, 0, 1.001), AboutX(core::kPi));
-  const ContactList contacts = MeshPrimitive(Cube(), At(Vec3::Zero()), Primitive::Plane(), plane);
+  const Pose plane = PoseAt(Vec3(0, 0, 1.001), AboutX(core::kPi));
+  const ContactList contacts =
+      MeshPrimitive(Cube(), PoseAt(Vec3::Zero()), Primitive::Plane(), plane);
   EXPECT_EQ(contacts.size(), 4u);  // the four top corners
   ExpectAll(contacts, 0.004, -Vec3::UnitZ());
 }
 
 TEST(MeshPlaneContactsTest, SwappedOrderGivesTheSameContactsTurnedAround) {
   const auto plane = PrimitiveGeometry(Primitive::Plane());
-  const Pose X_cube = At(Vec3(0, 0, 0.002), AboutZ(0.3));
+  const Pose X_cube = PoseAt(Vec3(0, 0, 0.002), AboutZ(0.3));
   ContactList mesh_first, plane_first;
   core::Collide(Cube(), X_cube, kPad, *plane, Pose::Identity(), kPad, &mesh_first);
   core::Collide(*plane, Pose::Identity(), kPad, Cube(), X_cube, kPad, &plane_first);
@@ -344,8 +346,9 @@ TEST(MeshPlaneContactsTest, SwappedOrderGivesTheSameContactsTurnedAround) {
 // ---- mesh-primitive: the unit cube mesh below, the primitive above its top face ----
 
 TEST(MeshPrimitiveContactsTest, BoxAboveTheTopFaceRestsOnItsFourCorners) {
-  const ContactList contacts = MeshPrimitive(
-      Cube(), At(Vec3::Zero()), Primitive::Box(Vec3::Constant(0.5)), At(Vec3(0.5, 0.5, 1.251)));
+  const ContactList contacts =
+      MeshPrimitive(Cube(), PoseAt(Vec3::Zero()), Primitive::Box(Vec3::Constant(0.5)),
+                    PoseAt(Vec3(0.5, 0.5, 1.251)));
   ASSERT_EQ(contacts.size(), 4u);
   // normal from the box into the mesh below: down
   ExpectAll(contacts, 0.004, -Vec3::UnitZ());
@@ -358,38 +361,39 @@ TEST(MeshPrimitiveContactsTest, BoxAboveTheTopFaceRestsOnItsFourCorners) {
 
 TEST(MeshPrimitiveContactsTest, BoxSunkIntoTheFacePushesOutAlongIt) {
   // 2 mm into the top face: corners behind the face are dropped, the crossing gives the depth
-  const ContactList contacts = MeshPrimitive(
-      Cube(), At(Vec3::Zero()), Primitive::Box(Vec3::Constant(0.5)), At(Vec3(0.5, 0.5, 1.248)));
+  const ContactList contacts =
+      MeshPrimitive(Cube(), PoseAt(Vec3::Zero()), Primitive::Box(Vec3::Constant(0.5)),
+                    PoseAt(Vec3(0.5, 0.5, 1.248)));
   ExpectAll(contacts, kTolerance + 0.002, -Vec3::UnitZ(), true);
 }
 
 TEST(MeshPrimitiveContactsTest, BoxAcrossARidgeTouchesAtTheRidge) {
   // the cube mesh turned 45 degrees about y: its top is the edge along y at height sqrt(2)/2
-  const Pose cube = At(Vec3::Zero(), AboutY(0.25 * core::kPi)) * At(Vec3(-0.5, -0.5, -0.5));
+  const Pose cube = PoseAt(Vec3::Zero(), AboutY(0.25 * core::kPi)) * PoseAt(Vec3(-0.5, -0.5, -0.5));
   const double ridge = std::sqrt(0.5);
   const ContactList contacts = MeshPrimitive(Cube(), cube, Primitive::Box(Vec3(2, 2, 0.2)),
-                                             At(Vec3(0, 0, ridge + 0.1 + 0.001)));
+                                             PoseAt(Vec3(0, 0, ridge + 0.1 + 0.001)));
   ExpectAll(contacts, 0.004, -Vec3::UnitZ());
   for (const Contact& c : contacts) EXPECT_NEAR(c.position.x(), 0.0, kDepthTolerance);
 }
 
 TEST(MeshPrimitiveContactsTest, SphereAboveTheFaceAndBesideTheEdge) {
-  const ContactList above =
-      MeshPrimitive(Cube(), At(Vec3::Zero()), Primitive::Sphere(0.3), At(Vec3(0.5, 0.3, 1.302)));
+  const ContactList above = MeshPrimitive(Cube(), PoseAt(Vec3::Zero()), Primitive::Sphere(0.3),
+                                          PoseAt(Vec3(0.5, 0.3, 1.302)));
   ASSERT_EQ(above.size(), 1u);
   ExpectAll(above, 0.003, -Vec3::UnitZ());
   // beside the top edge x = 1 at 45 degrees: the normal points from the sphere to the edge
   const Vec3 out = Vec3(1, 0, 1).normalized();
-  const ContactList beside = MeshPrimitive(Cube(), At(Vec3::Zero()), Primitive::Sphere(0.2),
-                                           At(Vec3(1, 0.5, 1) + 0.201 * out));
+  const ContactList beside = MeshPrimitive(Cube(), PoseAt(Vec3::Zero()), Primitive::Sphere(0.2),
+                                           PoseAt(Vec3(1, 0.5, 1) + 0.201 * out));
   ASSERT_EQ(beside.size(), 1u);  // two triangles meet at the edge: one contact survives
   ExpectAll(beside, 0.004, -out);
 }
 
 TEST(MeshPrimitiveContactsTest, SphereSunkBelowTheFaceStillPushesOut) {
   // centre 1 cm below the top face: distance -(0.01 + 0.1), normal from the face
-  const ContactList contacts =
-      MeshPrimitive(Cube(), At(Vec3::Zero()), Primitive::Sphere(0.1), At(Vec3(0.5, 0.4, 0.99)));
+  const ContactList contacts = MeshPrimitive(Cube(), PoseAt(Vec3::Zero()), Primitive::Sphere(0.1),
+                                             PoseAt(Vec3(0.5, 0.4, 0.99)));
   ASSERT_FALSE(contacts.empty());
   const Contact& deepest =
       *std::max_element(contacts.begin(), contacts.end(),
@@ -400,8 +404,9 @@ TEST(MeshPrimitiveContactsTest, SphereSunkBelowTheFaceStillPushesOut) {
 }
 
 TEST(MeshPrimitiveContactsTest, CapsuleLyingOnTheFaceRestsOnBothEnds) {
-  const ContactList contacts = MeshPrimitive(Cube(), At(Vec3::Zero()), Primitive::Capsule(0.1, 0.6),
-                                             At(Vec3(0.5, 0.5, 1.101), AboutY(0.5 * core::kPi)));
+  const ContactList contacts =
+      MeshPrimitive(Cube(), PoseAt(Vec3::Zero()), Primitive::Capsule(0.1, 0.6),
+                    PoseAt(Vec3(0.5, 0.5, 1.101), AboutY(0.5 * core::kPi)));
   ASSERT_EQ(contacts.size(), 2u);
   ExpectAll(contacts, 0.004, -Vec3::UnitZ());
   EXPECT_NEAR(std::abs(contacts[0].position.x() - contacts[1].position.x()), 0.6, kDepthTolerance);
@@ -409,18 +414,20 @@ TEST(MeshPrimitiveContactsTest, CapsuleLyingOnTheFaceRestsOnBothEnds) {
 
 TEST(MeshPrimitiveContactsTest, CylinderStandingOrLyingRestsOnItsRims) {
   const ContactList standing = MeshPrimitive(
-      Cube(), At(Vec3::Zero()), Primitive::Cylinder(0.2, 0.4), At(Vec3(0.5, 0.5, 1.201)));
+      Cube(), PoseAt(Vec3::Zero()), Primitive::Cylinder(0.2, 0.4), PoseAt(Vec3(0.5, 0.5, 1.201)));
   ASSERT_EQ(standing.size(), 4u);
   ExpectAll(standing, 0.004, -Vec3::UnitZ());
-  const ContactList lying = MeshPrimitive(Cube(), At(Vec3::Zero()), Primitive::Cylinder(0.2, 0.6),
-                                          At(Vec3(0.5, 0.5, 1.201), AboutY(0.5 * core::kPi)));
+  const ContactList lying =
+      MeshPrimitive(Cube(), PoseAt(Vec3::Zero()), Primitive::Cylinder(0.2, 0.6),
+                    PoseAt(Vec3(0.5, 0.5, 1.201), AboutY(0.5 * core::kPi)));
   ASSERT_EQ(lying.size(), 2u);
   ExpectAll(lying, 0.004, -Vec3::UnitZ());
   // tilted about y: the rim point lowest along +x touches alone
   const double tilt = 0.1;
   const double lift = 0.2 * std::cos(tilt) + 0.2 * std::sin(tilt);
-  const ContactList tilted = MeshPrimitive(Cube(), At(Vec3::Zero()), Primitive::Cylinder(0.2, 0.4),
-                                           At(Vec3(0.5, 0.3, 1.001 + lift), AboutY(tilt)));
+  const ContactList tilted =
+      MeshPrimitive(Cube(), PoseAt(Vec3::Zero()), Primitive::Cylinder(0.2, 0.4),
+                    PoseAt(Vec3(0.5, 0.3, 1.001 + lift), AboutY(tilt)));
   ASSERT_EQ(tilted.size(), 1u);
   ExpectAll(tilted, 0.004, -Vec3::UnitZ());
   EXPECT_NEAR(tilted[0].position.x(), 0.5 - 0.2 * std::sin(tilt) + 0.2 * std::cos(tilt),
@@ -429,8 +436,8 @@ TEST(MeshPrimitiveContactsTest, CylinderStandingOrLyingRestsOnItsRims) {
 
 TEST(MeshPrimitiveContactsTest, MeshOnABoxFloorStandsOnItsCorners) {
   // the cube mesh 1 mm above a 4 m box: its four bottom vertices, not one point per triangle
-  const ContactList contacts = MeshPrimitive(Cube(), At(Vec3(0, 0, 0.001)),
-                                             Primitive::Box(Vec3(4, 4, 1)), At(Vec3(0, 0, -0.5)));
+  const ContactList contacts = MeshPrimitive(
+      Cube(), PoseAt(Vec3(0, 0, 0.001)), Primitive::Box(Vec3(4, 4, 1)), PoseAt(Vec3(0, 0, -0.5)));
   ASSERT_EQ(contacts.size(), 4u);
   ExpectAll(contacts, 0.004, Vec3::UnitZ());
   for (const Contact& c : contacts) {
@@ -441,16 +448,18 @@ TEST(MeshPrimitiveContactsTest, MeshOnABoxFloorStandsOnItsCorners) {
 }
 
 TEST(MeshPrimitiveContactsTest, SeparatedPrimitivesGiveNothing) {
-  const Pose mesh = At(Vec3::Zero());
+  const Pose mesh = PoseAt(Vec3::Zero());
+  EXPECT_TRUE(MeshPrimitive(Cube(), mesh, Primitive::Box(Vec3::Constant(0.5)),
+                            PoseAt(Vec3(0.5, 0.5, 1.2551)))
+                  .empty());
   EXPECT_TRUE(
-      MeshPrimitive(Cube(), mesh, Primitive::Box(Vec3::Constant(0.5)), At(Vec3(0.5, 0.5, 1.2551)))
+      MeshPrimitive(Cube(), mesh, Primitive::Sphere(0.3), PoseAt(Vec3(0.5, 0.5, 1.3051))).empty());
+  EXPECT_TRUE(
+      MeshPrimitive(Cube(), mesh, Primitive::Capsule(0.1, 0.4), PoseAt(Vec3(0.5, 0.5, 1.3051)))
           .empty());
   EXPECT_TRUE(
-      MeshPrimitive(Cube(), mesh, Primitive::Sphere(0.3), At(Vec3(0.5, 0.5, 1.3051))).empty());
-  EXPECT_TRUE(MeshPrimitive(Cube(), mesh, Primitive::Capsule(0.1, 0.4), At(Vec3(0.5, 0.5, 1.3051)))
-                  .empty());
-  EXPECT_TRUE(MeshPrimitive(Cube(), mesh, Primitive::Cylinder(0.1, 0.4), At(Vec3(0.5, 0.5, 1.2051)))
-                  .empty());
+      MeshPrimitive(Cube(), mesh, Primitive::Cylinder(0.1, 0.4), PoseAt(Vec3(0.5, 0.5, 1.2051)))
+          .empty());
 }
 
 // ---- time per call on a large terrain ----
@@ -467,14 +476,14 @@ TEST(MeshContactsTimingTest, CubeOnFractalTerrain) {
   for (const Vec3& v : terrain->mesh().vertices) {
     if ((v - corner).head<2>().cwiseAbs().maxCoeff() <= 2.0) top = std::max(top, v.z());
   }
-  Pose cube = At(Vec3(corner.x(), corner.y(), top + 0.001));
+  Pose cube = PoseAt(Vec3(corner.x(), corner.y(), top + 0.001));
   ContactList contacts, box_contacts;
   while (contacts.empty() && cube.translation().z() > top - 2.0) {
     cube.translation().z() -= 0.001;
     core::MeshMeshContacts(Cube(), cube, kPad, *terrain, Pose::Identity(), kPad, &contacts);
   }
   const auto box = PrimitiveGeometry(Primitive::Box(Vec3::Ones()));
-  const Pose box_pose = cube * At(Vec3::Constant(0.5));
+  const Pose box_pose = cube * PoseAt(Vec3::Constant(0.5));
   constexpr int kCalls = 200;
   start = std::chrono::steady_clock::now();
   for (int i = 0; i < kCalls; ++i) {

@@ -9,16 +9,12 @@
 #include <gtest/gtest.h>
 
 #include "core/control/parabolic_ramp.h"
+#include "tests/common/test_support.h"
 
 namespace lamina::core {
 namespace {
 
-VecX Vec(std::initializer_list<double> values) {
-  VecX v(static_cast<Eigen::Index>(values.size()));
-  Eigen::Index i = 0;
-  for (double x : values) v[i++] = x;
-  return v;
-}
+using test::Vec;
 
 JointLimits TwoJointLimits() {
   JointLimits limits = JointLimits::Unbounded(2, 1.0, 2.0);

@@ -12,14 +12,12 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kG = test::kIslandGravity;
 using test::AddContact;
 using test::AddFace;
+using test::kIslandGravity;
 using test::NormalSum;
 
-core::NewtonBody Body(double mass, const Vec6& start, double step) {
-  return test::IslandBody(mass, start, step);
-}
+using test::IslandBody;
 
 TEST(NewtonSolverTest, ABoxOnTheGroundCarriesItsWeightAndStops) {
   NewtonSolver solver;
@@ -30,13 +28,13 @@ TEST(NewtonSolverTest, APointSlidingOnTheGroundLosesMuGTimesTheStep) {
   const double h = 0.01, mu = 0.5;
   Vec6 start = Vec6::Zero();
   start(0) = 1.0;
-  std::vector<NewtonBody> bodies = {Body(1.0, start, h)};
+  std::vector<NewtonBody> bodies = {IslandBody(1.0, start, h)};
   std::vector<NewtonRow> rows;
   AddContact(&rows, 0, -1, Vec3::Zero(), Vec3::Zero(), mu);  // at the centre: no torque
   NewtonSolver solver;
   NewtonResult result;
   ASSERT_TRUE(solver.Solve(bodies, rows, h, {}, &result));
-  const double normal = kG * h / (h + 1e-9);  // m g h / (h + m cfm), m = 1
+  const double normal = kIslandGravity * h / (h + 1e-9);  // m g h / (h + m cfm), m = 1
   EXPECT_NEAR(result.force[0], normal, 1e-12 * normal);
   EXPECT_NEAR(result.velocity[0](0), 1.0 - mu * normal * h, 1e-12);
   EXPECT_NEAR(result.force[1], -mu * result.force[0], 1e-9);
@@ -60,7 +58,7 @@ TEST(NewtonSolverTest, RandomIslandsObeyTheRowLawRowByRow) {
     for (int k = 0; k < n; ++k) {
       Vec6 start;
       for (int j = 0; j < 6; ++j) start(j) = 0.05 * unit(random);
-      bodies.push_back(Body(std::pow(10.0, unit(random)), start, h));
+      bodies.push_back(IslandBody(std::pow(10.0, unit(random)), start, h));
     }
     std::vector<NewtonRow> rows;
     for (int k = 0; k < n; ++k) {
@@ -112,7 +110,7 @@ TEST(NewtonSolverTest, AnIslandWithoutRowsKeepsItsFreeVelocity) {
   const double h = 0.01;
   Vec6 start;
   start << 1, 2, 3, 0.1, 0.2, 0.3;
-  std::vector<NewtonBody> bodies = {Body(3.0, start, h)};
+  std::vector<NewtonBody> bodies = {IslandBody(3.0, start, h)};
   NewtonSolver solver;
   NewtonResult result;
   ASSERT_TRUE(solver.Solve(bodies, {}, h, {}, &result));

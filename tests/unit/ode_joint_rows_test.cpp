@@ -18,7 +18,7 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kStep = 0.001;
+constexpr double kJointStep = 0.001;
 
 // two bodies 1 m apart on z, in a world of ERP 0.5 and CFM 1e-6
 struct TwoBodies {
@@ -67,7 +67,8 @@ TEST(OdeJointRowsTest, AHingesRowsSeeNoMotionOfBothBodiesTogetherNorATurnAboutIt
   TwoBodies bodies;
   bodies.Hinge();
   std::vector<NewtonRow> rows;
-  ASSERT_TRUE(JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kStep, &rows));
+  ASSERT_TRUE(
+      JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kJointStep, &rows));
   ASSERT_EQ(rows.size(), 5u);  // no stops, no motor
   const Vec3 child(0.0, 0.0, -0.5), parent(0.0, 0.0, 0.5);
   const Vec3 v(0.3, -0.2, 0.1), omega(1.0, 2.0, -0.5);
@@ -99,9 +100,10 @@ TEST(OdeJointRowsTest, AHingePulledApartIsPulledBackAtTheWorldErp) {
   bodies.Hinge();
   dBodySetPosition(bodies.parent, 0.002, 0.0, 0.5);  // the parent's anchor 2 mm along x
   std::vector<NewtonRow> rows;
-  ASSERT_TRUE(JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kStep, &rows));
+  ASSERT_TRUE(
+      JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kJointStep, &rows));
   // row x: the child's anchor velocity less the parent's, asked to close the gap in 1/ERP steps
-  EXPECT_NEAR(rows[0].rhs, 0.5 / kStep * 0.002, 1e-9);
+  EXPECT_NEAR(rows[0].rhs, 0.5 / kJointStep * 0.002, 1e-9);
   EXPECT_NEAR(rows[1].rhs, 0.0, 1e-12);
   EXPECT_NEAR(rows[2].rhs, 0.0, 1e-12);
 }
@@ -113,7 +115,8 @@ TEST(OdeJointRowsTest, AHingeBeyondItsStopGetsAOneSidedStopRow) {
   dJointSetHingeParam(bodies.hinge, dParamHiStop, 0.1);
   dJointSetHingeParam(bodies.hinge, dParamStopERP, 0.2);
   std::vector<NewtonRow> rows;
-  ASSERT_TRUE(JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kStep, &rows));
+  ASSERT_TRUE(
+      JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kJointStep, &rows));
   EXPECT_EQ(rows.size(), 5u);  // inside its range
   // the child turned 0.15 rad about the axis (about the anchor, the joint stays together)
   dMatrix3 rotation;
@@ -124,13 +127,14 @@ TEST(OdeJointRowsTest, AHingeBeyondItsStopGetsAOneSidedStopRow) {
   Vec3 centre = Eigen::AngleAxisd(0.15, Vec3::UnitY()) * Vec3(0.0, 0.0, -0.5);
   dBodySetPosition(bodies.child, centre.x(), centre.y(), centre.z());
   rows.clear();
-  ASSERT_TRUE(JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kStep, &rows));
+  ASSERT_TRUE(
+      JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kJointStep, &rows));
   ASSERT_EQ(rows.size(), 6u);
   const NewtonRow& stop = rows.back();
   // it reads the hinge's rate, pushes back 0.2 of the 0.05 rad overrun per step, one-sided
   const double rate = Seen(stop, RigidMotion(centre, Vec3::Zero(), Vec3::UnitY()), Vec6::Zero());
   EXPECT_NEAR(std::abs(rate), 1.0, 1e-12);
-  EXPECT_NEAR(stop.rhs, -0.2 / kStep * (angle - (angle > 0 ? 0.1 : -0.1)), 1e-9);
+  EXPECT_NEAR(stop.rhs, -0.2 / kJointStep * (angle - (angle > 0 ? 0.1 : -0.1)), 1e-9);
   EXPECT_EQ(angle > 0 ? stop.lo : stop.hi, angle > 0 ? -kInf : kInf);
   EXPECT_EQ(angle > 0 ? stop.hi : stop.lo, 0.0);
 }
@@ -144,12 +148,12 @@ TEST(OdeJointRowsTest, AMotorAxisIsARowBoundedByItsFmax) {
   dJointSetAMotorAxis(motor, 0, 1, 0.0, 1.0, 0.0);
   dJointSetAMotorAxis(motor, 1, 1, 0.0, 1.0, 0.0);
   std::vector<NewtonRow> rows;
-  ASSERT_TRUE(JointRows(motor, 0, -1, JointFrame{}, bodies.world, kStep, &rows));
+  ASSERT_TRUE(JointRows(motor, 0, -1, JointFrame{}, bodies.world, kJointStep, &rows));
   EXPECT_TRUE(rows.empty());  // fmax 0: no row
   dJointSetAMotorParam(motor, dParamFMax2, 5.0);
   dJointSetAMotorParam(motor, dParamVel2, 1.5);
   dJointSetAMotorParam(motor, dParamCFM2, 0.01);
-  ASSERT_TRUE(JointRows(motor, 0, -1, JointFrame{}, bodies.world, kStep, &rows));
+  ASSERT_TRUE(JointRows(motor, 0, -1, JointFrame{}, bodies.world, kJointStep, &rows));
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].b, -1);
   EXPECT_EQ(rows[0].ja.tail<3>(), Vec3::UnitY());
@@ -161,7 +165,7 @@ TEST(OdeJointRowsTest, AMotorAxisIsARowBoundedByItsFmax) {
   // a hard motor row (CFM 0) is not one the Newton solver takes: refused, nothing appended
   dJointSetAMotorParam(motor, dParamCFM2, 0.0);
   rows.clear();
-  EXPECT_FALSE(JointRows(motor, 0, -1, JointFrame{}, bodies.world, kStep, &rows));
+  EXPECT_FALSE(JointRows(motor, 0, -1, JointFrame{}, bodies.world, kJointStep, &rows));
   EXPECT_TRUE(rows.empty());
 }
 
@@ -170,14 +174,16 @@ TEST(OdeJointRowsTest, WhatIsNotReplicatedIsRefused) {
   bodies.Hinge();
   std::vector<NewtonRow> rows;
   dJointSetHingeParam(bodies.hinge, dParamFMax, 1.0);  // ODE's own hinge motor
-  EXPECT_FALSE(JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kStep, &rows));
+  EXPECT_FALSE(
+      JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kJointStep, &rows));
   dJointSetHingeParam(bodies.hinge, dParamFMax, 0.0);
   dJointSetHingeParam(bodies.hinge, dParamBounce, 0.5);  // a bouncing stop
-  EXPECT_FALSE(JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kStep, &rows));
+  EXPECT_FALSE(
+      JointRows(bodies.hinge, 0, 1, TwoBodies::HingeFrame(), bodies.world, kJointStep, &rows));
   EXPECT_TRUE(rows.empty());
   dJointID ball = dJointCreateBall(bodies.world, nullptr);  // a joint type OdeRobot never makes
   dJointAttach(ball, bodies.child, bodies.parent);
-  EXPECT_FALSE(JointRows(ball, 0, 1, JointFrame{}, bodies.world, kStep, &rows));
+  EXPECT_FALSE(JointRows(ball, 0, 1, JointFrame{}, bodies.world, kJointStep, &rows));
   EXPECT_TRUE(rows.empty());
 }
 
@@ -197,7 +203,7 @@ TEST(OdeJointRowsTest, ASlidersRowsSeeNoMotionOfBothBodiesTogetherNorASlideAlong
   dJointAttach(slider, bodies.child, bodies.parent);
   const JointFrame frame = SliderFrameOf(slider);
   std::vector<NewtonRow> rows;
-  ASSERT_TRUE(JointRows(slider, 0, 1, frame, bodies.world, kStep, &rows));
+  ASSERT_TRUE(JointRows(slider, 0, 1, frame, bodies.world, kJointStep, &rows));
   ASSERT_EQ(rows.size(), 5u);
   const Vec3 child(0.0, 0.0, -0.5), parent(0.0, 0.0, 0.5);
   for (const NewtonRow& row : rows) {
@@ -211,12 +217,12 @@ TEST(OdeJointRowsTest, ASlidersRowsSeeNoMotionOfBothBodiesTogetherNorASlideAlong
   // pulled off its axis by 1 mm along x, it is pulled back at the world ERP
   dBodySetPosition(bodies.child, 0.001, 0.0, -0.5);
   rows.clear();
-  ASSERT_TRUE(JointRows(slider, 0, 1, frame, bodies.world, kStep, &rows));
+  ASSERT_TRUE(JointRows(slider, 0, 1, frame, bodies.world, kJointStep, &rows));
   double pulled = 0.0;
   for (const NewtonRow& row : rows) {
     pulled += row.rhs * Seen(row, RigidMotion(child, Vec3::UnitX(), Vec3::Zero()), Vec6::Zero());
   }
-  EXPECT_NEAR(pulled, -0.5 / kStep * 0.001,
+  EXPECT_NEAR(pulled, -0.5 / kJointStep * 0.001,
               1e-9);  // Σ rhs·(J e_x): the rows ask −ERP·gap/h along x
 }
 
@@ -232,12 +238,12 @@ TEST(OdeJointRowsTest, ASliderBeyondItsStopAndALinearMotorGetLinearRowsThroughTh
   // along the axis
   dBodySetPosition(bodies.child, 0.2, 0.0, -0.65);
   std::vector<NewtonRow> rows;
-  ASSERT_TRUE(JointRows(slider, 0, 1, frame, bodies.world, kStep, &rows));
+  ASSERT_TRUE(JointRows(slider, 0, 1, frame, bodies.world, kJointStep, &rows));
   ASSERT_EQ(rows.size(), 6u);
   const NewtonRow& stop = rows.back();
   EXPECT_EQ(stop.lo, 0.0);  // pushes the child up only
   EXPECT_EQ(stop.hi, kInf);
-  EXPECT_NEAR(stop.rhs, 0.2 / kStep * 0.05, 1e-9);
+  EXPECT_NEAR(stop.rhs, 0.2 / kJointStep * 0.05, 1e-9);
   // equal and opposite forces along the axis at the bodies' middle: the pair turning as one is
   // unseen (forces at the centres would see it, and put a couple on the pair)
   EXPECT_EQ(stop.ja.head<3>(), Vec3::UnitZ());
@@ -256,7 +262,7 @@ TEST(OdeJointRowsTest, ASliderBeyondItsStopAndALinearMotorGetLinearRowsThroughTh
   dJointSetLMotorParam(motor, dParamVel, -0.25);
   dJointSetLMotorParam(motor, dParamCFM, 0.001);
   rows.clear();
-  ASSERT_TRUE(JointRows(motor, 0, 1, frame, bodies.world, kStep, &rows));
+  ASSERT_TRUE(JointRows(motor, 0, 1, frame, bodies.world, kJointStep, &rows));
   ASSERT_EQ(rows.size(), 1u);  // the second axis has no fmax
   EXPECT_EQ(rows[0].ja.head<3>(), Vec3::UnitZ());
   EXPECT_NEAR(Seen(rows[0], RigidMotion(child, Vec3::Zero(), omega),

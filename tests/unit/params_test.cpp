@@ -27,7 +27,7 @@ using core::ParamSpec;
 using core::ParamType;
 using core::ParamValue;
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using core::kInf;
 constexpr ElementKind kKinds[] = {ElementKind::kSettings, ElementKind::kTerrain,
                                   ElementKind::kObject,   ElementKind::kRobot,
                                   ElementKind::kLink,     ElementKind::kDriver};

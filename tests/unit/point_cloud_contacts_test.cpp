@@ -28,7 +28,7 @@ using core::Primitive;
 using core::Vec3;
 
 // rounding of sums of a few metres-scale numbers
-constexpr double kExact = 1e-12;
+constexpr double kCloudExact = 1e-12;
 
 std::shared_ptr<const CollisionGeometry> Cloud(
     std::vector<Vec3> points, const Vec3& scale = Vec3::Ones(),
@@ -61,11 +61,7 @@ std::shared_ptr<const CollisionGeometry> Mesh(const std::string& relative) {
   return CollisionGeometry::Build(desc);
 }
 
-Pose At(const Vec3& position) {
-  Pose pose = Pose::Identity();
-  pose.translation() = position;
-  return pose;
-}
+using test::PoseAt;
 
 // the contact whose position is nearest `near` (contacts come in leaf order)
 const Contact& Near(const ContactList& contacts, const Vec3& near) {
@@ -81,9 +77,9 @@ const Contact& Near(const ContactList& contacts, const Vec3& near) {
 void ExpectBallContact(const Contact& c, const Vec3& p, double d, const Vec3& n, double pad_a,
                        double pad_b) {
   const Vec3 on_b = p - d * n;  // b's surface point
-  EXPECT_NEAR(c.depth, pad_a + pad_b + core::kLayerEdgeSlack - d, kExact);
-  EXPECT_LT((c.normal - n).norm(), kExact) << c.normal.transpose();
-  EXPECT_LT((c.position - 0.5 * ((p - pad_a * n) + (on_b + pad_b * n))).norm(), kExact);
+  EXPECT_NEAR(c.depth, pad_a + pad_b + core::kLayerEdgeSlack - d, kCloudExact);
+  EXPECT_LT((c.normal - n).norm(), kCloudExact) << c.normal.transpose();
+  EXPECT_LT((c.position - 0.5 * ((p - pad_a * n) + (on_b + pad_b * n))).norm(), kCloudExact);
   EXPECT_EQ(c.penetrating, d < 0.0);
 }
 
@@ -95,23 +91,23 @@ TEST(PointCloudContactsTest, PointsAgainstASphereHaveTheAnalyticDepth) {
       Cloud({Vec3(-0.498, 0, 0), Vec3(-1, 0.503, 0), Vec3(-1, 0, -0.6), Vec3(-1, 0.3, 0.3)});
   const auto sphere = Shape(Primitive::Sphere(radius));
   ContactList contacts;
-  core::Collide(*cloud, At(Vec3(1, 0, 0)), pad_a, *sphere, Pose::Identity(), pad_b, &contacts);
+  core::Collide(*cloud, PoseAt(Vec3(1, 0, 0)), pad_a, *sphere, Pose::Identity(), pad_b, &contacts);
   ASSERT_EQ(contacts.size(), 3u);  // (0, 0, -0.6) is 0.1 m away
   for (const Vec3& p : {Vec3(0.502, 0, 0), Vec3(0, 0.503, 0), Vec3(0, 0.3, 0.3)}) {
     SCOPED_TRACE(p.transpose());
     ExpectBallContact(Near(contacts, p), p, p.norm() - radius, p.normalized(), pad_a, pad_b);
   }
   // the depths: 3.5 - 2 = 1.5 mm, 3.5 - 3 = 0.5 mm, and 3.5 mm + 0.5 - 0.3 sqrt(2) inside
-  EXPECT_NEAR(Near(contacts, Vec3(0.502, 0, 0)).depth, 0.0015 + core::kLayerEdgeSlack, kExact);
+  EXPECT_NEAR(Near(contacts, Vec3(0.502, 0, 0)).depth, 0.0015 + core::kLayerEdgeSlack, kCloudExact);
   EXPECT_NEAR(Near(contacts, Vec3(0, 0.3, 0.3)).depth,
-              0.0035 + core::kLayerEdgeSlack + 0.5 - 0.3 * std::sqrt(2.0), kExact);
+              0.0035 + core::kLayerEdgeSlack + 0.5 - 0.3 * std::sqrt(2.0), kCloudExact);
 }
 
 TEST(PointCloudContactsTest, ASwappedPairGivesTheSameContactsWithNormalsTurned) {
   // world points 1.5 mm, 0 and 3.3 mm from the sphere
   const auto cloud = Cloud({Vec3(0, 0, 0.501), Vec3(0.29, 0.02, 0.4), Vec3(0, 0.2, 0.47)});
   const auto sphere = Shape(Primitive::Sphere(0.5));
-  const Pose X_cloud = At(Vec3(0.01, -0.02, 0.0));
+  const Pose X_cloud = PoseAt(Vec3(0.01, -0.02, 0.0));
   ContactList forward, swapped;
   core::Collide(*cloud, X_cloud, 0.002, *sphere, Pose::Identity(), 0.003, &forward);
   core::Collide(*sphere, Pose::Identity(), 0.003, *cloud, X_cloud, 0.002, &swapped);
@@ -164,7 +160,7 @@ TEST(PointCloudContactsTest, TwoCloudsTouchAsBallsAtTheirNearestPoints) {
   core::Collide(*a, Pose::Identity(), 0.0025, *b, Pose::Identity(), 0.0025, &contacts);
   ASSERT_EQ(contacts.size(), 1u);  // a's origin and b's nearest point, 4 mm apart
   ExpectBallContact(contacts[0], Vec3::Zero(), 0.004, -Vec3::UnitZ(), 0.0025, 0.0025);
-  EXPECT_LT((contacts[0].position - Vec3(0, 0, 0.002)).norm(), kExact);
+  EXPECT_LT((contacts[0].position - Vec3(0, 0, 0.002)).norm(), kCloudExact);
 }
 
 TEST(PointCloudContactsTest, ScaleAndPlacementAreBakedIn) {
@@ -176,9 +172,9 @@ TEST(PointCloudContactsTest, ScaleAndPlacementAreBakedIn) {
   std::sort(points.begin(), points.end(),
             [](const Vec3& x, const Vec3& y) { return x.x() < y.x(); });
   // (2, 0, 0) turned to (0, 2, 0) then moved; (0, 3, 4) turned to (-3, 0, 4) then moved
-  EXPECT_LT((points[0] - Vec3(-2.9, 0, 4)).norm(), kExact);
-  EXPECT_LT((points[1] - Vec3(0.1, 2, 0)).norm(), kExact);
-  EXPECT_LT((cloud->local_bounds().min() - Vec3(-2.9, 0, 0)).norm(), kExact);
+  EXPECT_LT((points[0] - Vec3(-2.9, 0, 4)).norm(), kCloudExact);
+  EXPECT_LT((points[1] - Vec3(0.1, 2, 0)).norm(), kCloudExact);
+  EXPECT_LT((cloud->local_bounds().min() - Vec3(-2.9, 0, 0)).norm(), kCloudExact);
 }
 
 TEST(PointCloudContactsTest, LeavesHoldEveryPointOnceWithTheirBounds) {

@@ -18,9 +18,9 @@ namespace {
 
 // pads of 2.5 mm on each side: contact below a 5 mm gap
 constexpr double kPad = 0.0025;
-constexpr double kTol = 2.0 * kPad;
+constexpr double kContactTol = 2.0 * kPad;
 // Results computed in closed form from inputs of ~0.1-0.5 m: a few ulps of rounding.
-constexpr double kExact = 1e-12;
+constexpr double kPrimitiveExact = 1e-12;
 // Points located by golden-section search on a smooth minimum (rim points, segment points on a
 // curved surface), and normals taken from them, are resolved to ~sqrt(machine epsilon) * size;
 // their distances, being at a minimum, remain exact to rounding.
@@ -62,7 +62,7 @@ ContactList Contacts(const Primitive& a, const Pose& X_Wa, const Primitive& b, c
   return out;
 }
 
-void ExpectVecNear(const Vec3& actual, const Vec3& expected, double tolerance) {
+void ExpectComponentsNear(const Vec3& actual, const Vec3& expected, double tolerance) {
   EXPECT_NEAR(actual.x(), expected.x(), tolerance);
   EXPECT_NEAR(actual.y(), expected.y(), tolerance);
   EXPECT_NEAR(actual.z(), expected.z(), tolerance);
@@ -72,7 +72,7 @@ void ExpectVecNear(const Vec3& actual, const Vec3& expected, double tolerance) {
 void ExpectAllNormalDepth(const ContactList& contacts, const Vec3& normal, double depth,
                           double tolerance, double normal_tolerance = 0.0) {
   for (const Contact& contact : contacts) {
-    ExpectVecNear(contact.normal, normal, std::max(tolerance, normal_tolerance));
+    ExpectComponentsNear(contact.normal, normal, std::max(tolerance, normal_tolerance));
     EXPECT_NEAR(contact.depth, depth, tolerance);
     EXPECT_FALSE(contact.penetrating);
   }
@@ -125,10 +125,10 @@ TEST(PrimitiveContactsTest, SphereAbovePlane) {
       Contacts(Primitive::Sphere(0.1), At(0, 0, 0.101), kPlane, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 1u);
   // gap 1 mm in a 5 mm layer
-  EXPECT_NEAR(contacts[0].depth, 0.004, kExact);
-  ExpectVecNear(contacts[0].normal, Vec3::UnitZ(), kExact);
+  EXPECT_NEAR(contacts[0].depth, 0.004, kPrimitiveExact);
+  ExpectComponentsNear(contacts[0].normal, Vec3::UnitZ(), kPrimitiveExact);
   // padded surfaces at 0.001 - 0.0025 and 0 + 0.0025: midway at 0.0005
-  ExpectVecNear(contacts[0].position, Vec3(0, 0, 0.0005), kExact);
+  ExpectComponentsNear(contacts[0].position, Vec3(0, 0, 0.0005), kPrimitiveExact);
   EXPECT_FALSE(contacts[0].penetrating);
 }
 
@@ -136,9 +136,9 @@ TEST(PrimitiveContactsTest, UnequalPadsPlaceTheContactBetweenPaddedSurfaces) {
   const ContactList contacts =
       Contacts(Primitive::Sphere(0.1), At(0.3, -0.2, 0.101), kPlane, At(0, 0, 0), 0.001, 0.004);
   ASSERT_EQ(contacts.size(), 1u);
-  EXPECT_NEAR(contacts[0].depth, 0.004, kExact);
+  EXPECT_NEAR(contacts[0].depth, 0.004, kPrimitiveExact);
   // padded surfaces at 0.001 - 0.001 = 0 and 0 + 0.004: midway at 0.002
-  ExpectVecNear(contacts[0].position, Vec3(0.3, -0.2, 0.002), kExact);
+  ExpectComponentsNear(contacts[0].position, Vec3(0.3, -0.2, 0.002), kPrimitiveExact);
 }
 
 TEST(PrimitiveContactsTest, PrimitivePoseIsInsideTheBodyFrame) {
@@ -147,18 +147,18 @@ TEST(PrimitiveContactsTest, PrimitivePoseIsInsideTheBodyFrame) {
   const Primitive plane = Primitive::Plane(At(0, 0, 1.0));
   const ContactList contacts = Contacts(sphere, At(0, 0, -0.399), plane, At(0, 0, -1.0));
   ASSERT_EQ(contacts.size(), 1u);
-  EXPECT_NEAR(contacts[0].depth, 0.004, kExact);
+  EXPECT_NEAR(contacts[0].depth, 0.004, kPrimitiveExact);
 }
 
 TEST(PrimitiveContactsTest, SphereSphere) {
   const ContactList contacts =
       Contacts(Primitive::Sphere(0.1), At(0, 0, 0), Primitive::Sphere(0.05), At(0.152, 0, 0));
   ASSERT_EQ(contacts.size(), 1u);
-  EXPECT_NEAR(contacts[0].depth, 0.003, kExact);
+  EXPECT_NEAR(contacts[0].depth, 0.003, kPrimitiveExact);
   // from b (at +x) into a
-  ExpectVecNear(contacts[0].normal, -Vec3::UnitX(), kExact);
+  ExpectComponentsNear(contacts[0].normal, -Vec3::UnitX(), kPrimitiveExact);
   // a's padded surface at 0.1 + 0.0025, b's at 0.102 - 0.0025
-  ExpectVecNear(contacts[0].position, Vec3(0.101, 0, 0), kExact);
+  ExpectComponentsNear(contacts[0].position, Vec3(0.101, 0, 0), kPrimitiveExact);
 }
 
 TEST(PrimitiveContactsTest, SphereBoxFaceEdgeAndInside) {
@@ -166,18 +166,18 @@ TEST(PrimitiveContactsTest, SphereBoxFaceEdgeAndInside) {
   // face: 2 mm from the +x face
   ContactList contacts = Contacts(sphere, At(0.152, 0, 0), kBox, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 1u);
-  EXPECT_NEAR(contacts[0].depth, 0.003, kExact);
-  ExpectVecNear(contacts[0].normal, Vec3::UnitX(), kExact);
+  EXPECT_NEAR(contacts[0].depth, 0.003, kPrimitiveExact);
+  ExpectComponentsNear(contacts[0].normal, Vec3::UnitX(), kPrimitiveExact);
   // edge: centre 0.0365 beyond both the x and y faces, 0.0365 sqrt(2) from the edge
   contacts = Contacts(sphere, At(0.1365, 0.1365, 0.03), kBox, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 1u);
-  EXPECT_NEAR(contacts[0].depth, kTol - (0.0365 * std::sqrt(2.0) - 0.05), kExact);
-  ExpectVecNear(contacts[0].normal, Vec3(1, 1, 0) / std::sqrt(2.0), kExact);
+  EXPECT_NEAR(contacts[0].depth, kContactTol - (0.0365 * std::sqrt(2.0) - 0.05), kPrimitiveExact);
+  ExpectComponentsNear(contacts[0].normal, Vec3(1, 1, 0) / std::sqrt(2.0), kPrimitiveExact);
   // centre inside, 1 cm under the +x face: penetrates by 6 cm
   contacts = Contacts(sphere, At(0.09, 0, 0), kBox, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 1u);
-  EXPECT_NEAR(contacts[0].depth, kTol + 0.06, kExact);
-  ExpectVecNear(contacts[0].normal, Vec3::UnitX(), kExact);
+  EXPECT_NEAR(contacts[0].depth, kContactTol + 0.06, kPrimitiveExact);
+  ExpectComponentsNear(contacts[0].normal, Vec3::UnitX(), kPrimitiveExact);
   EXPECT_TRUE(contacts[0].penetrating);
 }
 
@@ -187,13 +187,13 @@ TEST(PrimitiveContactsTest, SphereCapsuleSideAndEnd) {
   // beside the straight part: 0.153 - 0.15 = 3 mm
   ContactList contacts = Contacts(sphere, At(0.153, 0, 0.1), capsule, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 1u);
-  EXPECT_NEAR(contacts[0].depth, 0.002, kExact);
-  ExpectVecNear(contacts[0].normal, Vec3::UnitX(), kExact);
+  EXPECT_NEAR(contacts[0].depth, 0.002, kPrimitiveExact);
+  ExpectComponentsNear(contacts[0].normal, Vec3::UnitX(), kPrimitiveExact);
   // over the end cap: 0.351 - (0.2 + 0.05 + 0.1) = 1 mm
   contacts = Contacts(sphere, At(0, 0, 0.351), capsule, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 1u);
-  EXPECT_NEAR(contacts[0].depth, 0.004, kExact);
-  ExpectVecNear(contacts[0].normal, Vec3::UnitZ(), kExact);
+  EXPECT_NEAR(contacts[0].depth, 0.004, kPrimitiveExact);
+  ExpectComponentsNear(contacts[0].normal, Vec3::UnitZ(), kPrimitiveExact);
 }
 
 TEST(PrimitiveContactsTest, SphereCylinderSideCapRimAndInside) {
@@ -202,25 +202,25 @@ TEST(PrimitiveContactsTest, SphereCylinderSideCapRimAndInside) {
   // side: 1 mm
   ContactList contacts = Contacts(sphere, At(0.151, 0, 0), cylinder, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 1u);
-  EXPECT_NEAR(contacts[0].depth, 0.004, kExact);
-  ExpectVecNear(contacts[0].normal, Vec3::UnitX(), kExact);
+  EXPECT_NEAR(contacts[0].depth, 0.004, kPrimitiveExact);
+  ExpectComponentsNear(contacts[0].normal, Vec3::UnitX(), kPrimitiveExact);
   // cap: 2 mm, off the axis
   contacts = Contacts(sphere, At(0.03, 0.02, 0.152), cylinder, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 1u);
-  EXPECT_NEAR(contacts[0].depth, 0.003, kExact);
-  ExpectVecNear(contacts[0].normal, Vec3::UnitZ(), kExact);
+  EXPECT_NEAR(contacts[0].depth, 0.003, kPrimitiveExact);
+  ExpectComponentsNear(contacts[0].normal, Vec3::UnitZ(), kPrimitiveExact);
   // rim: 2 mm along the diagonal from the rim point (0.1, 0, 0.1)
   const Vec3 diagonal = Vec3(1, 0, 1) / std::sqrt(2.0);
   contacts = Contacts(sphere, At(0.1, 0, 0.1) * At(0.052 * diagonal.x(), 0, 0.052 * diagonal.z()),
                       cylinder, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 1u);
-  EXPECT_NEAR(contacts[0].depth, 0.003, kExact);
-  ExpectVecNear(contacts[0].normal, diagonal, kExact);
+  EXPECT_NEAR(contacts[0].depth, 0.003, kPrimitiveExact);
+  ExpectComponentsNear(contacts[0].normal, diagonal, kPrimitiveExact);
   // centre 1 cm inside the side: 6 cm deep
   contacts = Contacts(sphere, At(0.09, 0, 0), cylinder, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 1u);
-  EXPECT_NEAR(contacts[0].depth, kTol + 0.06, kExact);
-  ExpectVecNear(contacts[0].normal, Vec3::UnitX(), kExact);
+  EXPECT_NEAR(contacts[0].depth, kContactTol + 0.06, kPrimitiveExact);
+  ExpectComponentsNear(contacts[0].normal, Vec3::UnitX(), kPrimitiveExact);
   EXPECT_TRUE(contacts[0].penetrating);
 }
 
@@ -230,10 +230,10 @@ TEST(PrimitiveContactsTest, SphereCylinderSideCapRimAndInside) {
 TEST(PrimitiveContactsTest, BoxFlatOnPlaneGivesFourCorners) {
   const ContactList contacts = Contacts(kBox, At(0, 0, 0.101), kPlane, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 4u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
   for (const double x : {-0.1, 0.1}) {
     for (const double y : {-0.1, 0.1}) {
-      EXPECT_TRUE(HasContactAt(contacts, Vec3(x, y, 0.0005), kExact)) << x << " " << y;
+      EXPECT_TRUE(HasContactAt(contacts, Vec3(x, y, 0.0005), kPrimitiveExact)) << x << " " << y;
     }
   }
 }
@@ -253,7 +253,7 @@ TEST(PrimitiveContactsTest, TiltedBoxOnPlaneGivesEachCornerItsOwnDepth) {
     for (int i = 0; i < 8; ++i) {
       const Vec3 corner(i & 1 ? 0.1 : -0.1, i & 2 ? 0.1 : -0.1, i & 4 ? 0.1 : -0.1);
       const double height = (X_lowered * corner).z();
-      if (height < kTol) expected_depths.push_back(kTol - height);
+      if (height < kContactTol) expected_depths.push_back(kContactTol - height);
     }
     // 0.2 sin(0.02) = 4.0 mm keeps all 4 bottom corners in the layer; 6.0 mm drops two
     ASSERT_EQ(expected_depths.size(), angle < 0.025 ? 4u : 2u);
@@ -263,18 +263,19 @@ TEST(PrimitiveContactsTest, TiltedBoxOnPlaneGivesEachCornerItsOwnDepth) {
     for (const Contact& contact : contacts) depths.push_back(contact.depth);
     std::sort(depths.begin(), depths.end());
     std::sort(expected_depths.begin(), expected_depths.end());
-    for (size_t i = 0; i < depths.size(); ++i) EXPECT_NEAR(depths[i], expected_depths[i], kExact);
+    for (size_t i = 0; i < depths.size(); ++i)
+      EXPECT_NEAR(depths[i], expected_depths[i], kPrimitiveExact);
   }
 }
 
 TEST(PrimitiveContactsTest, BoxOnBoxOffsetByHalfASide) {
   const ContactList contacts = Contacts(kBox, At(0.1, 0, 0.201), kBox, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 4u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
   // the overlap rectangle x in [0, 0.1], y in [-0.1, 0.1], midway in the 1 mm gap
   for (const double x : {0.0, 0.1}) {
     for (const double y : {-0.1, 0.1}) {
-      EXPECT_TRUE(HasContactAt(contacts, Vec3(x, y, 0.1005), kExact)) << x << " " << y;
+      EXPECT_TRUE(HasContactAt(contacts, Vec3(x, y, 0.1005), kPrimitiveExact)) << x << " " << y;
     }
   }
 }
@@ -285,18 +286,18 @@ TEST(PrimitiveContactsTest, BoxTurned45DegreesOnBoxGivesTheOctagon) {
   // the turned square reaches 0.1 sqrt(2) along x and y: it cuts the corners off the lower
   // square, leaving an octagon with vertices (+-0.1, +-(0.1 sqrt(2) - 0.1)) and swapped
   ASSERT_EQ(contacts.size(), 8u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
   const double cut = 0.1 * std::sqrt(2.0) - 0.1;
   for (const double u : {-0.1, 0.1}) {
     for (const double v : {-cut, cut}) {
-      EXPECT_TRUE(HasContactAt(contacts, Vec3(u, v, 0.1005), kExact)) << u << " " << v;
-      EXPECT_TRUE(HasContactAt(contacts, Vec3(v, u, 0.1005), kExact)) << v << " " << u;
+      EXPECT_TRUE(HasContactAt(contacts, Vec3(u, v, 0.1005), kPrimitiveExact)) << u << " " << v;
+      EXPECT_TRUE(HasContactAt(contacts, Vec3(v, u, 0.1005), kPrimitiveExact)) << v << " " << u;
     }
   }
   for (const Contact& contact : contacts) {
     // inside both squares (turned: |x| + |y| <= 0.1 sqrt(2))
-    EXPECT_LE(contact.position.head<2>().cwiseAbs().maxCoeff(), 0.1 + kExact);
-    EXPECT_LE(contact.position.head<2>().cwiseAbs().sum(), 0.1 * std::sqrt(2.0) + kExact);
+    EXPECT_LE(contact.position.head<2>().cwiseAbs().maxCoeff(), 0.1 + kPrimitiveExact);
+    EXPECT_LE(contact.position.head<2>().cwiseAbs().sum(), 0.1 * std::sqrt(2.0) + kPrimitiveExact);
   }
   // every vertex turns the outline by 45 degrees: none is dropped as lying between others
   EXPECT_FALSE(SomeContactLiesBetweenTwoOthers(contacts, kBetweenTolerance));
@@ -305,10 +306,10 @@ TEST(PrimitiveContactsTest, BoxTurned45DegreesOnBoxGivesTheOctagon) {
 TEST(PrimitiveContactsTest, EqualBoxesExactlyAlignedGiveFourCorners) {
   const ContactList contacts = Contacts(kBox, At(0, 0, 0.201), kBox, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 4u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
   for (const double x : {-0.1, 0.1}) {
     for (const double y : {-0.1, 0.1}) {
-      EXPECT_TRUE(HasContactAt(contacts, Vec3(x, y, 0.1005), kExact)) << x << " " << y;
+      EXPECT_TRUE(HasContactAt(contacts, Vec3(x, y, 0.1005), kPrimitiveExact)) << x << " " << y;
     }
   }
 }
@@ -318,11 +319,11 @@ TEST(PrimitiveContactsTest, SmallBoxTurnedOnALargerBoxGivesItsFourCorners) {
   const Pose X_Wa = Rotated(Vec3::UnitZ(), 0.01, Vec3(0.02, -0.03, 0.151));
   const ContactList contacts = Contacts(small, X_Wa, kBox, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 4u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
   for (const double x : {-0.05, 0.05}) {
     for (const double y : {-0.05, 0.05}) {
       const Vec3 corner = X_Wa * Vec3(x, y, -0.05);
-      EXPECT_TRUE(HasContactAt(contacts, Vec3(corner.x(), corner.y(), 0.1005), kExact))
+      EXPECT_TRUE(HasContactAt(contacts, Vec3(corner.x(), corner.y(), 0.1005), kPrimitiveExact))
           << x << " " << y;
     }
   }
@@ -337,9 +338,9 @@ TEST(PrimitiveContactsTest, BoxTiltedOntoItsEdgeOnABoxGivesTheEdgeEnds) {
   const Pose X_Wa = At(0, 0, 0.101 - lowest_edge.z()) * turn;
   const ContactList contacts = Contacts(kBox, X_Wa, wide, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 2u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
   for (const double y : {-0.1, 0.1}) {
-    EXPECT_TRUE(HasContactAt(contacts, Vec3(lowest_edge.x(), y, 0.1005), kExact)) << y;
+    EXPECT_TRUE(HasContactAt(contacts, Vec3(lowest_edge.x(), y, 0.1005), kPrimitiveExact)) << y;
   }
 }
 
@@ -352,8 +353,8 @@ TEST(PrimitiveContactsTest, CrossedEdgesGiveOneContact) {
   const ContactList contacts = Contacts(kBox, X_Wa, kBox, X_Wb);
   ASSERT_EQ(contacts.size(), 1u);
   // the normal is the cross product of the edge directions x and y
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
-  ExpectVecNear(contacts[0].position, Vec3(0, 0, reach + 0.0005), kExact);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
+  ExpectComponentsNear(contacts[0].position, Vec3(0, 0, reach + 0.0005), kPrimitiveExact);
 }
 
 TEST(PrimitiveContactsTest, CornerNearCornerOffTheFacesGivesOneContact) {
@@ -364,7 +365,7 @@ TEST(PrimitiveContactsTest, CornerNearCornerOffTheFacesGivesOneContact) {
       Contacts(kBox, At(0.2 + step, 0.2 + step, 0.2 + step), kBox, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 1u);
   EXPECT_NEAR(contacts[0].depth, 0.004, kSearched);
-  ExpectVecNear(contacts[0].normal, Vec3(1, 1, 1) / std::sqrt(3.0), kSearched);
+  ExpectComponentsNear(contacts[0].normal, Vec3(1, 1, 1) / std::sqrt(3.0), kSearched);
 }
 
 TEST(PrimitiveContactsTest, LowestEdgeOverhangingTheFaceBelowGivesTheNearestContact) {
@@ -384,8 +385,8 @@ TEST(PrimitiveContactsTest, LowestEdgeOverhangingTheFaceBelowGivesTheNearestCont
       *std::max_element(contacts.begin(), contacts.end(),
                         [](const Contact& x, const Contact& y) { return x.depth < y.depth; });
   const double gap = std::hypot(beyond, above);
-  EXPECT_NEAR(deepest.depth, kTol - gap, kExact);
-  ExpectVecNear(deepest.normal, Vec3(beyond, 0, above) / gap, kExact);
+  EXPECT_NEAR(deepest.depth, kContactTol - gap, kPrimitiveExact);
+  ExpectComponentsNear(deepest.normal, Vec3(beyond, 0, above) / gap, kPrimitiveExact);
 }
 
 TEST(PrimitiveContactsTest, SunkCornerIsPushedOutThroughTheCapItSankInto) {
@@ -395,7 +396,7 @@ TEST(PrimitiveContactsTest, SunkCornerIsPushedOutThroughTheCapItSankInto) {
   const Mat3 turn =
       Eigen::Quaterniond::FromTwoVectors(Vec3(-1, -1, -1), -Vec3::UnitZ()).toRotationMatrix();
   const Vec3 corner = turn * Vec3(-0.1, -0.1, -0.1);
-  ASSERT_NEAR(corner.head<2>().norm(), 0.0, kExact);
+  ASSERT_NEAR(corner.head<2>().norm(), 0.0, kPrimitiveExact);
   Pose X_Wa = Pose::Identity();
   X_Wa.linear() = turn;
   X_Wa.translation() = Vec3(0.0995, 0, 0.099) - corner;
@@ -404,8 +405,8 @@ TEST(PrimitiveContactsTest, SunkCornerIsPushedOutThroughTheCapItSankInto) {
   const Contact& deepest =
       *std::max_element(contacts.begin(), contacts.end(),
                         [](const Contact& x, const Contact& y) { return x.depth < y.depth; });
-  EXPECT_NEAR(deepest.depth, kTol + 0.001, kExact);
-  ExpectVecNear(deepest.normal, Vec3::UnitZ(), kExact);
+  EXPECT_NEAR(deepest.depth, kContactTol + 0.001, kPrimitiveExact);
+  ExpectComponentsNear(deepest.normal, Vec3::UnitZ(), kPrimitiveExact);
   EXPECT_TRUE(deepest.penetrating);
 }
 
@@ -418,28 +419,28 @@ TEST(PrimitiveContactsTest, CapsuleLyingOnBoxGivesBothEnds) {
   ContactList contacts =
       Contacts(Primitive::Capsule(0.05, 0.2), AlongX(Vec3(0, 0.05, 0.151)), box, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 2u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
-  EXPECT_TRUE(HasContactAt(contacts, Vec3(-0.1, 0.05, 0.1005), kExact));
-  EXPECT_TRUE(HasContactAt(contacts, Vec3(0.1, 0.05, 0.1005), kExact));
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
+  EXPECT_TRUE(HasContactAt(contacts, Vec3(-0.1, 0.05, 0.1005), kPrimitiveExact));
+  EXPECT_TRUE(HasContactAt(contacts, Vec3(0.1, 0.05, 0.1005), kPrimitiveExact));
   // long capsule: the stretch over the face ends at the face's edges
   contacts =
       Contacts(Primitive::Capsule(0.05, 0.6), AlongX(Vec3(0, 0.05, 0.151)), box, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 2u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
-  EXPECT_TRUE(HasContactAt(contacts, Vec3(-0.2, 0.05, 0.1005), kExact));
-  EXPECT_TRUE(HasContactAt(contacts, Vec3(0.2, 0.05, 0.1005), kExact));
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
+  EXPECT_TRUE(HasContactAt(contacts, Vec3(-0.2, 0.05, 0.1005), kPrimitiveExact));
+  EXPECT_TRUE(HasContactAt(contacts, Vec3(0.2, 0.05, 0.1005), kPrimitiveExact));
 }
 
 TEST(PrimitiveContactsTest, CapsuleOnPlaneLyingAndStanding) {
   const Primitive capsule = Primitive::Capsule(0.05, 0.3);
   ContactList contacts = Contacts(capsule, AlongY(Vec3(0, 0, 0.051)), kPlane, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 2u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
-  EXPECT_TRUE(HasContactAt(contacts, Vec3(0, -0.15, 0.0005), kExact));
-  EXPECT_TRUE(HasContactAt(contacts, Vec3(0, 0.15, 0.0005), kExact));
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
+  EXPECT_TRUE(HasContactAt(contacts, Vec3(0, -0.15, 0.0005), kPrimitiveExact));
+  EXPECT_TRUE(HasContactAt(contacts, Vec3(0, 0.15, 0.0005), kPrimitiveExact));
   contacts = Contacts(capsule, At(0, 0, 0.201), kPlane, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 1u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
 }
 
 TEST(PrimitiveContactsTest, CapsuleCapsuleCrossedAndParallel) {
@@ -448,14 +449,14 @@ TEST(PrimitiveContactsTest, CapsuleCapsuleCrossedAndParallel) {
   ContactList contacts =
       Contacts(capsule, AlongX(Vec3(0, 0, 0.101)), capsule, AlongY(Vec3::Zero()));
   ASSERT_EQ(contacts.size(), 1u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact, kSearched);
-  ExpectVecNear(contacts[0].position, Vec3(0, 0, 0.0505), kSearched);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact, kSearched);
+  ExpectComponentsNear(contacts[0].position, Vec3(0, 0, 0.0505), kSearched);
   // parallel, overlapping over x in [0.1, 0.2]: the ends of the overlap
   contacts = Contacts(capsule, AlongX(Vec3(0.3, 0, 0.101)), capsule, AlongX(Vec3::Zero()));
   ASSERT_EQ(contacts.size(), 2u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
-  EXPECT_TRUE(HasContactAt(contacts, Vec3(0.1, 0, 0.0505), kExact));
-  EXPECT_TRUE(HasContactAt(contacts, Vec3(0.2, 0, 0.0505), kExact));
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
+  EXPECT_TRUE(HasContactAt(contacts, Vec3(0.1, 0, 0.0505), kPrimitiveExact));
+  EXPECT_TRUE(HasContactAt(contacts, Vec3(0.2, 0, 0.0505), kPrimitiveExact));
 }
 
 TEST(PrimitiveContactsTest, CapsuleOnCylinderCapSideAndCrossing) {
@@ -464,25 +465,25 @@ TEST(PrimitiveContactsTest, CapsuleOnCylinderCapSideAndCrossing) {
   // lying on the cap of a standing cylinder: both axis ends over the disk
   ContactList contacts = Contacts(capsule, AlongX(Vec3(0, 0, 0.151)), cylinder, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 2u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
-  EXPECT_TRUE(HasContactAt(contacts, Vec3(-0.05, 0, 0.1005), kExact));
-  EXPECT_TRUE(HasContactAt(contacts, Vec3(0.05, 0, 0.1005), kExact));
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
+  EXPECT_TRUE(HasContactAt(contacts, Vec3(-0.05, 0, 0.1005), kPrimitiveExact));
+  EXPECT_TRUE(HasContactAt(contacts, Vec3(0.05, 0, 0.1005), kPrimitiveExact));
   // long capsule over the cap: the stretch over the disk ends at the rim
   contacts =
       Contacts(Primitive::Capsule(0.05, 0.4), AlongX(Vec3(0, 0.06, 0.151)), cylinder, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 2u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
-  EXPECT_TRUE(HasContactAt(contacts, Vec3(-0.08, 0.06, 0.1005), kExact));
-  EXPECT_TRUE(HasContactAt(contacts, Vec3(0.08, 0.06, 0.1005), kExact));
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
+  EXPECT_TRUE(HasContactAt(contacts, Vec3(-0.08, 0.06, 0.1005), kPrimitiveExact));
+  EXPECT_TRUE(HasContactAt(contacts, Vec3(0.08, 0.06, 0.1005), kPrimitiveExact));
   // alongside a lying cylinder, parallel: the ends of the capsule's axis
   contacts = Contacts(capsule, AlongX(Vec3(0, 0, 0.151)), cylinder, AlongX(Vec3::Zero()));
   ASSERT_EQ(contacts.size(), 2u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
   // crossing a lying cylinder at right angles: one contact on top
   contacts = Contacts(capsule, AlongY(Vec3(0, 0, 0.151)), cylinder, AlongX(Vec3::Zero()));
   ASSERT_EQ(contacts.size(), 1u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact, kSearched);
-  ExpectVecNear(contacts[0].position, Vec3(0, 0, 0.1005), kSearched);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact, kSearched);
+  ExpectComponentsNear(contacts[0].position, Vec3(0, 0, 0.1005), kSearched);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -494,7 +495,7 @@ TEST(PrimitiveContactsTest, CylinderLyingOnPlaneGivesTheLineEnds) {
   const ContactList contacts = Contacts(Primitive::Cylinder(0.1, 0.3), X_WC, kPlane, At(0, 0, 0));
   // rim points 45 degrees up from the bottom are 0.1 (1 - cos 45) = 29 mm high: out of the layer
   ASSERT_EQ(contacts.size(), 2u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
   EXPECT_TRUE(HasContactAt(contacts, Vec3(-0.15, 0, 0.0005), kSearched));
   EXPECT_TRUE(HasContactAt(contacts, Vec3(0.15, 0, 0.0005), kSearched));
 }
@@ -503,10 +504,11 @@ TEST(PrimitiveContactsTest, CylinderStandingOnPlaneGivesRimPoints) {
   const ContactList contacts =
       Contacts(Primitive::Cylinder(0.1, 0.3), At(0.2, 0.1, 0.151), kPlane, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 8u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
   for (const Contact& contact : contacts) {
-    EXPECT_NEAR((contact.position.head<2>() - Eigen::Vector2d(0.2, 0.1)).norm(), 0.1, kExact);
-    EXPECT_NEAR(contact.position.z(), 0.0005, kExact);
+    EXPECT_NEAR((contact.position.head<2>() - Eigen::Vector2d(0.2, 0.1)).norm(), 0.1,
+                kPrimitiveExact);
+    EXPECT_NEAR(contact.position.z(), 0.0005, kPrimitiveExact);
   }
 }
 
@@ -518,8 +520,8 @@ TEST(PrimitiveContactsTest, CylinderTiltedOnItsRimGivesTheLowestRimPoint) {
   const Pose X_WC = At(-lowest.x(), -lowest.y(), 0.001 - lowest.z()) * X_tilted;
   const ContactList contacts = Contacts(Primitive::Cylinder(0.1, 0.3), X_WC, kPlane, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 1u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
-  ExpectVecNear(contacts[0].position, Vec3(0, 0, 0.0005), kSearched);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
+  ExpectComponentsNear(contacts[0].position, Vec3(0, 0, 0.0005), kSearched);
 }
 
 TEST(PrimitiveContactsTest, CylinderOnBoxStandingAndLying) {
@@ -527,10 +529,10 @@ TEST(PrimitiveContactsTest, CylinderOnBoxStandingAndLying) {
   const Primitive cylinder = Primitive::Cylinder(0.1, 0.3);
   ContactList contacts = Contacts(cylinder, At(0, 0, 0.251), box, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 8u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
   contacts = Contacts(cylinder, AlongY(Vec3(0.05, 0, 0.201)), box, At(0, 0, 0));
   ASSERT_EQ(contacts.size(), 2u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
   EXPECT_TRUE(HasContactAt(contacts, Vec3(0.05, -0.15, 0.1005), kSearched));
   EXPECT_TRUE(HasContactAt(contacts, Vec3(0.05, 0.15, 0.1005), kSearched));
 }
@@ -541,7 +543,7 @@ TEST(PrimitiveContactsTest, BoxOnLyingCylinderGivesItsCrossingEdges) {
   const ContactList contacts =
       Contacts(kBox, At(0, 0.03, 0.201), Primitive::Cylinder(0.1, 0.6), AlongX(Vec3::Zero()));
   ASSERT_EQ(contacts.size(), 2u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact, kSearched);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact, kSearched);
   EXPECT_TRUE(HasContactAt(contacts, Vec3(-0.1, 0, 0.1005), kSearched));
   EXPECT_TRUE(HasContactAt(contacts, Vec3(0.1, 0, 0.1005), kSearched));
 }
@@ -552,14 +554,14 @@ TEST(PrimitiveContactsTest, CylindersCrossedAndStacked) {
   ContactList contacts =
       Contacts(cylinder, AlongX(Vec3(0, 0, 0.201)), cylinder, AlongY(Vec3::Zero()));
   ASSERT_EQ(contacts.size(), 1u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
-  ExpectVecNear(contacts[0].position, Vec3(0, 0, 0.1005), kExact);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
+  ExpectComponentsNear(contacts[0].position, Vec3(0, 0, 0.1005), kPrimitiveExact);
   // stacked on the same axis: rim points of both rims facing each other
   contacts = Contacts(cylinder, At(0, 0, 0.401), cylinder, At(0, 0, 0));
   ASSERT_GE(contacts.size(), 8u);
-  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kExact);
+  ExpectAllNormalDepth(contacts, Vec3::UnitZ(), 0.004, kPrimitiveExact);
   for (const Contact& contact : contacts) {
-    EXPECT_NEAR(contact.position.head<2>().norm(), 0.1, kExact);
+    EXPECT_NEAR(contact.position.head<2>().norm(), 0.1, kPrimitiveExact);
   }
 }
 
@@ -570,8 +572,8 @@ TEST(PrimitiveContactsTest, StackedCylindersSunkIntoEachOtherArePushedApartAxial
   const ContactList contacts = Contacts(cylinder, At(0, 0, 0.39), cylinder, At(0, 0, 0));
   ASSERT_GE(contacts.size(), 8u);
   for (const Contact& contact : contacts) {
-    ExpectVecNear(contact.normal, Vec3::UnitZ(), kExact);
-    EXPECT_NEAR(contact.depth, kTol + 0.01, kExact);
+    ExpectComponentsNear(contact.normal, Vec3::UnitZ(), kPrimitiveExact);
+    EXPECT_NEAR(contact.depth, kContactTol + 0.01, kPrimitiveExact);
     EXPECT_TRUE(contact.penetrating);
   }
 }
@@ -625,16 +627,16 @@ TEST(PrimitiveContactsTest, EveryPairHasTheLayerAsThreshold) {
     Pose X_Wa;
     Pose X_Wb;
     // just inside the layer: the shallowest possible contact
-    Place(pair, kTol - 1e-6, &X_Wa, &X_Wb);
+    Place(pair, kContactTol - 1e-6, &X_Wa, &X_Wb);
     ContactList contacts = Contacts(pair.a, X_Wa, pair.b, X_Wb);
     ASSERT_FALSE(contacts.empty());
     for (const Contact& contact : contacts) {
       // at least 1e-6 of depth; 1e-9 below for rounding
       EXPECT_GT(contact.depth, 1e-6 - 1e-9);
-      ExpectVecNear(contact.normal, Vec3::UnitZ(), kSearched);
+      ExpectComponentsNear(contact.normal, Vec3::UnitZ(), kSearched);
     }
     // just outside: nothing
-    Place(pair, kTol + 1e-6, &X_Wa, &X_Wb);
+    Place(pair, kContactTol + 1e-6, &X_Wa, &X_Wb);
     EXPECT_TRUE(Contacts(pair.a, X_Wa, pair.b, X_Wb).empty());
   }
 }
@@ -651,11 +653,11 @@ TEST(PrimitiveContactsTest, EveryPairFlagsOverlap) {
     double deepest = 0.0;
     for (const Contact& contact : contacts) {
       deepest = std::max(deepest, contact.depth);
-      EXPECT_EQ(contact.penetrating, contact.depth > kTol);
+      EXPECT_EQ(contact.penetrating, contact.depth > kContactTol);
       EXPECT_GT(contact.normal.z(), 0.0);
     }
     // the deepest contact reports the full overlap
-    EXPECT_NEAR(deepest, kTol + 0.01, kExact);
+    EXPECT_NEAR(deepest, kContactTol + 0.01, kPrimitiveExact);
   }
 }
 
@@ -831,7 +833,7 @@ void ExpectWellFormedAndSymmetric(const ContactList& contacts, const ContactList
     ASSERT_TRUE(contact.position.allFinite());
     EXPECT_NEAR(contact.normal.norm(), 1.0, 1e-12);
     EXPECT_GT(contact.depth, 0.0);
-    EXPECT_EQ(contact.penetrating, contact.depth > kTol);
+    EXPECT_EQ(contact.penetrating, contact.depth > kContactTol);
     EXPECT_EQ(contact.depth, swapped[k].depth);
     EXPECT_EQ(contact.normal, Vec3(-swapped[k].normal));
   }
@@ -872,12 +874,12 @@ TEST(PrimitiveContactsTest, RandomPairsMatchTheSupportFunctionDistance) {
         const double distance = OracleSignedDistance(shapes[i], X_Wa, shapes[j], X_Wb,
                                                      wide != nullptr ? wide->normal : direction);
         const Contact* deepest = Deepest(contacts);
-        if (distance > kTol + kDistanceTolerance) {
+        if (distance > kContactTol + kDistanceTolerance) {
           EXPECT_EQ(deepest, nullptr) << "distance " << distance;
-        } else if (distance > 0.0 && distance < kTol - kDistanceTolerance) {
+        } else if (distance > 0.0 && distance < kContactTol - kDistanceTolerance) {
           // separated within the layer: the deepest contact is the nearest pair
           ASSERT_NE(deepest, nullptr) << "distance " << distance;
-          EXPECT_NEAR(deepest->depth, kTol - distance, kDistanceTolerance);
+          EXPECT_NEAR(deepest->depth, kContactTol - distance, kDistanceTolerance);
         } else if (distance < -kDistanceTolerance) {
           ASSERT_NE(deepest, nullptr) << "distance " << distance;
           EXPECT_TRUE(deepest->penetrating) << "distance " << distance;
@@ -963,9 +965,9 @@ TEST(PrimitiveContactsTest, OverhangingTiltedStackedBoxesFindTheTrueSeparation) 
       const Contact* wide = Deepest(wide_contacts);
       const double distance = OracleSignedDistance(box, stacked.X_Wa, box, Pose::Identity(),
                                                    wide != nullptr ? wide->normal : Vec3::UnitZ());
-      if (distance > 0.0 && distance < kTol - kDistanceTolerance) {
+      if (distance > 0.0 && distance < kContactTol - kDistanceTolerance) {
         ASSERT_NE(deepest, nullptr) << "distance " << distance;
-        EXPECT_NEAR(deepest->depth, kTol - distance, kDistanceTolerance);
+        EXPECT_NEAR(deepest->depth, kContactTol - distance, kDistanceTolerance);
       }
     }
   }

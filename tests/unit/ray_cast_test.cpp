@@ -23,7 +23,7 @@ using core::Primitive;
 using core::RayCast;
 using core::Vec3;
 
-constexpr double kTolerance = 1e-9;
+constexpr double kRayTolerance = 1e-9;
 constexpr double kRange = 100.0;
 
 std::shared_ptr<const CollisionGeometry> Build(
@@ -76,7 +76,7 @@ TEST(RayCastTest, BoxAlongEachAxisFromBothSides) {
     for (const double side : {-1.0, 1.0}) {
       const Vec3 origin = 5.0 * side * Vec3::Unit(axis);
       const double expected = 5.0 - 0.5 * (axis + 1);
-      EXPECT_NEAR(Cast(*box, origin, -side * Vec3::Unit(axis)), expected, kTolerance)
+      EXPECT_NEAR(Cast(*box, origin, -side * Vec3::Unit(axis)), expected, kRayTolerance)
           << "axis " << axis << " side " << side;
       EXPECT_EQ(Cast(*box, origin, side * Vec3::Unit(axis)), kInf) << "pointing away";
     }
@@ -87,55 +87,56 @@ TEST(RayCastTest, BoxOblique) {
   const auto box = Build(Primitive::Box(Vec3::Ones()));
   // enters the face x = -0.5 at y = 0 after 2.5 along x and 2.5 along y
   EXPECT_NEAR(Cast(*box, Vec3(-3, -2.5, 0.2), Vec3(1, 1, 0).normalized()), 2.5 * std::sqrt(2.0),
-              kTolerance);
+              kRayTolerance);
   // through the corner (-0.5, -0.5, -0.5)
   EXPECT_NEAR(Cast(*box, Vec3(-2, -2, -2), Vec3(1, 1, 1).normalized()), 1.5 * std::sqrt(3.0),
-              kTolerance);
+              kRayTolerance);
   // passes beside the box
   EXPECT_EQ(Cast(*box, Vec3(-3, -1.5, 0), Vec3(1, 1, 0).normalized()), kInf);
 }
 
 TEST(RayCastTest, SphereHitMissAndTangent) {
   const auto sphere = Build(Primitive::Sphere(0.5, Vec3(1, 2, 3)));
-  EXPECT_NEAR(Cast(*sphere, Vec3(1, 2, -3), Vec3::UnitZ()), 5.5, kTolerance);
+  EXPECT_NEAR(Cast(*sphere, Vec3(1, 2, -3), Vec3::UnitZ()), 5.5, kRayTolerance);
   // 0.3 off the centre line: the chord's near end is 0.4 before the centre
-  EXPECT_NEAR(Cast(*sphere, Vec3(1.3, 2, -3), Vec3::UnitZ()), 5.6, kTolerance);
+  EXPECT_NEAR(Cast(*sphere, Vec3(1.3, 2, -3), Vec3::UnitZ()), 5.6, kRayTolerance);
   EXPECT_EQ(Cast(*sphere, Vec3(1.6, 2, -3), Vec3::UnitZ()), kInf);
   // grazing the sphere counts: the touching point is level with the centre
-  EXPECT_NEAR(Cast(*sphere, Vec3(1.5, 2, -3), Vec3::UnitZ()), 6.0, kTolerance);
+  EXPECT_NEAR(Cast(*sphere, Vec3(1.5, 2, -3), Vec3::UnitZ()), 6.0, kRayTolerance);
   EXPECT_EQ(Cast(*sphere, Vec3(1, 2, 4), Vec3::UnitZ()), kInf) << "behind";
 }
 
 TEST(RayCastTest, CapsuleSideAndCaps) {
   const auto capsule = Build(Primitive::Capsule(0.5, 2.0));
-  EXPECT_NEAR(Cast(*capsule, Vec3(3, 0, 0.7), -Vec3::UnitX()), 2.5, kTolerance);
-  EXPECT_NEAR(Cast(*capsule, Vec3(0, 0, 5), -Vec3::UnitZ()), 3.5, kTolerance);
-  EXPECT_NEAR(Cast(*capsule, Vec3(0, 0, -5), Vec3::UnitZ()), 3.5, kTolerance);
+  EXPECT_NEAR(Cast(*capsule, Vec3(3, 0, 0.7), -Vec3::UnitX()), 2.5, kRayTolerance);
+  EXPECT_NEAR(Cast(*capsule, Vec3(0, 0, 5), -Vec3::UnitZ()), 3.5, kRayTolerance);
+  EXPECT_NEAR(Cast(*capsule, Vec3(0, 0, -5), Vec3::UnitZ()), 3.5, kRayTolerance);
   // 0.3 off the axis the cap's sphere (centre z = 1) is met at z = 1 + 0.4
-  EXPECT_NEAR(Cast(*capsule, Vec3(0.3, 0, 5), -Vec3::UnitZ()), 3.6, kTolerance);
+  EXPECT_NEAR(Cast(*capsule, Vec3(0.3, 0, 5), -Vec3::UnitZ()), 3.6, kRayTolerance);
   // beside the cylinder part, over the round of the cap: misses the cylinder, hits the cap
-  EXPECT_NEAR(Cast(*capsule, Vec3(3, 0.3, 1.3), -Vec3::UnitX()), 3.0 - std::sqrt(0.07), kTolerance);
+  EXPECT_NEAR(Cast(*capsule, Vec3(3, 0.3, 1.3), -Vec3::UnitX()), 3.0 - std::sqrt(0.07),
+              kRayTolerance);
   EXPECT_EQ(Cast(*capsule, Vec3(3, 0, 1.6), -Vec3::UnitX()), kInf);
 }
 
 TEST(RayCastTest, CylinderSideAndFlatCaps) {
   const auto cylinder = Build(Primitive::Cylinder(0.5, 2.0));
-  EXPECT_NEAR(Cast(*cylinder, Vec3(3, 0, 0.7), -Vec3::UnitX()), 2.5, kTolerance);
-  EXPECT_NEAR(Cast(*cylinder, Vec3(0, -3, -0.9), Vec3::UnitY()), 2.5, kTolerance);
+  EXPECT_NEAR(Cast(*cylinder, Vec3(3, 0, 0.7), -Vec3::UnitX()), 2.5, kRayTolerance);
+  EXPECT_NEAR(Cast(*cylinder, Vec3(0, -3, -0.9), Vec3::UnitY()), 2.5, kRayTolerance);
   // the flat cap at z = 1, anywhere across it
-  EXPECT_NEAR(Cast(*cylinder, Vec3(0.3, 0, 5), -Vec3::UnitZ()), 4.0, kTolerance);
-  EXPECT_NEAR(Cast(*cylinder, Vec3(0.3, -0.3, -5), Vec3::UnitZ()), 4.0, kTolerance);
+  EXPECT_NEAR(Cast(*cylinder, Vec3(0.3, 0, 5), -Vec3::UnitZ()), 4.0, kRayTolerance);
+  EXPECT_NEAR(Cast(*cylinder, Vec3(0.3, -0.3, -5), Vec3::UnitZ()), 4.0, kRayTolerance);
   // no round cap: just above the end, the side is missed
   EXPECT_EQ(Cast(*cylinder, Vec3(3, 0, 1.1), -Vec3::UnitX()), kInf);
   // oblique through the cap: from (0, 0, 3) down at 45 degrees, z = 1 after 2 along x
   EXPECT_NEAR(Cast(*cylinder, Vec3(-2.2, 0, 3), Vec3(1, 0, -1).normalized()), 2.0 * std::sqrt(2.0),
-              kTolerance);
+              kRayTolerance);
 }
 
 TEST(RayCastTest, PlaneFromAboveParallelAndBelow) {
   const auto plane = Build(Primitive::Plane());
-  EXPECT_NEAR(Cast(*plane, Vec3(7, -4, 3), -Vec3::UnitZ()), 3.0, kTolerance);
-  EXPECT_NEAR(Cast(*plane, Vec3(7, -4, 3), Vec3(0, 0.6, -0.8)), 3.75, kTolerance);
+  EXPECT_NEAR(Cast(*plane, Vec3(7, -4, 3), -Vec3::UnitZ()), 3.0, kRayTolerance);
+  EXPECT_NEAR(Cast(*plane, Vec3(7, -4, 3), Vec3(0, 0.6, -0.8)), 3.75, kRayTolerance);
   EXPECT_EQ(Cast(*plane, Vec3(0, 0, 3), Vec3::UnitX()), kInf) << "parallel";
   EXPECT_EQ(Cast(*plane, Vec3(0, 0, 3), Vec3::UnitZ()), kInf) << "pointing away";
   EXPECT_EQ(Cast(*plane, Vec3(0, 0, -1), Vec3::UnitZ()), 0.0) << "below is inside";
@@ -146,8 +147,8 @@ TEST(RayCastTest, MeshBoxReadsAsTheBoxPrimitive) {
   const Vec3 size(1, 2, 3);
   const auto mesh = BuildMeshBox(size);
   const auto box = Build(Primitive::Box(size));
-  EXPECT_NEAR(Cast(*mesh, Vec3(5, 0, 0), -Vec3::UnitX()), 4.5, kTolerance);
-  EXPECT_NEAR(Cast(*mesh, Vec3(0, 0, -5), Vec3::UnitZ()), 3.5, kTolerance);
+  EXPECT_NEAR(Cast(*mesh, Vec3(5, 0, 0), -Vec3::UnitX()), 4.5, kRayTolerance);
+  EXPECT_NEAR(Cast(*mesh, Vec3(0, 0, -5), Vec3::UnitZ()), 3.5, kRayTolerance);
   const Pose X_W = Placed(Vec3(0.3, -1, 2), Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
   std::mt19937 random(7);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -162,7 +163,7 @@ TEST(RayCastTest, MeshBoxReadsAsTheBoxPrimitive) {
     if (expected == kInf) {
       EXPECT_EQ(RayCast(*mesh, X_W, origin, direction, kRange), kInf) << "ray " << i;
     } else {
-      EXPECT_NEAR(RayCast(*mesh, X_W, origin, direction, kRange), expected, kTolerance)
+      EXPECT_NEAR(RayCast(*mesh, X_W, origin, direction, kRange), expected, kRayTolerance)
           << "ray " << i;
     }
   }
@@ -173,8 +174,8 @@ TEST(RayCastTest, MeshBoxReadsAsTheBoxPrimitive) {
 TEST(RayCastTest, MeshIsTwoSided) {
   const auto mesh = BuildMeshBox(Vec3::Ones());
   // from the centre the ray meets the inside of the wall: meshes have no inside
-  EXPECT_NEAR(Cast(*mesh, Vec3::Zero(), Vec3::UnitY()), 0.5, kTolerance);
-  EXPECT_NEAR(Cast(*mesh, Vec3(0.1, 0.2, 0.3), -Vec3::UnitZ()), 0.8, kTolerance);
+  EXPECT_NEAR(Cast(*mesh, Vec3::Zero(), Vec3::UnitY()), 0.5, kRayTolerance);
+  EXPECT_NEAR(Cast(*mesh, Vec3(0.1, 0.2, 0.3), -Vec3::UnitZ()), 0.8, kRayTolerance);
   EXPECT_EQ(Cast(*mesh, Vec3(2, 0, 0), Vec3::UnitX()), kInf) << "behind";
 }
 
@@ -182,14 +183,14 @@ TEST(RayCastTest, RotatedAndTranslatedPose) {
   const auto box = Build(Primitive::Box(Vec3(2, 1, 1)));
   // the long axis turned onto y, the centre moved to (10, 0, 0)
   const Pose X_W = Placed(Vec3(10, 0, 0), Eigen::AngleAxisd(core::kPi / 2, Vec3::UnitZ()));
-  EXPECT_NEAR(RayCast(*box, X_W, Vec3(10, 5, 0), -Vec3::UnitY(), kRange), 4.0, kTolerance);
-  EXPECT_NEAR(RayCast(*box, X_W, Vec3(5, 0, 0), Vec3::UnitX(), kRange), 4.5, kTolerance);
+  EXPECT_NEAR(RayCast(*box, X_W, Vec3(10, 5, 0), -Vec3::UnitY(), kRange), 4.0, kRayTolerance);
+  EXPECT_NEAR(RayCast(*box, X_W, Vec3(5, 0, 0), Vec3::UnitX(), kRange), 4.5, kRayTolerance);
   EXPECT_EQ(RayCast(*box, X_W, Vec3(5, 0, 0.7), Vec3::UnitX(), kRange), kInf);
   const auto capsule = Build(Primitive::Capsule(0.5, 2.0));
   // the axis turned onto x: the cap's tip at x = 10 + 1.5
   const Pose X_W_capsule = Placed(Vec3(10, 0, 0), Eigen::AngleAxisd(core::kPi / 2, Vec3::UnitY()));
   EXPECT_NEAR(RayCast(*capsule, X_W_capsule, Vec3(20, 0, 0), -Vec3::UnitX(), kRange), 8.5,
-              kTolerance);
+              kRayTolerance);
 }
 
 TEST(RayCastTest, GeometryPlacementAndPrimitivePoseAreApplied) {
@@ -203,9 +204,10 @@ TEST(RayCastTest, GeometryPlacementAndPrimitivePoseAreApplied) {
   placement.translation() = Vec3(0, 0, 1);
   const auto cylinder = Build(Primitive::Cylinder(0.5, 2.0, own), placement);
   const Pose X_W = Placed(Vec3(0, 0, 2), Eigen::AngleAxisd(0.0, Vec3::UnitZ()));
-  EXPECT_NEAR(RayCast(*cylinder, X_W, Vec3(0, 5, 3.2), -Vec3::UnitY(), kRange), 4.5, kTolerance);
-  EXPECT_NEAR(RayCast(*cylinder, X_W, Vec3(0, -5, 3.2), Vec3::UnitY(), kRange), 3.5, kTolerance);
-  EXPECT_NEAR(RayCast(*cylinder, X_W, Vec3(0, -0.5, 10), -Vec3::UnitZ(), kRange), 6.5, kTolerance);
+  EXPECT_NEAR(RayCast(*cylinder, X_W, Vec3(0, 5, 3.2), -Vec3::UnitY(), kRange), 4.5, kRayTolerance);
+  EXPECT_NEAR(RayCast(*cylinder, X_W, Vec3(0, -5, 3.2), Vec3::UnitY(), kRange), 3.5, kRayTolerance);
+  EXPECT_NEAR(RayCast(*cylinder, X_W, Vec3(0, -0.5, 10), -Vec3::UnitZ(), kRange), 6.5,
+              kRayTolerance);
 }
 
 TEST(RayCastTest, MaxDistanceCutsOffAHit) {
@@ -213,7 +215,7 @@ TEST(RayCastTest, MaxDistanceCutsOffAHit) {
   const auto mesh = BuildMeshBox(Vec3::Ones());
   for (const auto* geometry : {box.get(), mesh.get()}) {
     EXPECT_EQ(Cast(*geometry, Vec3(5, 0, 0), -Vec3::UnitX(), 4.4), kInf);
-    EXPECT_NEAR(Cast(*geometry, Vec3(5, 0, 0), -Vec3::UnitX(), 4.6), 4.5, kTolerance);
+    EXPECT_NEAR(Cast(*geometry, Vec3(5, 0, 0), -Vec3::UnitX(), 4.6), 4.5, kRayTolerance);
     EXPECT_EQ(Cast(*geometry, Vec3(5, 0, 0), -Vec3::UnitX(), -1.0), kInf);
   }
   // the limit itself is in range
@@ -239,7 +241,7 @@ TEST(RayCastTest, IgnoresMarginAndDirectionLength) {
   desc.primitive = Primitive::Sphere(1.0);
   desc.margin = 0.25;
   const auto sphere = CollisionGeometry::Build(desc);
-  EXPECT_NEAR(Cast(*sphere, Vec3(0, 0, 5), Vec3(0, 0, -3)), 4.0, kTolerance);
+  EXPECT_NEAR(Cast(*sphere, Vec3(0, 0, 5), Vec3(0, 0, -3)), 4.0, kRayTolerance);
   EXPECT_EQ(Cast(*sphere, Vec3(0, 0, 5), Vec3::Zero()), kInf);
 }
 

@@ -62,13 +62,7 @@ void ExpectCubeCorners(const std::vector<Vec3>& vertices, double low, double hig
   }
 }
 
-double SignedVolume(const TriangleMesh& mesh) {
-  double volume = 0.0;
-  for (const Eigen::Vector3i& t : mesh.triangles) {
-    volume += mesh.vertices[t[0]].dot(mesh.vertices[t[1]].cross(mesh.vertices[t[2]])) / 6.0;
-  }
-  return volume;
-}
+using test::SignedVolume;
 
 int WarningCount(const Diagnostics& diagnostics) {
   return static_cast<int>(diagnostics.Messages(Severity::kWarning).size());

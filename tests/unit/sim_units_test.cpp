@@ -15,7 +15,7 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kTight = 1e-12;
+constexpr double kUnitsTight = 1e-12;
 
 // an ODE world with a static id 0 and a free unit-mass body at id 1
 class OdeUnitTest : public ::testing::Test {
@@ -50,13 +50,13 @@ TEST_F(OdeUnitTest, TheBodyTablePlacesTheRecordFrameAroundTheCentreOfMass) {
   pose.translation() = Vec3(1, 2, 3);
   bodies_.SetPose(box, pose);
   EXPECT_NEAR((bodies_.GetPose(box).matrix() - pose.matrix()).norm(), 0.0, 1e-12);
-  EXPECT_NEAR((ToVec3(dBodyGetPosition(box.body)) - pose * box.com).norm(), 0.0, kTight);
+  EXPECT_NEAR((ToVec3(dBodyGetPosition(box.body)) - pose * box.com).norm(), 0.0, kUnitsTight);
   // the frame origin's velocity: v_com - ω × (com - origin)
   const Twist twist{Vec3(0.5, 0, 0), Vec3(0, 0, 2.0)};
   bodies_.SetVelocity(box, twist);
   const Twist back = bodies_.GetVelocity(box);
-  EXPECT_NEAR((back.linear - twist.linear).norm(), 0.0, kTight);
-  EXPECT_NEAR((back.angular - twist.angular).norm(), 0.0, kTight);
+  EXPECT_NEAR((back.linear - twist.linear).norm(), 0.0, kUnitsTight);
+  EXPECT_NEAR((back.angular - twist.angular).norm(), 0.0, kUnitsTight);
   // the static record stays where it was built
   bodies_[0].fixed_pose.translation() = Vec3(0, 0, -1);
   EXPECT_EQ(bodies_.GetPose(bodies_[0]).translation(), Vec3(0, 0, -1));
@@ -69,9 +69,9 @@ TEST_F(OdeUnitTest, AHeldForceAtAPointAddsItsMomentEveryStepAndOneCallForcesEnd)
   box.held = HeldWrench{Vec3(0, 2, 0), Vec3(0, 0, 0.5), Vec3(0.05, 0, 0), true, true};
   box.force = Vec3(1, 0, 0);
   bodies_.ApplyForces();
-  EXPECT_NEAR((ToVec3(dBodyGetForce(box.body)) - Vec3(1, 2, 0)).norm(), 0.0, kTight);
+  EXPECT_NEAR((ToVec3(dBodyGetForce(box.body)) - Vec3(1, 2, 0)).norm(), 0.0, kUnitsTight);
   // 0.5 N·m plus (0.05, 0, 0) × (0, 2, 0) = 0.1 N·m about z
-  EXPECT_NEAR((ToVec3(dBodyGetTorque(box.body)) - Vec3(0, 0, 0.6)).norm(), 0.0, kTight);
+  EXPECT_NEAR((ToVec3(dBodyGetTorque(box.body)) - Vec3(0, 0, 0.6)).norm(), 0.0, kUnitsTight);
   bodies_.ClearCallForces();
   EXPECT_EQ(box.force, Vec3::Zero());
   EXPECT_TRUE(box.held.active);
@@ -106,7 +106,7 @@ TEST_F(OdeUnitTest, AnchorsAreKeptWhileAPairSticksAndRenewedWhenItSlides) {
   dBodySetPosition(bodies_[1].body, 1.1e-3, 0, 0.05);
   anchors.Update(&pairs, candidates, bodies_, h, gain, slip);
   EXPECT_EQ(anchors.velocities()[0], Vec3::Zero());
-  EXPECT_NEAR(anchors.anchors()[0].position.x(), 1.1e-3, kTight);
+  EXPECT_NEAR(anchors.anchors()[0].position.x(), 1.1e-3, kUnitsTight);
   // no contact this step but still a candidate: kept; out of the broad phase: dropped
   std::vector<ContactPair> none;
   anchors.Update(&none, candidates, bodies_, h, gain, slip);

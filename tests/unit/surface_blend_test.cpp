@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/common/test_support.h"
+
 namespace lamina::core {
 namespace {
 
@@ -216,49 +218,50 @@ RowStep StepContactRow(const SoftContactParams& params, double mass, double step
 // with x⁺ = x - h v⁺ the depth after the step: the spring-damper force evaluated at the end of
 // the step (implicit Euler). Held at depth x with zero velocity, λ = k x, so a mass m resting on
 // the contact settles where k x = m g.
-constexpr double kMass = 2.0;       // kg
-constexpr double kGravity = 9.8;    // m/s²
-constexpr double kStiffness = 1e4;  // N/m
-constexpr double kDamping = 100;    // N·s/m
-constexpr double kStep = 1e-3;      // s
+constexpr double kBlendMass = 2.0;  // kg
+using test::kGravity;
+constexpr double kStiffness = 1e4;   // N/m
+constexpr double kDamping = 100;     // N·s/m
+constexpr double kBlendStep = 1e-3;  // s
 // A handful of roundings on quantities of order 1-100: relative 1e-12 leaves a wide margin.
-constexpr double kRelative = 1e-12;
+constexpr double kBlendRelative = 1e-12;
 
 TEST(SurfaceBlendTest, HeldContactPushesWithSpringForce) {
-  const SoftContactParams params = SoftContact(kStiffness, kDamping, kStep);
-  const double weight = kMass * kGravity;
+  const SoftContactParams params = SoftContact(kStiffness, kDamping, kBlendStep);
+  const double weight = kBlendMass * kGravity;
   const double rest_depth = weight / kStiffness;  // 1.96 mm
-  const RowStep held = StepContactRow(params, kMass, kStep, rest_depth, 0.0, -weight);
-  EXPECT_NEAR(held.force, kStiffness * rest_depth, weight * kRelative);
+  const RowStep held = StepContactRow(params, kBlendMass, kBlendStep, rest_depth, 0.0, -weight);
+  EXPECT_NEAR(held.force, kStiffness * rest_depth, weight * kBlendRelative);
   EXPECT_NEAR(held.velocity, 0.0, 1e-15);  // stays at rest: the weight is exactly balanced
 }
 
 TEST(SurfaceBlendTest, MovingContactIsTheImplicitSpringDamper) {
-  const SoftContactParams params = SoftContact(kStiffness, kDamping, kStep);
+  const SoftContactParams params = SoftContact(kStiffness, kDamping, kBlendStep);
   for (const double velocity : {-0.2, -0.01, 0.05}) {
     SCOPED_TRACE(velocity);
     const double depth = 3e-3;
-    const RowStep step = StepContactRow(params, kMass, kStep, depth, velocity, -kMass * kGravity);
+    const RowStep step =
+        StepContactRow(params, kBlendMass, kBlendStep, depth, velocity, -kBlendMass * kGravity);
     ASSERT_GT(step.force, 0.0);
-    const double next_depth = depth - kStep * step.velocity;
+    const double next_depth = depth - kBlendStep * step.velocity;
     EXPECT_NEAR(step.force, kStiffness * next_depth - kDamping * step.velocity,
-                step.force * kRelative);
+                step.force * kBlendRelative);
   }
 }
 
 // Dropped onto the contact from rest at zero depth, the mass settles at m g / k. Damping ratio
 // c / (2 sqrt(k m)) = 0.35, decay rate c / (2 m) = 25 /s: after 2 s the transient is ~e^-50.
 TEST(SurfaceBlendTest, RestingMassSettlesAtWeightOverStiffness) {
-  const SoftContactParams params = SoftContact(kStiffness, kDamping, kStep);
-  const double weight = kMass * kGravity;
+  const SoftContactParams params = SoftContact(kStiffness, kDamping, kBlendStep);
+  const double weight = kBlendMass * kGravity;
   double depth = 0.0;
   double velocity = 0.0;
   double force = 0.0;
   for (int i = 0; i < 2000; ++i) {
-    const RowStep step = StepContactRow(params, kMass, kStep, depth, velocity, -weight);
+    const RowStep step = StepContactRow(params, kBlendMass, kBlendStep, depth, velocity, -weight);
     velocity = step.velocity;
     force = step.force;
-    depth -= kStep * velocity;
+    depth -= kBlendStep * velocity;
   }
   EXPECT_NEAR(depth, weight / kStiffness, weight / kStiffness * 1e-9);
   EXPECT_NEAR(force, weight, weight * 1e-9);

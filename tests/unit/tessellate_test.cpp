@@ -13,13 +13,7 @@
 namespace lamina::core {
 namespace {
 
-double SignedVolume(const TriangleMesh& mesh) {
-  double volume = 0.0;
-  for (const Eigen::Vector3i& t : mesh.triangles) {
-    volume += mesh.vertices[t[0]].dot(mesh.vertices[t[1]].cross(mesh.vertices[t[2]])) / 6.0;
-  }
-  return volume;
-}
+using test::SignedVolume;
 
 // For a convex shape around `centre`, every non-degenerate triangle's normal points away.
 int InwardFacingTriangles(const TriangleMesh& mesh, const Vec3& centre) {

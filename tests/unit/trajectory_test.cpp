@@ -19,12 +19,7 @@ namespace {
 using test::DataPath;
 using test::WorldsPath;
 
-VecX Vec(std::initializer_list<double> values) {
-  VecX v(static_cast<Eigen::Index>(values.size()));
-  Eigen::Index i = 0;
-  for (double x : values) v[i++] = x;
-  return v;
-}
+using test::Vec;
 
 void ExpectNear(const VecX& actual, const VecX& expected, double tolerance) {
   ASSERT_EQ(actual.size(), expected.size());
