@@ -4,11 +4,19 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lamina::core {
 
 enum class Severity { kNote, kWarning, kError };
+
+/// Stores `message` in `*error` unless `error` is null, and returns false: the failure path of
+/// the functions that report through an optional error string.
+inline bool FailWith(std::string* error, std::string message) {
+  if (error) *error = std::move(message);
+  return false;
+}
 
 /// Where a piece of input came from. line/column are 1-based; 0 means unknown.
 struct SourceLocation {

@@ -23,6 +23,7 @@ using Affine = Eigen::Affine3d;
 
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kTwoPi = 2.0 * kPi;
 
 /// R = Rz(yaw) * Ry(pitch) * Rx(roll), the Klamp't `rotateRPY` convention.
 Mat3 RotationFromRollPitchYaw(double roll, double pitch, double yaw);
@@ -32,6 +33,10 @@ Mat3 RotationFromMoment(const Vec3& moment);
 Vec3 MomentFromRotation(const Mat3& rotation);
 /// Roll, pitch, yaw such that RotationFromRollPitchYaw reproduces `rotation`.
 Vec3 RollPitchYawFromRotation(const Mat3& rotation);
+/// True when the three scale factors are exactly equal (a scale that keeps shapes).
+inline bool IsUniformScale(const Vec3& scale) {
+  return scale.x() == scale.y() && scale.y() == scale.z();
+}
 /// True when `m` is orthonormal with determinant +1 within `tolerance`.
 bool IsRotation(const Mat3& m, double tolerance = 1e-6);
 

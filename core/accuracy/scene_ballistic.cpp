@@ -46,12 +46,12 @@ class BallisticProbe : public AccuracyProbe {
   double position_error_ = 0.0, momentum_drift_ = 0.0, energy_drift_ = 0.0;
 };
 
-constexpr double kDuration = 3.0;
+constexpr double kBallisticDuration = 3.0;
 
 BarCheck HalfGhT(const std::vector<const AccuracyRun*>& runs) {
   BarCheck check;
   if (!RunsUsable(runs, &check)) return check;
-  const double bound = 0.5 * 9.8 * runs[0]->step * kDuration * 1.01;
+  const double bound = 0.5 * 9.8 * runs[0]->step * kBallisticDuration * 1.01;
   const double error = runs[0]->result.error;
   return {error <= bound, Measured(error, "m") + " (bound " + Measured(bound, "m") + ")"};
 }
@@ -83,7 +83,7 @@ AccuracyScene BallisticBoxScene() {
   scene.metric = "largest distance of the centre of mass from the parabola";
   scene.unit = "m";
   scene.answer = "p₀ + v₀t + ½gt²; angular momentum and energy constant";
-  scene.duration = kDuration;
+  scene.duration = kBallisticDuration;
   scene.min_step = 1e-5;
   scene.probe = [](const WorldDesc&) { return std::make_unique<BallisticProbe>(); };
   scene.bars = {

@@ -27,7 +27,7 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kDuration = 5.0;  // s
+constexpr double kStackDuration = 5.0;  // s
 
 class BoxStackProbe : public AccuracyProbe {
  public:
@@ -74,7 +74,7 @@ AccuracyScene BoxStackScene() {
   scene.metric = "displacement of the top box at the end";
   scene.unit = "m";
   scene.answer = "0: the stack stands still";
-  scene.duration = kDuration;
+  scene.duration = kStackDuration;
   scene.min_step = 4e-4;
   scene.probe = [](const WorldDesc& world) { return std::make_unique<BoxStackProbe>(world); };
   scene.bars = {

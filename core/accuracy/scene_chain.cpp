@@ -32,7 +32,7 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kDuration = 3.5;  // s
+constexpr double kChainDuration = 3.5;  // s
 
 // One hinge's anchor on each body: object index (-1: the world) and the point in its frame.
 struct Anchor {
@@ -68,7 +68,7 @@ double EnergyScale(const WorldDesc& world, double link) {
   return mass * world.settings.gravity.norm() * 0.5 * length;
 }
 
-double Energy(const Simulator& simulator) {
+double ChainEnergy(const Simulator& simulator) {
   return simulator.KineticEnergy() + simulator.PotentialEnergy();
 }
 
@@ -78,19 +78,19 @@ class ChainProbe : public AccuracyProbe {
       : anchors_(ReadAnchors(world)),
         link_((world.joints.at(1).point - world.joints.at(0).point).norm()),
         energy_scale_(EnergyScale(world, link_)) {}
-  void Begin(const Simulator& simulator) override { e0_ = Energy(simulator); }
+  void Begin(const Simulator& simulator) override { e0_ = ChainEnergy(simulator); }
   void Observe(const StepEvent& event) override {
     for (const auto& [a, b] : anchors_) {
       const double gap = (AnchorPoint(event.simulator, a) - AnchorPoint(event.simulator, b)).norm();
       gap_ = std::max(gap_, gap);
     }
-    growth_ = std::max(growth_, Energy(event.simulator) - e0_);
+    growth_ = std::max(growth_, ChainEnergy(event.simulator) - e0_);
   }
   ProbeResult Finish(const Simulator& simulator) override {
     ProbeResult result{gap_ / link_, {}, ""};
     result.metrics = {{"largest gap m", gap_},
                       {"energy growth", growth_ / energy_scale_},
-                      {"energy drift", (Energy(simulator) - e0_) / energy_scale_}};
+                      {"energy drift", (ChainEnergy(simulator) - e0_) / energy_scale_}};
     return result;
   }
 
@@ -100,7 +100,7 @@ class ChainProbe : public AccuracyProbe {
   double e0_ = 0.0, gap_ = 0.0, growth_ = 0.0;
 };
 
-BarCheck SecondOrder(const std::vector<const AccuracyRun*>& runs) {
+BarCheck ChainSecondOrder(const std::vector<const AccuracyRun*>& runs) {
   BarCheck check;
   if (!RunsUsable(runs, &check)) return check;
   const double order = OrderBetween(runs[0], runs[1]);
@@ -120,7 +120,7 @@ AccuracyScene ChainScene() {
   scene.metric = "largest hinge gap relative to the link length";
   scene.unit = "";
   scene.answer = "0: every hinge keeps its anchors together; E = E₀";
-  scene.duration = kDuration;
+  scene.duration = kChainDuration;
   scene.min_step = 4e-4;
   scene.probe = [](const WorldDesc& world) { return std::make_unique<ChainProbe>(world); };
   scene.bars = {
@@ -130,7 +130,7 @@ AccuracyScene ChainScene() {
          return AtMost(runs, {"", "of ℓ"}, 1e-4);
        },
        true},
-      {"gap second order in h: slope 2 ± 0.2 from 1 to 4 ms", {4e-3, 1e-3}, SecondOrder},
+      {"gap second order in h: slope 2 ± 0.2 from 1 to 4 ms", {4e-3, 1e-3}, ChainSecondOrder},
       {"no blow-up: no corrections or non-finite states at 1 ms and 10 ms", {1e-3, 1e-2}, Stable},
   };
   return scene;

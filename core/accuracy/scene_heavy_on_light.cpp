@@ -28,7 +28,7 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kDuration = 2.0;  // s
+constexpr double kHeavyOnLightDuration = 2.0;  // s
 
 // Index of the heaviest object (the heavy box); the others are light boxes.
 int Heaviest(const WorldDesc& world) {
@@ -114,7 +114,7 @@ AccuracyScene HeavyOnLightScene(int ratio) {
   scene.metric = "deepest boundary-layer overlap (the penetration)";
   scene.unit = "m";
   scene.answer = "0: nothing moves";
-  scene.duration = kDuration;
+  scene.duration = kHeavyOnLightDuration;
   scene.min_step = 4e-5;
   scene.probe = [](const WorldDesc& world) { return std::make_unique<HeavyOnLightProbe>(world); };
   scene.bars = {

@@ -43,7 +43,7 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kDuration = 0.05;  // s
+constexpr double kHighSpeedDuration = 0.05;  // s
 
 struct Shot {
   Vec3 direction = Vec3::UnitX();  // of launch
@@ -166,7 +166,7 @@ AccuracyScene HighSpeedScene(bool rods) {
   scene.unit = "m";
   scene.answer =
       rods ? "no pass-through: every rod bounces back" : "no pass-through: both balls bounce back";
-  scene.duration = kDuration;
+  scene.duration = kHighSpeedDuration;
   scene.min_step = 1e-5;
   scene.probe = [](const WorldDesc& world) { return std::make_unique<HighSpeedProbe>(world); };
   const std::string body = rods ? "rod" : "ball";

@@ -33,9 +33,9 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kDuration = 1.3;    // s
-constexpr double kSettle = 0.3;      // s before the measurement starts
-constexpr double kStuckMove = 1e-4;  // m: a block that moved less after settling sticks
+constexpr double kInclineDuration = 1.3;  // s
+constexpr double kInclineSettle = 0.3;    // s before the measurement starts
+constexpr double kStuckMove = 1e-4;       // m: a block that moved less after settling sticks
 
 struct InclineBlock {
   std::string name;
@@ -79,7 +79,7 @@ class InclineProbe : public AccuracyProbe {
       : slope_(ReadSlope(world)), blocks_(ReadBlocks(world, slope_)) {}
   void Begin(const Simulator&) override {}
   void Observe(const StepEvent& event) override {
-    if (settled_at_ >= 0.0 || event.time < kSettle - 1e-12) return;
+    if (settled_at_ >= 0.0 || event.time < kInclineSettle - 1e-12) return;
     settled_at_ = event.time;
     for (std::size_t i = 0; i < blocks_.size(); ++i) {
       blocks_[i].settled_position = ObjectCom(event.simulator, static_cast<int>(i));
@@ -141,7 +141,7 @@ AccuracyScene InclineScene() {
   scene.metric = "largest relative error of the sliding blocks' acceleration";
   scene.unit = "";
   scene.answer = "stick if tan θ ≤ μ, else a = g·(sin θ − μ·cos θ)";
-  scene.duration = kDuration;
+  scene.duration = kInclineDuration;
   scene.min_step = 4e-5;
   scene.probe = [](const WorldDesc& world) { return std::make_unique<InclineProbe>(world); };
   scene.bars = {

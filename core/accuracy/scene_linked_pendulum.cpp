@@ -39,7 +39,7 @@ namespace {
 
 constexpr double kReferenceStep = 1e-4;  // s: RK4's error at it is below 1e-9 m here (tested)
 
-double Energy(const Simulator& simulator) {
+double LinkedEnergy(const Simulator& simulator) {
   return simulator.KineticEnergy() + simulator.PotentialEnergy();
 }
 
@@ -64,7 +64,7 @@ class LinkedPendulumProbe : public AccuracyProbe {
         std::make_unique<PlanarChainTrajectory>(read.chain, read.start, duration, kReferenceStep);
     read_ = std::move(read);
   }
-  void Begin(const Simulator& simulator) override { e0_ = Energy(simulator); }
+  void Begin(const Simulator& simulator) override { e0_ = LinkedEnergy(simulator); }
   void Observe(const StepEvent& event) override {
     if (!reference_) return;
     const std::vector<Vec3> expected = read_.Centres(reference_->State(event.time).angle);
@@ -72,13 +72,13 @@ class LinkedPendulumProbe : public AccuracyProbe {
       const double d = (ObjectCom(event.simulator, static_cast<int>(k)) - expected[k]).norm();
       error_ = std::max(error_, d);
     }
-    departure_ = std::max(departure_, std::abs(Energy(event.simulator) - e0_));
+    departure_ = std::max(departure_, std::abs(LinkedEnergy(event.simulator) - e0_));
   }
   ProbeResult Finish(const Simulator& simulator) override {
     if (!reference_) return {kInf, {}, "not a planar chain: " + problem_};
     ProbeResult result{error_, {}, ""};
     result.metrics = {{"energy departure", departure_ / scale_},
-                      {"energy drift", (Energy(simulator) - e0_) / scale_}};
+                      {"energy drift", (LinkedEnergy(simulator) - e0_) / scale_}};
     return result;
   }
 

@@ -36,8 +36,8 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kDuration = 1.5;  // s
-constexpr double kSettle = 0.5;    // s before the measurement starts
+constexpr double kJitterDuration = 1.5;  // s
+constexpr double kJitterSettle = 0.5;    // s before the measurement starts
 
 class MeshJitterProbe : public AccuracyProbe {
  public:
@@ -51,7 +51,7 @@ class MeshJitterProbe : public AccuracyProbe {
   }
 
  private:
-  RestingWatch watch_{kSettle};
+  RestingWatch watch_{kJitterSettle};
 };
 
 }  // namespace
@@ -73,7 +73,7 @@ AccuracyScene MeshJitterScene(const std::string& variant) {
   scene.metric = "RMS speed of the centre of mass after 0.5 s";
   scene.unit = "m/s";
   scene.answer = "0: at rest";
-  scene.duration = kDuration;
+  scene.duration = kJitterDuration;
   scene.min_step = 1e-5;
   scene.probe = [](const WorldDesc&) { return std::make_unique<MeshJitterProbe>(); };
   if (variant == "pad0") {
@@ -109,7 +109,7 @@ AccuracyScene ScannedTrayScene() {
   scene.metric = "RMS speed of the centre of mass after 0.5 s";
   scene.unit = "m/s";
   scene.answer = "0: at rest on its lowest bumps";
-  scene.duration = kDuration;
+  scene.duration = kJitterDuration;
   scene.min_step = 1e-5;
   scene.probe = [](const WorldDesc&) { return std::make_unique<MeshJitterProbe>(); };
   scene.bars = MeshJitterScene("").bars;

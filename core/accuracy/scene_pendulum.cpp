@@ -43,7 +43,7 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kDuration = 10.0;  // s
+constexpr double kPendulumDuration = 10.0;  // s
 
 // The pendulum as the world describes it (the first joint, a hinge, holding object 0).
 struct Pendulum {
@@ -83,7 +83,7 @@ Pendulum ReadPendulum(const WorldDesc& world) {
   return p;
 }
 
-double Energy(const Simulator& simulator) {
+double PendulumEnergy(const Simulator& simulator) {
   return simulator.KineticEnergy() + simulator.PotentialEnergy();
 }
 
@@ -106,7 +106,7 @@ class PendulumProbe : public AccuracyProbe {
  public:
   explicit PendulumProbe(const WorldDesc& world) : pendulum_(ReadPendulum(world)) {}
   void Begin(const Simulator& simulator) override {
-    e0_ = Energy(simulator);
+    e0_ = PendulumEnergy(simulator);
     angle_ = pendulum_.Angle(ObjectCom(simulator, 0));
   }
   void Observe(const StepEvent& event) override {
@@ -115,7 +115,7 @@ class PendulumProbe : public AccuracyProbe {
       crossings_.push_back(event.time - event.h * angle / (angle - angle_));
     }
     angle_ = angle;
-    const EnergySample sample{event.time, event.h, Energy(event.simulator) - e0_};
+    const EnergySample sample{event.time, event.h, PendulumEnergy(event.simulator) - e0_};
     samples_.push_back(sample);
     oscillation_ = std::max(oscillation_, std::abs(sample.delta));
   }
@@ -159,7 +159,7 @@ BarCheck PeriodWithin(const std::vector<const AccuracyRun*>& runs) {
   return AtMost(runs, {"relative", "of T"}, wh * wh / 24.0);
 }
 
-BarCheck SecondOrder(const std::vector<const AccuracyRun*>& runs) {
+BarCheck PendulumSecondOrder(const std::vector<const AccuracyRun*>& runs) {
   BarCheck check;
   if (!RunsUsable(runs, &check)) return check;
   const double order = OrderBetween(runs[0], runs[1]);
@@ -194,12 +194,14 @@ AccuracyScene PendulumScene() {
   scene.metric = "error of the mean period (zero crossings of the angle)";
   scene.unit = "s";
   scene.answer = "T = 4·√(I/(m·g·d))·K(sin(θ₀/2)) = 1.7588 s; E = E₀";
-  scene.duration = kDuration;
+  scene.duration = kPendulumDuration;
   scene.min_step = 1e-5;
   scene.probe = [](const WorldDesc& world) { return std::make_unique<PendulumProbe>(world); };
   scene.bars = {
       {"period error ≤ (ω₀h)²/24 of T at 1 ms", {1e-3}, PeriodWithin, true},
-      {"period error second order: slope 2 ± 0.1 from 0.1 to 1 ms", {1e-3, 1e-4}, SecondOrder},
+      {"period error second order: slope 2 ± 0.1 from 0.1 to 1 ms",
+       {1e-3, 1e-4},
+       PendulumSecondOrder},
       {"energy oscillation ≤ ω₀h/2 of the swing energy at 1 ms", {1e-3}, EnergyOscillation},
       {"no secular drift: mean energy of the last period within 1 % of ω₀h/2 of the first's at "
        "1 ms",

@@ -35,7 +35,7 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kDuration = 2.5;  // s
+constexpr double kSlideToRollDuration = 2.5;  // s
 
 // The ball's rolling answer from the world: lane normal +z, the ball object 0 on terrain 0.
 struct RollAnswer {
@@ -124,7 +124,7 @@ AccuracyScene SlideToRollScene(bool spin) {
   scene.unit = "";
   scene.answer = spin ? "t_roll = |s₀|/(3.5μg) = 2.052 s, v = (5.714, −0.775, 0) m/s"
                       : "t_roll = 2v₀/(7μg) = 1.944 s, v = 5/7·v₀ = 5.714 m/s";
-  scene.duration = kDuration;
+  scene.duration = kSlideToRollDuration;
   scene.min_step = 1e-5;
   scene.probe = [](const WorldDesc& world) { return std::make_unique<SlideToRollProbe>(world); };
   scene.bars = {

@@ -17,9 +17,9 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kDuration = 0.8;
+constexpr double kSlidingDuration = 0.8;
 constexpr double kStoppedSpeed = 1e-4;  // m/s: slower than this counts as stopped
-constexpr double kSettle = 0.1;         // s after the stop before creep is measured
+constexpr double kSlidingSettle = 0.1;  // s after the stop before creep is measured
 
 class SlidingProbe : public AccuracyProbe {
  public:
@@ -37,7 +37,7 @@ class SlidingProbe : public AccuracyProbe {
   void Observe(const StepEvent& event) override {
     const double speed = ObjectComVelocity(event.simulator, 0).norm();
     if (stopped_at_ < 0.0 && speed < kStoppedSpeed) stopped_at_ = event.time;
-    if (settled_at_ < 0.0 && stopped_at_ >= 0.0 && event.time >= stopped_at_ + kSettle) {
+    if (settled_at_ < 0.0 && stopped_at_ >= 0.0 && event.time >= stopped_at_ + kSlidingSettle) {
       settled_at_ = event.time;
       settled_ = ObjectCom(event.simulator, 0);
     }
@@ -112,7 +112,7 @@ AccuracyScene SlidingBlockScene(double degrees) {
   scene.metric = "stop distance error along the launch direction";
   scene.unit = "m";
   scene.answer = "d = v₀²/(2μg) = 0.408 m at t = v₀/(μg) = 0.408 s, on the launch line";
-  scene.duration = kDuration;
+  scene.duration = kSlidingDuration;
   scene.min_step = 1e-5;
   scene.probe = [](const WorldDesc& world) { return std::make_unique<SlidingProbe>(world); };
   scene.bars = {

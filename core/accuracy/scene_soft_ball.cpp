@@ -33,8 +33,8 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kDuration = 2.0;  // s
-constexpr double kSettle = 1.0;    // s before the resting measurement starts
+constexpr double kSoftBallDuration = 2.0;  // s
+constexpr double kSoftBallSettle = 1.0;    // s before the resting measurement starts
 
 // m·g/k of object 0 on terrain 0, m.
 double ExpectedOverlap(const WorldDesc& world) {
@@ -60,7 +60,7 @@ class SoftBallProbe : public AccuracyProbe {
 
  private:
   double expected_;
-  RestingWatch watch_{kSettle};
+  RestingWatch watch_{kSoftBallSettle};
 };
 
 }  // namespace
@@ -78,7 +78,7 @@ AccuracyScene SoftBallScene(int max_contacts) {
   scene.metric = "relative error of the resting overlap";
   scene.unit = "";
   scene.answer = "overlap m·g/k = 19.6 mm, at rest";
-  scene.duration = kDuration;
+  scene.duration = kSoftBallDuration;
   scene.min_step = 1e-3;  // dWorldStep with 100 contacts runs at 0.03× real time at 0.1 ms
   scene.probe = [](const WorldDesc& world) { return std::make_unique<SoftBallProbe>(world); };
   scene.bars = {

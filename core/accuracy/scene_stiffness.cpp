@@ -51,7 +51,7 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kDuration = 1.0;  // s
+constexpr double kStiffnessDuration = 1.0;  // s
 
 struct SoftBlock {
   std::string name;
@@ -276,7 +276,7 @@ AccuracyScene StiffnessScene() {
   scene.metric = "largest relative error of the resting overlap against m·g/k";
   scene.unit = "";
   scene.answer = "δ = m·g/k = 0.98 mm, 9.8 µm, 98 nm; no energy growth";
-  scene.duration = kDuration;
+  scene.duration = kStiffnessDuration;
   scene.min_step = 1e-5;
   scene.probe = [](const WorldDesc& world) { return std::make_unique<StiffnessProbe>(world); };
   scene.bars = {

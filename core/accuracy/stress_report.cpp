@@ -9,7 +9,7 @@
 namespace lamina::core {
 namespace {
 
-std::string Num(double value) {
+std::string Num3(double value) {
   char text[40];
   std::snprintf(text, sizeof text, "%.3g", value);
   return text;
@@ -23,38 +23,39 @@ std::string VerdictText(const StressRecord& r) {
 }
 
 std::string MetricText(const StressRecord& r) {
-  return r.unit.empty() ? Num(r.metric) : Num(r.metric) + " " + r.unit;
+  return r.unit.empty() ? Num3(r.metric) : Num3(r.metric) + " " + r.unit;
 }
 
-nlohmann::json JsonNumber(double value) {
+nlohmann::json RecordNumber(double value) {
   return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
 }
 
 nlohmann::json RecordJson(const StressRecord& r) {
   nlohmann::json metrics = nlohmann::json::object();
-  for (const ProbeMetric& m : r.probe.metrics) metrics[m.name] = JsonNumber(m.value);
-  return {{"name", r.name},
-          {"world", r.world},
-          {"solver", r.solver},
-          {"step", r.step},
-          {"duration", r.duration},
-          {"verdict", StressVerdictName(r.verdict)},
-          {"expected", StressVerdictName(r.expected)},
-          {"why", r.why},
-          {"status", r.status},
-          {"steps", r.steps},
-          {"rollbacks", r.rollbacks},
-          {"instability_corrections", r.corrections},
-          {"nonfinite_recoveries", r.nonfinite},
-          {"unreliable_steps", r.unreliable},
-          {"min_step", r.min_step},
-          {"max_penetration", JsonNumber(r.max_penetration)},
-          {"cpu_s", r.cpu_seconds},
-          {"metric", {{"text", r.metric_text}, {"unit", r.unit}, {"value", JsonNumber(r.metric)}}},
-          {"probe",
-           {{"error", JsonNumber(r.probe.error)}, {"note", r.probe.note}, {"metrics", metrics}}},
-          {"lost", r.lost},
-          {"failure", r.failure}};
+  for (const ProbeMetric& m : r.probe.metrics) metrics[m.name] = RecordNumber(m.value);
+  return {
+      {"name", r.name},
+      {"world", r.world},
+      {"solver", r.solver},
+      {"step", r.step},
+      {"duration", r.duration},
+      {"verdict", StressVerdictName(r.verdict)},
+      {"expected", StressVerdictName(r.expected)},
+      {"why", r.why},
+      {"status", r.status},
+      {"steps", r.steps},
+      {"rollbacks", r.rollbacks},
+      {"instability_corrections", r.corrections},
+      {"nonfinite_recoveries", r.nonfinite},
+      {"unreliable_steps", r.unreliable},
+      {"min_step", r.min_step},
+      {"max_penetration", RecordNumber(r.max_penetration)},
+      {"cpu_s", r.cpu_seconds},
+      {"metric", {{"text", r.metric_text}, {"unit", r.unit}, {"value", RecordNumber(r.metric)}}},
+      {"probe",
+       {{"error", RecordNumber(r.probe.error)}, {"note", r.probe.note}, {"metrics", metrics}}},
+      {"lost", r.lost},
+      {"failure", r.failure}};
 }
 
 }  // namespace
@@ -101,8 +102,8 @@ std::string StressMarkdownTable(const std::vector<StressRecord>& records) {
     for (std::size_t i = 0; i < r.lost.size(); ++i) verdict += (i ? ", " : "; lost: ") + r.lost[i];
     md += "| " + r.name + " | " + verdict + " | " + r.status + " | " + std::to_string(r.rollbacks) +
           " | " + std::to_string(r.corrections) + " | " + std::to_string(r.nonfinite) + " | " +
-          Num(r.min_step) + " s | " + Num(r.max_penetration * 1e3) + " mm | " + Num(r.cpu_seconds) +
-          " s | " + r.metric_text + ": " + MetricText(r) + " |\n";
+          Num3(r.min_step) + " s | " + Num3(r.max_penetration * 1e3) + " mm | " +
+          Num3(r.cpu_seconds) + " s | " + r.metric_text + ": " + MetricText(r) + " |\n";
   }
   return md;
 }

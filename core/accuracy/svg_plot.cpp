@@ -39,7 +39,7 @@ struct Frame {
   }
 };
 
-std::string Number(double v) {
+std::string AxisNumber(double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f", v);
   return text;
@@ -68,13 +68,13 @@ std::string TickLabel(double decade) {
 
 std::string Text(double x, double y, const std::string& text, const char* anchor,
                  const std::string& extra = "") {
-  return "<text x=\"" + Number(x) + "\" y=\"" + Number(y) + "\" text-anchor=\"" + anchor + "\"" +
-         extra + ">" + Escape(text) + "</text>\n";
+  return "<text x=\"" + AxisNumber(x) + "\" y=\"" + AxisNumber(y) + "\" text-anchor=\"" + anchor +
+         "\"" + extra + ">" + Escape(text) + "</text>\n";
 }
 
 std::string Line(double x0, double y0, double x1, double y1, const char* style) {
-  return "<line x1=\"" + Number(x0) + "\" y1=\"" + Number(y0) + "\" x2=\"" + Number(x1) +
-         "\" y2=\"" + Number(y1) + "\" " + style + "/>\n";
+  return "<line x1=\"" + AxisNumber(x0) + "\" y1=\"" + AxisNumber(y0) + "\" x2=\"" +
+         AxisNumber(x1) + "\" y2=\"" + AxisNumber(y1) + "\" " + style + "/>\n";
 }
 
 std::string Grid(const Frame& f, const std::vector<double>& xt, const std::vector<double>& yt) {
@@ -92,13 +92,14 @@ std::string Grid(const Frame& f, const std::vector<double>& xt, const std::vecto
 }
 
 std::string Axes(const LogLogPlot& plot, const Frame& f) {
-  std::string svg = "<rect x=\"" + Number(kLeft) + "\" y=\"" + Number(kTop) + "\" width=\"" +
-                    Number(f.width - kLeft - kRight) + "\" height=\"" +
-                    Number(f.height - kTop - kBottom) + "\" fill=\"none\" stroke=\"#444\"/>\n";
+  std::string svg = "<rect x=\"" + AxisNumber(kLeft) + "\" y=\"" + AxisNumber(kTop) +
+                    "\" width=\"" + AxisNumber(f.width - kLeft - kRight) + "\" height=\"" +
+                    AxisNumber(f.height - kTop - kBottom) + "\" fill=\"none\" stroke=\"#444\"/>\n";
   svg += Text(f.width / 2.0, 18, plot.title, "middle", " font-weight=\"bold\"");
   svg += Text((kLeft + f.width - kRight) / 2.0, f.height - 12, plot.x_label, "middle");
   const double cy = (kTop + f.height - kBottom) / 2.0;
-  svg += Text(16, cy, plot.y_label, "middle", " transform=\"rotate(-90 16 " + Number(cy) + ")\"");
+  svg +=
+      Text(16, cy, plot.y_label, "middle", " transform=\"rotate(-90 16 " + AxisNumber(cy) + ")\"");
   return svg;
 }
 
@@ -110,7 +111,7 @@ std::string SeriesSvg(const PlotSeries& s, const Frame& f, const char* colour) {
   std::string points, marks;
   for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
     if (!Plottable(s.x[i], s.y[i])) continue;
-    const std::string px = Number(f.X(s.x[i])), py = Number(f.Y(s.y[i]));
+    const std::string px = AxisNumber(f.X(s.x[i])), py = AxisNumber(f.Y(s.y[i]));
     points += px + "," + py + " ";
     marks += "<circle cx=\"" + px + "\" cy=\"" + py + "\" r=\"3\" fill=\"" + colour + "\"/>\n";
   }

@@ -63,7 +63,7 @@ Json ValueJson(const std::vector<double>& value, bool scalar) {
   return array;
 }
 
-double JsonNumber(const Json& json) {
+double NumberOf(const Json& json) {
   if (json.is_number()) return json.get<double>();
   if (json.is_string()) {
     const std::string text = json.get<std::string>();
@@ -74,10 +74,10 @@ double JsonNumber(const Json& json) {
   throw std::invalid_argument("expected a number, got " + json.dump());
 }
 
-std::vector<double> JsonValue(const Json& json) {
-  if (!json.is_array()) return {JsonNumber(json)};
+std::vector<double> ValuesOf(const Json& json) {
+  if (!json.is_array()) return {NumberOf(json)};
   std::vector<double> value;
-  for (const Json& v : json) value.push_back(JsonNumber(v));
+  for (const Json& v : json) value.push_back(NumberOf(v));
   return value;
 }
 
@@ -111,7 +111,7 @@ std::vector<std::vector<double>> JsonNamedValues(const std::vector<ColumnGroup>&
                                                  const Json& object) {
   std::vector<std::vector<double>> values;
   if (object.empty()) return values;
-  for (const ColumnGroup& g : groups) values.push_back(JsonValue(object.at(g.name)));
+  for (const ColumnGroup& g : groups) values.push_back(ValuesOf(object.at(g.name)));
   return values;
 }
 
@@ -149,16 +149,16 @@ RunResult JsonRun(const BatchTable& table, const Json& json) {
   run.status = json.at("status").get<std::string>();
   if (json.contains("error")) run.error = json["error"].get<std::string>();
   run.stop = json.at("stop").get<std::string>();
-  run.time = JsonNumber(json.at("time"));
-  if (json.contains("wall_clock_time")) run.wall_clock_time = JsonNumber(json["wall_clock_time"]);
-  if (json.contains("build_wall_time")) run.build_wall_time = JsonNumber(json["build_wall_time"]);
+  run.time = NumberOf(json.at("time"));
+  if (json.contains("wall_clock_time")) run.wall_clock_time = NumberOf(json["wall_clock_time"]);
+  if (json.contains("build_wall_time")) run.build_wall_time = NumberOf(json["build_wall_time"]);
   if (json.contains("trace")) {
     const Json& trace = json["trace"];
-    run.trace_time = JsonValue(trace.at("time"));
+    run.trace_time = ValuesOf(trace.at("time"));
     run.trace.resize(run.trace_time.size());
     for (const ColumnGroup& g : table.items) {
       const Json& column = trace.at(g.name);
-      for (size_t s = 0; s < run.trace.size(); ++s) run.trace[s].push_back(JsonValue(column.at(s)));
+      for (size_t s = 0; s < run.trace.size(); ++s) run.trace[s].push_back(ValuesOf(column.at(s)));
     }
   }
   return run;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/math_types.h"
 namespace lamina::core {
 
 std::uint64_t SplitMix64(std::uint64_t x) {
@@ -29,7 +30,6 @@ double RunRandom::Normal(double mean, double std) {
   // 1 - u is in (0, 1]: the logarithm is finite
   const double u1 = 1.0 - Uniform01();
   const double u2 = Uniform01();
-  constexpr double kTwoPi = 6.283185307179586476925286766559;
   return mean + std * std::sqrt(-2.0 * std::log(u1)) * std::cos(kTwoPi * u2);
 }
 
@@ -73,7 +73,7 @@ std::vector<double> Sampler::Draw(RunRandom* random, int index) const {
 
 namespace {
 
-bool AllFinite(const std::vector<double>& values) {
+bool AllFiniteValues(const std::vector<double>& values) {
   for (double v : values) {
     if (!std::isfinite(v)) return false;
   }
@@ -103,7 +103,7 @@ std::optional<std::string> Sampler::Check(int runs) const {
   if (a.empty()) return "needs a value";
   if (kind == Kind::kFixed) return std::nullopt;
   if (a.size() != b.size()) return "needs as many components in both bounds";
-  if (!AllFinite(a) || !AllFinite(b)) return "needs finite numbers";
+  if (!AllFiniteValues(a) || !AllFiniteValues(b)) return "needs finite numbers";
   for (size_t k = 0; k < a.size(); ++k) {
     if (kind == Kind::kUniform && a[k] > b[k]) return "needs lo <= hi";
     if (kind == Kind::kNormal && b[k] < 0) return "needs std >= 0";

@@ -234,7 +234,7 @@ Primitive PlacedPlane(const Affine& F) {
 
 // The primitive mapped by F (primitive frame -> body frame) if it stays the same kind of shape:
 // F's columns must be orthogonal, with equal lengths where the shape needs it.
-std::optional<Primitive> PlacedPrimitive(const Primitive& primitive, const Affine& F) {
+std::optional<Primitive> PrimitiveUnder(const Primitive& primitive, const Affine& F) {
   if (primitive.type == PrimitiveType::kPlane) return PlacedPlane(F);
   const Mat3 L = F.linear();
   const Vec3 s = L.colwise().norm();
@@ -778,7 +778,7 @@ std::shared_ptr<const CollisionGeometry> CollisionGeometry::Build(const Geometry
   }
   if (desc.kind == GeometryKind::kPrimitive) {
     const std::optional<Primitive> placed =
-        PlacedPrimitive(desc.primitive, desc.Matrix() * desc.primitive.pose);
+        PrimitiveUnder(desc.primitive, desc.Matrix() * desc.primitive.pose);
     if (placed) {
       geometry->kind_ = Kind::kPrimitive;
       geometry->primitive_ = *placed;

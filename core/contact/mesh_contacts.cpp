@@ -198,7 +198,7 @@ struct MeshMeshScratch {
   SparseArray<int> hit_face[2];
 };
 
-MeshMeshScratch& Scratch() {
+MeshMeshScratch& MeshMeshScratchSpace() {
   thread_local MeshMeshScratch scratch;
   return scratch;
 }
@@ -544,7 +544,7 @@ void MeshMeshContacts(const CollisionGeometry& a, const Pose& X_Wa, double pad_a
                       NearPairCache* cache) {
   const double tolerance = pad_a + pad_b;
   const Pose X_ab = X_Wa.inverse() * X_Wb;
-  MeshMeshScratch& s = Scratch();
+  MeshMeshScratch& s = MeshMeshScratchSpace();
   s.hits.clear();
   mesh_detail::NearTrianglePairs(a.bvh(), b.bvh(), X_ab, tolerance, &s.hits,
                                  mesh_detail::PairSearch::kAuto, cache);

@@ -82,7 +82,7 @@ struct MeshPrimitiveScratch {
   std::vector<int> vertices;
 };
 
-MeshPrimitiveScratch& Scratch() {
+MeshPrimitiveScratch& MeshPrimitiveScratchSpace() {
   thread_local MeshPrimitiveScratch scratch;
   return scratch;
 }
@@ -336,7 +336,7 @@ void PlaneContacts(const CollisionGeometry& a, const Pose& X_Wa, double pad_a, c
   const double tolerance = pad_a + pad_b;
   const Vec3 n = X_ap.linear().col(2);  // from the plane into the mesh
   const double plane_height = n.dot(X_ap.translation());
-  MeshPrimitiveScratch& s = Scratch();
+  MeshPrimitiveScratch& s = MeshPrimitiveScratchSpace();
   s.triangles.clear();
   TrianglesBelowPlane(a.bvh(), n, plane_height + tolerance, &s.triangles);
   CollectVertices(a, &s);
@@ -358,7 +358,7 @@ void MeshPrimitiveContacts(const CollisionGeometry& a, const Pose& X_Wa, double 
   }
   const double tolerance = pad_a + pad_b;
   const PrimitiveModel model = MakeModel(b.primitive(), X_ap);
-  MeshPrimitiveScratch& s = Scratch();
+  MeshPrimitiveScratch& s = MeshPrimitiveScratchSpace();
   s.triangles.clear();
   TrianglesNearBox(a.bvh(), X_ap, model.half_extents + Vec3::Constant(tolerance), &s.triangles);
   std::sort(s.triangles.begin(), s.triangles.end());

@@ -17,7 +17,7 @@ namespace lamina::core::primitive_detail {
 namespace {
 
 // |e_a x e_b| of unit edge directions below this: parallel edges, covered by the face axes.
-constexpr double kParallelSine = 1e-6;
+constexpr double kParallelEdgeSine = 1e-6;
 // An edge axis must separate the boxes by this much more than the best face axis to be used
 // (m): they tie on face-on-face contact, where the face gives the multi-point contact.
 constexpr double kEdgeAxisPreference = 1e-6;
@@ -31,10 +31,6 @@ constexpr int kMaxPolygonSize = 16;
 // 0.14 mm on a 0.1 m box, far less than the boundary layer blurs it; it merges coincident
 // vertices too.
 constexpr double kRedundantVertexFraction = 1e-3;
-
-double SignOf(double value) {
-  return value < 0.0 ? -1.0 : 1.0;
-}
 
 struct Polygon {
   std::array<Vec3, kMaxPolygonSize> vertices;
@@ -83,7 +79,7 @@ bool FindAxes(const PlacedPrimitive& a, const PlacedPrimitive& b, double toleran
     for (int j = 0; j < 3; ++j) {
       const Vec3 cross = a.Axis(i).cross(b.Axis(j));
       const double sine = cross.norm();
-      if (sine < kParallelSine) continue;
+      if (sine < kParallelEdgeSine) continue;
       const double separation = Separation(a, b, cross / sine);
       if (separation >= tolerance) return false;
       if (separation > axes->edge_separation) {

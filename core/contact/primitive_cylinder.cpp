@@ -19,11 +19,7 @@ constexpr int kRimScanPoints = 32;
 constexpr int kRimContactPoints = 8;
 // Sine of the angle between two cylinder axes below which they count as parallel; the rims then
 // carry the side-by-side contact.
-constexpr double kParallelSine = 1e-6;
-
-double SignOf(double value) {
-  return value < 0.0 ? -1.0 : 1.0;
-}
+constexpr double kParallelAxisSine = 1e-6;
 
 /// The rim contacts of one cap of `cylinder` (side -1 or +1).
 void CapRimContacts(const PlacedPrimitive& cylinder, double side, const PlacedPrimitive& other,
@@ -72,7 +68,7 @@ void SideContact(const PlacedPrimitive& a, const PlacedPrimitive& b, ContactSink
   const Vec3 span_a = a.AxisEnd(1.0) - start_a;
   const Vec3 span_b = b.AxisEnd(1.0) - start_b;
   const Vec3 cross = span_a.cross(span_b);
-  if (!(cross.norm() > kParallelSine * span_a.norm() * span_b.norm())) return;
+  if (!(cross.norm() > kParallelAxisSine * span_a.norm() * span_b.norm())) return;
   // closest points of the two axis lines, as fractions of the axes
   const Vec3 offset = start_a - start_b;
   const double aa = span_a.squaredNorm();

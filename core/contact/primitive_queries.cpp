@@ -9,16 +9,13 @@
 #include <cstddef>
 #include <utility>
 
+#include "core/contact/primitive_pairs.h"
 namespace lamina::core::primitive_detail {
 namespace {
 
 // A point within this distance outside a box or cylinder counts as on its surface when choosing
 // the face it leaves through (m): far above rounding at robot scales, far below any layer.
 constexpr double kOnSurface = 1e-9;
-
-double SignOf(double value) {
-  return value < 0.0 ? -1.0 : 1.0;
-}
 
 /// Ball around the local point `centre` (a sphere, or the nearest point of a capsule axis).
 SurfacePoint QueryBall(const Vec3& centre, double radius, const Vec3& p) {

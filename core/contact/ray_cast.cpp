@@ -16,7 +16,7 @@ namespace {
 // at least one of them despite rounding.
 constexpr double kEdgeSlack = 1e-12;
 // How far the mesh bounds are grown before the cull (m): beyond any rounding of a hit there.
-constexpr double kBoundsSlack = 1e-9;
+constexpr double kRayBoundsSlack = 1e-9;
 
 // A ray in some frame; `direction` is unit.
 struct LocalRay {
@@ -145,8 +145,8 @@ bool CrossesBounds(const Eigen::AlignedBox3d& bounds, const LocalRay& ray, doubl
   if (bounds.isEmpty()) return false;
   Span span{0.0, max_distance};
   for (int i = 0; i < 3; ++i) {
-    span = Intersect(span, Slab(ray.origin[i], ray.direction[i], bounds.min()[i] - kBoundsSlack,
-                                bounds.max()[i] + kBoundsSlack));
+    span = Intersect(span, Slab(ray.origin[i], ray.direction[i], bounds.min()[i] - kRayBoundsSlack,
+                                bounds.max()[i] + kRayBoundsSlack));
   }
   return !span.empty();
 }

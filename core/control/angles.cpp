@@ -9,8 +9,6 @@
 namespace lamina::core {
 namespace {
 
-constexpr double kTwoPi = 2.0 * kPi;
-
 // How far `q` lies outside [q_min, q_max] (0 inside).
 double LimitViolation(double q, double q_min, double q_max) {
   if (q > q_max) return q - q_max;

@@ -4,13 +4,9 @@
 
 #include <cmath>
 
+#include "core/diagnostics.h"
 namespace lamina::core {
 namespace {
-
-bool Fail(std::string* error, const std::string& message) {
-  if (error) *error = message;
-  return false;
-}
 
 bool HasNaN(const VecX& v) {
   return v.array().isNaN().any();
@@ -31,22 +27,22 @@ bool JointLimits::IsValid(int dof, std::string* error) const {
   const std::string expected = std::to_string(dof);
   if (q_min.size() != dof || q_max.size() != dof || velocity_max.size() != dof ||
       acceleration_max.size() != dof) {
-    return Fail(error, "joint limits have sizes q_min " + std::to_string(q_min.size()) +
-                           ", q_max " + std::to_string(q_max.size()) + ", velocity_max " +
-                           std::to_string(velocity_max.size()) + ", acceleration_max " +
-                           std::to_string(acceleration_max.size()) + "; expected " + expected);
+    return FailWith(error, "joint limits have sizes q_min " + std::to_string(q_min.size()) +
+                               ", q_max " + std::to_string(q_max.size()) + ", velocity_max " +
+                               std::to_string(velocity_max.size()) + ", acceleration_max " +
+                               std::to_string(acceleration_max.size()) + "; expected " + expected);
   }
   if (HasNaN(q_min) || HasNaN(q_max) || HasNaN(velocity_max) || HasNaN(acceleration_max)) {
-    return Fail(error, "joint limits contain NaN");
+    return FailWith(error, "joint limits contain NaN");
   }
   for (int i = 0; i < dof; ++i) {
     if (q_min[i] > q_max[i]) {
-      return Fail(error, "joint " + std::to_string(i) + ": q_min " + std::to_string(q_min[i]) +
-                             " > q_max " + std::to_string(q_max[i]));
+      return FailWith(error, "joint " + std::to_string(i) + ": q_min " + std::to_string(q_min[i]) +
+                                 " > q_max " + std::to_string(q_max[i]));
     }
     if (velocity_max[i] < 0 || acceleration_max[i] < 0) {
-      return Fail(error,
-                  "joint " + std::to_string(i) + ": negative velocity or acceleration limit");
+      return FailWith(error,
+                      "joint " + std::to_string(i) + ": negative velocity or acceleration limit");
     }
   }
   return true;

@@ -18,7 +18,7 @@ constexpr double kTrimFraction = 0.1;
 // Appended curves must start within this distance of the end configuration.
 constexpr double kCurveJoinTolerance = 1e-6;
 // A timed command may name an end time this much before the queue's end (rounding), s.
-constexpr double kTimeTolerance = 1e-12;
+constexpr double kQueueTimeTolerance = 1e-12;
 
 }  // namespace
 
@@ -174,7 +174,7 @@ bool MotionQueue::AppendTimedLinear(double t_abs, const VecX& q) {
     return false;
   }
   const double begin = StartOfAppend().time;
-  if (!(t_abs >= begin - kTimeTolerance) || !std::isfinite(t_abs)) {
+  if (!(t_abs >= begin - kQueueTimeTolerance) || !std::isfinite(t_abs)) {
     return Fail("AppendTimedLinear: time " + std::to_string(t_abs) +
                 " s is before the queue's end time " + std::to_string(begin) + " s");
   }
@@ -187,7 +187,7 @@ bool MotionQueue::AppendTimedCubic(double t_abs, const VecX& q, const VecX& v) {
     return false;
   }
   const double begin = StartOfAppend().time;
-  if (!(t_abs >= begin - kTimeTolerance) || !std::isfinite(t_abs)) {
+  if (!(t_abs >= begin - kQueueTimeTolerance) || !std::isfinite(t_abs)) {
     return Fail("AppendTimedCubic: time " + std::to_string(t_abs) +
                 " s is before the queue's end time " + std::to_string(begin) + " s");
   }

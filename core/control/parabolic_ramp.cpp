@@ -6,11 +6,12 @@
 #include <cmath>
 #include <utility>
 
+#include "core/diagnostics.h"
 namespace lamina::core {
 namespace {
 
 // Relative slack on the acceleration and speed bounds (rounding of the closed forms).
-constexpr double kBoundSlack = 1e-10;
+constexpr double kRampBoundSlack = 1e-10;
 // Phase durations this negative (relative to the ramp's time scale) are rounding, set to 0.
 constexpr double kTimeSlack = 1e-12;
 // Position bounds are respected to this absolute tolerance (m or rad).
@@ -19,16 +20,16 @@ constexpr double kPositionSlack = 1e-9;
 constexpr double kTargetRangeMargin = 1e-7;
 constexpr double kTargetSpeedMargin = 2e-7;
 
-double Sign(double x) {
+double RampSign(double x) {
   return x < 0 ? -1.0 : 1.0;
 }
 
 bool WithinSpeed(double v, double velocity_max) {
-  return std::abs(v) <= velocity_max * (1 + kBoundSlack);
+  return std::abs(v) <= velocity_max * (1 + kRampBoundSlack);
 }
 
 bool WithinAcceleration(double a, double acceleration_max) {
-  return std::abs(a) <= acceleration_max * (1 + kBoundSlack);
+  return std::abs(a) <= acceleration_max * (1 + kRampBoundSlack);
 }
 
 bool WithinPositions(const Ramp1D& ramp, const RampBounds& bounds) {
@@ -77,7 +78,7 @@ std::vector<double> QuadraticRoots(double alpha, double beta, double gamma) {
   }
   const double discriminant = beta * beta - 4 * alpha * gamma;
   if (discriminant < 0) return {};
-  const double q = -0.5 * (beta + Sign(beta) * std::sqrt(discriminant));
+  const double q = -0.5 * (beta + RampSign(beta) * std::sqrt(discriminant));
   if (q == 0) return {0.0};
   return {q / alpha, gamma / q};
 }
@@ -159,7 +160,7 @@ std::vector<Ramp1D> MinTimeCandidates(const RampEnds& e, const RampBounds& bound
     if (std::isinf(V)) {
       candidates.push_back(Jump(e));
     } else {
-      const double vc = Sign(D) * V;
+      const double vc = RampSign(D) * V;
       const RampEnds line{e.x0, vc, e.x1, vc};
       candidates.push_back(ThreePhase(line, 0, 0, vc, std::abs(D) / V, 0, 0));
     }
@@ -183,7 +184,7 @@ Ramp1D BangBangForDuration(const RampEnds& e, double T) {
   const double dv = e.v1 - e.v0;
   const double b = 2 * T * (e.v0 + e.v1) - 4 * D;
   const double root = std::sqrt(b * b + 4 * T * T * dv * dv);
-  const double a = -(b + Sign(b) * root) / (2 * T * T);
+  const double a = -(b + RampSign(b) * root) / (2 * T * T);
   if (a == 0) return ThreePhase(e, 0, T, e.v0, 0, 0, 0);
   const double t1 = std::clamp((T + dv / a) / 2, 0.0, T);
   return ThreePhase(e, a, t1, e.v0 + a * t1, 0, -a, T - t1);
@@ -369,7 +370,7 @@ std::optional<Ramp1D> MinAccelerationRamp(const RampEnds& e, const RampBounds& b
       if (auto cruise = CruiseForDuration(e, duration, s * V)) candidates.push_back(*cruise);
     }
   }
-  if (std::isinf(A) && std::isfinite(V) && std::abs(D) <= V * duration * (1 + kBoundSlack)) {
+  if (std::isinf(A) && std::isfinite(V) && std::abs(D) <= V * duration * (1 + kRampBoundSlack)) {
     const double vc = D / duration;  // velocity jumps at both ends
     candidates.push_back(ThreePhase({e.x0, vc, e.x1, vc}, 0, 0, vc, duration, 0, 0));
   }
@@ -449,17 +450,12 @@ bool ParabolicRampND::AppendTo(double start, std::vector<PiecewisePolynomial>* c
 
 namespace {
 
-bool Fail(std::string* error, const std::string& message) {
-  if (error) *error = message;
-  return false;
-}
-
 bool CheckVector(const VecX& v, int dof, const char* name, std::string* error) {
   if (v.size() != dof) {
-    return Fail(error, std::string(name) + " has " + std::to_string(v.size()) +
-                           " entries, expected " + std::to_string(dof));
+    return FailWith(error, std::string(name) + " has " + std::to_string(v.size()) +
+                               " entries, expected " + std::to_string(dof));
   }
-  if (!v.allFinite()) return Fail(error, std::string(name) + " has a NaN or infinite entry");
+  if (!v.allFinite()) return FailWith(error, std::string(name) + " has a NaN or infinite entry");
   return true;
 }
 
@@ -491,7 +487,7 @@ std::optional<ParabolicRampND> SynchronizedRamp(const std::vector<RampEnds>& end
   for (int i = 0; i < dof; ++i) {
     auto ramp = MinTimeRamp(ends[i], bounds[i]);
     if (!ramp) {
-      Fail(error, NoRampMessage(i, ends[i], bounds[i]));
+      FailWith(error, NoRampMessage(i, ends[i], bounds[i]));
       return std::nullopt;
     }
     ramps[i] = *ramp;
@@ -507,8 +503,8 @@ std::optional<ParabolicRampND> SynchronizedRamp(const std::vector<RampEnds>& end
       }
       auto longer = MinTimeRampAtLeast(ends[i], bounds[i], T);
       if (!longer) {
-        Fail(error, NoRampMessage(i, ends[i], bounds[i]) + " lasting at least " +
-                        std::to_string(T) + " s");
+        FailWith(error, NoRampMessage(i, ends[i], bounds[i]) + " lasting at least " +
+                            std::to_string(T) + " s");
         return std::nullopt;
       }
       ramps[i] = *longer;
@@ -517,7 +513,7 @@ std::optional<ParabolicRampND> SynchronizedRamp(const std::vector<RampEnds>& end
     }
     if (!raised) return ParabolicRampND(std::move(ramps));
   }
-  Fail(error, "the joints' ramps could not be synchronized (no common duration found)");
+  FailWith(error, "the joints' ramps could not be synchronized (no common duration found)");
   return std::nullopt;
 }
 
@@ -560,7 +556,8 @@ std::optional<ParabolicRampND> LinearRampND(const VecX& x0, const VecX& x1,
   const bool moves = x0 != x1;
   const auto s = moves ? MinTimeRamp({0, 0, 1, 0}, line_bounds) : Ramp1D{};
   if (!s) {
-    Fail(error, "no straight-line ramp: a moving joint has a zero velocity or acceleration limit");
+    FailWith(error,
+             "no straight-line ramp: a moving joint has a zero velocity or acceleration limit");
     return std::nullopt;
   }
   std::vector<Ramp1D> ramps(dof, *s);

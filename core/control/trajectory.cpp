@@ -7,38 +7,34 @@
 
 #include "core/control/motion_queue.h"
 #include "core/control/parabolic_ramp.h"
+#include "core/diagnostics.h"
 
 namespace lamina::core {
 namespace {
 
-bool Fail(std::string* error, const std::string& message) {
-  if (error) *error = message;
-  return false;
-}
-
 // Same nonzero size and finite entries for every vector; nondecreasing finite times when given.
 bool CheckMilestones(const std::vector<double>* times, const std::vector<VecX>& configs,
                      const std::vector<VecX>* velocities, std::string* error) {
-  if (configs.empty()) return Fail(error, "no milestones");
+  if (configs.empty()) return FailWith(error, "no milestones");
   const Eigen::Index dof = configs.front().size();
   if (times && times->size() != configs.size()) {
-    return Fail(error, std::to_string(times->size()) + " times for " +
-                           std::to_string(configs.size()) + " milestones");
+    return FailWith(error, std::to_string(times->size()) + " times for " +
+                               std::to_string(configs.size()) + " milestones");
   }
   if (velocities && velocities->size() != configs.size()) {
-    return Fail(error, std::to_string(velocities->size()) + " velocities for " +
-                           std::to_string(configs.size()) + " milestones");
+    return FailWith(error, std::to_string(velocities->size()) + " velocities for " +
+                               std::to_string(configs.size()) + " milestones");
   }
   for (std::size_t k = 0; k < configs.size(); ++k) {
     const std::string which = "milestone " + std::to_string(k);
     if (configs[k].size() != dof || (velocities && (*velocities)[k].size() != dof)) {
-      return Fail(error, which + " has a different size than milestone 0");
+      return FailWith(error, which + " has a different size than milestone 0");
     }
     if (!configs[k].allFinite() || (velocities && !(*velocities)[k].allFinite())) {
-      return Fail(error, which + " has a NaN or infinite entry");
+      return FailWith(error, which + " has a NaN or infinite entry");
     }
     if (times && (!std::isfinite((*times)[k]) || (k > 0 && (*times)[k] < (*times)[k - 1]))) {
-      return Fail(error, which + ": times must be finite and nondecreasing");
+      return FailWith(error, which + ": times must be finite and nondecreasing");
     }
   }
   return true;
@@ -101,7 +97,7 @@ std::optional<Trajectory> Trajectory::FromMilestones(const MilestoneSequence& se
     const VecX& target_v = has_velocities ? sequence.velocities[k] : zero;
     const auto ramp = PlanJointRamp(q, v, sequence.configs[k], target_v, limits, &reason);
     if (!ramp) {
-      Fail(error, "milestone " + std::to_string(k) + ": " + reason);
+      FailWith(error, "milestone " + std::to_string(k) + ": " + reason);
       return std::nullopt;
     }
     ramp->AppendTo(curves.front().EndTime(), &curves);

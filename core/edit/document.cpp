@@ -40,7 +40,7 @@ int IndexOfUid(const std::vector<Element>& elements, ElementUid uid) {
   return -1;
 }
 
-std::optional<ElementIndex> Fail(std::string* error, std::string message) {
+std::optional<ElementIndex> FailIndex(std::string* error, std::string message) {
   if (error) *error = std::move(message);
   return std::nullopt;
 }
@@ -137,13 +137,13 @@ std::optional<ElementIndex> ResolveRef(const WorldDesc& world, const ElementRef&
       break;
   }
   if (index < 0) {
-    return Fail(error, std::string(what) + " #" + std::to_string(ref.uid) +
-                           " is not in the world (removed)");
+    return FailIndex(error, std::string(what) + " #" + std::to_string(ref.uid) +
+                                " is not in the world (removed)");
   }
   const ElementIndex element{ref.kind, index, ref.sub};
   const bool has_sub = ref.kind == ElementKind::kLink || ref.kind == ElementKind::kDriver;
   if (const auto problem = has_sub ? CheckElement(world, element) : std::nullopt) {
-    return Fail(error, RefName(ref) + ": " + *problem);
+    return FailIndex(error, RefName(ref) + ": " + *problem);
   }
   return has_sub ? element : ElementIndex{ref.kind, index, -1};
 }

@@ -6,16 +6,13 @@
 #include <cstdint>
 #include <utility>
 
+#include "core/diagnostics.h"
+#include "core/model/params.h"
 #include "core/model/world_compare.h"
 
 namespace lamina::core {
 
 namespace {
-
-bool Refuse(std::string* error, std::string message) {
-  if (error) *error = std::move(message);
-  return false;
-}
 
 // exact equality, NaN equal to the same NaN: what undo must reproduce
 bool SameBits(const double* a, const double* b, size_t count) {
@@ -44,7 +41,7 @@ bool SameTwist(const Twist& a, const Twist& b) {
 
 const ParamSpec* RowOf(int param, std::string* error) {
   if (param >= 0 && param < static_cast<int>(Params().size())) return &Params()[param];
-  Refuse(error, "no parameter row " + std::to_string(param));
+  FailWith(error, "no parameter row " + std::to_string(param));
   return nullptr;
 }
 
@@ -64,9 +61,9 @@ bool ParamEdit::Apply(WorldDocument* document, std::string* error) const {
   const std::optional<ParamValue> current = GetParam(document->desc(), *index, *spec, error);
   if (!current) return false;
   if (!SameValues(*current, before)) {
-    return Refuse(error, ElementPath(*index) + "." + std::string(spec->key) +
-                             ": the edit expects " + FormatParamValue(*spec, before) +
-                             " but the document holds " + FormatParamValue(*spec, *current));
+    return FailWith(error, ElementPath(*index) + "." + std::string(spec->key) +
+                               ": the edit expects " + FormatParamValue(*spec, before) +
+                               " but the document holds " + FormatParamValue(*spec, *current));
   }
   if (!SetParam(&DocumentAccess::desc(document), *index, *spec, after, error)) return false;
   DocumentAccess::Touch(document);
@@ -101,11 +98,11 @@ bool RenameEdit::Apply(WorldDocument* document, std::string* error) const {
   if (!index) return false;
   std::string* name = NameOf(&DocumentAccess::desc(document), *index);
   if (name == nullptr) {
-    return Refuse(error, ElementPath(*index) + ": only terrains, objects and robots have names");
+    return FailWith(error, ElementPath(*index) + ": only terrains, objects and robots have names");
   }
   if (*name != before) {
-    return Refuse(error, ElementPath(*index) + ".name: the edit expects " + Quoted(before) +
-                             " but the document holds " + Quoted(*name));
+    return FailWith(error, ElementPath(*index) + ".name: the edit expects " + Quoted(before) +
+                               " but the document holds " + Quoted(*name));
   }
   *name = after;
   DocumentAccess::Touch(document);
@@ -137,19 +134,20 @@ RemoveObjectEdit AddObjectEdit::Inverse() const {
 
 bool AddObjectEdit::Apply(WorldDocument* document, std::string* error) const {
   const int count = static_cast<int>(document->desc().objects.size());
-  if (object.uid == 0) return Refuse(error, "add object " + Quoted(object.name) + ": no uid");
+  if (object.uid == 0) return FailWith(error, "add object " + Quoted(object.name) + ": no uid");
   if (document->HasUid(object.uid)) {
-    return Refuse(error, "add object " + Quoted(object.name) + ": uid " +
-                             std::to_string(object.uid) + " is already in the world");
+    return FailWith(error, "add object " + Quoted(object.name) + ": uid " +
+                               std::to_string(object.uid) + " is already in the world");
   }
   if (index < 0 || index > count) {
-    return Refuse(error, "add object " + Quoted(object.name) + ": index " + std::to_string(index) +
-                             " is not in [0, " + std::to_string(count) + "]");
+    return FailWith(error, "add object " + Quoted(object.name) + ": index " +
+                               std::to_string(index) + " is not in [0, " + std::to_string(count) +
+                               "]");
   }
   if (auto problem = CheckObjectRows(object)) {
     // "objects[0].mass must be ..." of the lone copy: the row without the copy's index
-    return Refuse(error, "add object " + Quoted(object.name) + ": " +
-                             problem->substr(problem->find('.') + 1));
+    return FailWith(error, "add object " + Quoted(object.name) + ": " +
+                               problem->substr(problem->find('.') + 1));
   }
   WorldDesc& desc = DocumentAccess::desc(document);
   std::vector<int> renumbered(desc.objects.size());
@@ -175,11 +173,11 @@ bool CheckObjectAt(const WorldDocument& document, int index, ElementUid uid, std
   const std::vector<RigidObjectDesc>& objects = document.desc().objects;
   const std::string path = ElementPath(ElementIndex::Object(index));
   if (index < 0 || index >= static_cast<int>(objects.size())) {
-    return Refuse(error, path + ": the world has " + std::to_string(objects.size()) + " objects");
+    return FailWith(error, path + ": the world has " + std::to_string(objects.size()) + " objects");
   }
   if (objects[index].uid != uid) {
-    return Refuse(error, path + " is not object #" + std::to_string(uid) + " (it is #" +
-                             std::to_string(objects[index].uid) + ")");
+    return FailWith(error, path + " is not object #" + std::to_string(uid) + " (it is #" +
+                               std::to_string(objects[index].uid) + ")");
   }
   return true;
 }
@@ -191,14 +189,14 @@ bool RemoveObjectEdit::Apply(WorldDocument* document, std::string* error) const 
   std::vector<RigidObjectDesc>& objects = DocumentAccess::desc(document).objects;
   const std::vector<std::string> differences = CompareObjects(objects[index], object);
   if (!differences.empty()) {
-    return Refuse(error, ElementPath(ElementIndex::Object(index)) +
-                             ": the edit's copy of the object differs from the document's (" +
-                             differences.front() + ")");
+    return FailWith(error, ElementPath(ElementIndex::Object(index)) +
+                               ": the edit's copy of the object differs from the document's (" +
+                               differences.front() + ")");
   }
   WorldDesc& desc = DocumentAccess::desc(document);
   if (const int joint = JointHoldingObject(desc, index); joint >= 0) {
-    return Refuse(error, ElementPath(ElementIndex::Object(index)) + ": world joint " +
-                             std::to_string(joint) + " holds it; remove the joint first");
+    return FailWith(error, ElementPath(ElementIndex::Object(index)) + ": world joint " +
+                               std::to_string(joint) + " holds it; remove the joint first");
   }
   std::vector<int> renumbered(objects.size());
   for (int i = 0; i < static_cast<int>(objects.size()); ++i) {
@@ -214,8 +212,8 @@ bool MoveObjectEdit::Apply(WorldDocument* document, std::string* error) const {
   if (!CheckObjectAt(*document, from, uid, error)) return false;
   std::vector<RigidObjectDesc>& objects = DocumentAccess::desc(document).objects;
   if (to < 0 || to >= static_cast<int>(objects.size())) {
-    return Refuse(error, "move object #" + std::to_string(uid) + ": index " + std::to_string(to) +
-                             " is not in [0, " + std::to_string(objects.size() - 1) + "]");
+    return FailWith(error, "move object #" + std::to_string(uid) + ": index " + std::to_string(to) +
+                               " is not in [0, " + std::to_string(objects.size() - 1) + "]");
   }
   std::vector<int> order(objects.size());  // order[k]: the object that ends at index k
   for (int i = 0; i < static_cast<int>(order.size()); ++i) order[i] = i;
@@ -255,40 +253,36 @@ namespace {
 bool CheckRow(std::string_view key, ElementKind kind, const ParamValue& value, int size,
               const std::string& path, std::string* error) {
   const std::optional<std::string> problem = CheckParam(*FindParam(key, kind), value, size);
-  return problem ? Refuse(error, path + "." + *problem) : true;
+  return problem ? FailWith(error, path + "." + *problem) : true;
 }
 
 bool CheckObjectState(const WorldDocument& document, const ObjectInitialState& before,
                       const ObjectInitialState& after, std::string* error) {
   const int index = document.ObjectIndex(before.uid);
   if (index < 0 || after.uid != before.uid) {
-    return Refuse(error, "initial state: object #" + std::to_string(before.uid) +
-                             (index < 0 ? " is not in the world" : " is not the edit's after"));
+    return FailWith(error, "initial state: object #" + std::to_string(before.uid) +
+                               (index < 0 ? " is not in the world" : " is not the edit's after"));
   }
   const RigidObjectDesc& object = document.desc().objects[index];
   const std::string path = ElementPath(ElementIndex::Object(index));
   if (!SamePose(object.pose, before.pose) || !SameTwist(object.initial_velocity, before.velocity)) {
-    return Refuse(error, path + ": the edit's initial state is not the document's");
+    return FailWith(error, path + ": the edit's initial state is not the document's");
   }
   return CheckRow("transform", ElementKind::kObject, PoseToValue(after.pose), 12, path, error) &&
          CheckRow("velocity", ElementKind::kObject, TwistToValue(after.velocity), 6, path, error);
-}
-
-ParamValue VectorValue(const VecX& v) {
-  return ParamValue(v.data(), v.data() + v.size());
 }
 
 bool CheckRobotState(const WorldDocument& document, const RobotInitialState& before,
                      const RobotInitialState& after, std::string* error) {
   const int index = document.RobotIndex(before.uid);
   if (index < 0 || after.uid != before.uid) {
-    return Refuse(error, "initial state: robot #" + std::to_string(before.uid) +
-                             (index < 0 ? " is not in the world" : " is not the edit's after"));
+    return FailWith(error, "initial state: robot #" + std::to_string(before.uid) +
+                               (index < 0 ? " is not in the world" : " is not the edit's after"));
   }
   const RobotDesc& robot = document.desc().robots[index];
   const std::string path = ElementPath(ElementIndex::Robot(index));
   if (!SameVector(robot.config, before.config) || !SameVector(robot.velocity, before.velocity)) {
-    return Refuse(error, path + ": the edit's initial state is not the document's");
+    return FailWith(error, path + ": the edit's initial state is not the document's");
   }
   return CheckRow("config", ElementKind::kRobot, VectorValue(after.config), robot.dof(), path,
                   error) &&
@@ -300,7 +294,7 @@ bool CheckInitialStates(const WorldDocument& document, const InitialState& befor
                         const InitialState& after, std::string* error) {
   if (before.objects.size() != after.objects.size() ||
       before.robots.size() != after.robots.size()) {
-    return Refuse(error, "initial state: before and after list different elements");
+    return FailWith(error, "initial state: before and after list different elements");
   }
   for (size_t i = 0; i < before.objects.size(); ++i) {
     if (!CheckObjectState(document, before.objects[i], after.objects[i], error)) return false;
@@ -411,7 +405,7 @@ std::optional<ParamEdit> MakeParamEdit(const WorldDocument& document, const Elem
   if (!index) return std::nullopt;
   const ParamSpec* spec = FindParam(key, ref.kind);
   if (spec == nullptr) {
-    Refuse(error, ElementPath(*index) + ": no parameter " + std::string(key));
+    FailWith(error, ElementPath(*index) + ": no parameter " + std::string(key));
     return std::nullopt;
   }
   std::optional<ParamValue> before = GetParam(document.desc(), *index, *spec, error);
@@ -425,7 +419,7 @@ std::optional<RenameEdit> MakeRenameEdit(const WorldDocument& document, const El
   if (!index) return std::nullopt;
   const std::string* name = NameOf(document.desc(), *index);
   if (name == nullptr) {
-    Refuse(error, ElementPath(*index) + ": only terrains, objects and robots have names");
+    FailWith(error, ElementPath(*index) + ": only terrains, objects and robots have names");
     return std::nullopt;
   }
   return RenameEdit{ref, *name, std::move(after)};

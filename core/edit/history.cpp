@@ -3,14 +3,10 @@
 
 #include <utility>
 
+#include "core/diagnostics.h"
 namespace lamina::core {
 
 namespace {
-
-bool Refuse(std::string* error, std::string message) {
-  if (error) *error = std::move(message);
-  return false;
-}
 
 // `next` continues `last` (the same row of the same element) and can be merged into it
 bool Coalesces(const Edit& last, const Edit& next) {
@@ -74,7 +70,7 @@ bool History::ApplyAll(EditTarget& target, const HistoryEntry& entry, bool inver
 
 bool History::Undo(EditTarget& target, std::string* error) {
   CloseGroups();
-  if (undo_.empty()) return Refuse(error, "nothing to undo");
+  if (undo_.empty()) return FailWith(error, "nothing to undo");
   HistoryEntry& entry = undo_.back();
   target.BeginStep(entry, HistoryStep::kUndo);
   if (!ApplyAll(target, entry, true, error)) return false;
@@ -87,7 +83,7 @@ bool History::Undo(EditTarget& target, std::string* error) {
 
 bool History::Redo(EditTarget& target, std::string* error) {
   CloseGroups();
-  if (redo_.empty()) return Refuse(error, "nothing to redo");
+  if (redo_.empty()) return FailWith(error, "nothing to redo");
   HistoryEntry& entry = redo_.back();
   target.BeginStep(entry, HistoryStep::kRedo);
   if (!ApplyAll(target, entry, false, error)) return false;

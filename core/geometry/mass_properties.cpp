@@ -187,7 +187,7 @@ MassProperties PointMassProperties(const std::vector<Vec3>& points, double mass)
   return out;
 }
 
-bool IsUniform(const Vec3& scale) {
+bool NearlyUniform(const Vec3& scale) {
   const double tolerance = 1e-12 * std::abs(scale.x());
   return std::abs(scale.y() - scale.x()) <= tolerance &&
          std::abs(scale.z() - scale.x()) <= tolerance;
@@ -200,7 +200,7 @@ std::optional<Primitive> ScaledPrimitive(const Primitive& primitive, const Vec3&
   if ((scale.array() <= 0.0).any()) return std::nullopt;
   Primitive out = primitive;
   out.pose.translation() = scale.cwiseProduct(primitive.pose.translation());
-  if (IsUniform(scale)) {
+  if (NearlyUniform(scale)) {
     out.radius *= scale.x();
     out.length *= scale.x();
     out.size *= scale.x();

@@ -35,7 +35,7 @@ constexpr double kClampedFraction = 1e-3;
 // Relative tolerance for "orthogonal" and "equal length" columns of a placement.
 constexpr double kShapeTolerance = 1e-9;
 
-std::string Number(double value) {
+std::string ShortNumber(double value) {
   char text[32];
   std::snprintf(text, sizeof(text), "%g", value);
   return text;
@@ -266,9 +266,9 @@ double Reduced(double value, double reduction, const char* what, const Primitive
   const double result = value - reduction;
   if (result > 0.0) return result;
   const double clamped = value * kClampedFraction;
-  report.Warn("preshrink by " + Number(amount) + " m leaves nothing of the " +
-              primitive.TypeName() + "'s " + what + " (" + Number(value) + "); clamped to " +
-              Number(clamped));
+  report.Warn("preshrink by " + ShortNumber(amount) + " m leaves nothing of the " +
+              primitive.TypeName() + "'s " + what + " (" + ShortNumber(value) + "); clamped to " +
+              ShortNumber(clamped));
   return clamped;
 }
 
@@ -332,7 +332,7 @@ bool ShrinkPrimitive(const Mat3& L, double amount, const Reporter& report, Primi
 void SetShrunkMesh(TriangleMesh mesh, double amount, const Reporter& report, GeometryDesc* out) {
   ShrunkMesh shrunk = ApproximateShrink(mesh, amount);
   if (shrunk.flipped_triangles > 0) {
-    report.Warn("preshrink by " + Number(amount) + " m turned " +
+    report.Warn("preshrink by " + ShortNumber(amount) + " m turned " +
                 std::to_string(shrunk.flipped_triangles) + " of " +
                 std::to_string(mesh.triangle_count()) +
                 " triangles inside out; the padding is large for this mesh's features");
@@ -412,7 +412,7 @@ GeometryDesc ShrinkGeometry(const GeometryDesc& geometry, double amount, Diagnos
   Reporter report{diagnostics, where};
   if (report.where.file.empty()) report.where.file = geometry.path;
   if (!std::isfinite(amount) || amount < 0.0) {
-    report.Warn("cannot preshrink by " + Number(amount) + " m; geometry left as is");
+    report.Warn("cannot preshrink by " + ShortNumber(amount) + " m; geometry left as is");
     return geometry;
   }
   if (amount == 0.0) return geometry;

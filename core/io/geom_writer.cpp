@@ -7,7 +7,7 @@ namespace lamina::core {
 
 namespace {
 
-std::string Numbers(const Vec3& v) {
+std::string VecNumbers(const Vec3& v) {
   return FormatDoubles(v.data(), 3);
 }
 
@@ -18,13 +18,14 @@ std::optional<std::string> WriteGeomText(const Primitive& primitive) {
   const Vec3& center = primitive.pose.translation();
   switch (primitive.type) {
     case PrimitiveType::kSphere:
-      return "Primitive\nSphere\n" + Numbers(center) + "  " + FormatDouble(primitive.radius) + "\n";
+      return "Primitive\nSphere\n" + VecNumbers(center) + "  " + FormatDouble(primitive.radius) +
+             "\n";
     case PrimitiveType::kBox: {
       // corner origin, unit axes, extents from that corner
       const Vec3 origin = center - rotation * (primitive.size / 2.0);
-      return "Primitive\nBox\n" + Numbers(origin) + "  " + Numbers(rotation.col(0)) + "  " +
-             Numbers(rotation.col(1)) + "  " + Numbers(rotation.col(2)) + "  " +
-             Numbers(primitive.size) + "\n";
+      return "Primitive\nBox\n" + VecNumbers(origin) + "  " + VecNumbers(rotation.col(0)) + "  " +
+             VecNumbers(rotation.col(1)) + "  " + VecNumbers(rotation.col(2)) + "  " +
+             VecNumbers(primitive.size) + "\n";
     }
     case PrimitiveType::kCylinder:
     case PrimitiveType::kCapsule: {
@@ -33,8 +34,8 @@ std::optional<std::string> WriteGeomText(const Primitive& primitive) {
       const Vec3 base = center - axis * (primitive.length / 2.0);
       return std::string("Primitive\n") +
              (primitive.type == PrimitiveType::kCylinder ? "Cylinder\n" : "Capsule\n") +
-             Numbers(base) + "  " + Numbers(axis) + "  " + FormatDouble(primitive.radius) + " " +
-             FormatDouble(primitive.length) + "\n";
+             VecNumbers(base) + "  " + VecNumbers(axis) + "  " + FormatDouble(primitive.radius) +
+             " " + FormatDouble(primitive.length) + "\n";
     }
     case PrimitiveType::kPlane:
       return std::nullopt;

@@ -14,7 +14,7 @@ namespace lamina::core {
 namespace {
 
 // the value of a single bool or choice word, when it is one
-std::optional<double> NamedValue(const ParamSpec& spec, const std::string& word) {
+std::optional<double> NamedNumber(const ParamSpec& spec, const std::string& word) {
   const std::string lower = ToLower(word);
   if (spec.type == ParamType::kBool && (lower == "true" || lower == "false")) {
     return lower == "true" ? 1.0 : 0.0;
@@ -53,7 +53,7 @@ std::optional<ParamValue> ParamFromWords(const ParamSpec& spec,
                                          const std::vector<std::string>& words,
                                          std::string* bad_word) {
   if (words.size() == 1) {
-    if (const auto named = NamedValue(spec, words.front())) return ParamValue{*named};
+    if (const auto named = NamedNumber(spec, words.front())) return ParamValue{*named};
   }
   ParamValue value;
   for (const std::string& word : words) {

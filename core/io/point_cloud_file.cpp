@@ -49,7 +49,7 @@ std::string Joined(const std::vector<std::string>& words) {
 }
 
 // The whitespace-separated words of `line` before any '#'.
-std::vector<std::string> Words(std::string_view line) {
+std::vector<std::string> LineWords(std::string_view line) {
   line = line.substr(0, std::min(line.find('#'), line.size()));
   std::vector<std::string> words;
   std::size_t i = 0;
@@ -152,7 +152,7 @@ class PcdReader {
     const std::string_view line(bytes_.data() + next_, end - next_);
     next_ = std::min(end + 1, bytes_.size());
     ++line_;
-    return Words(line);
+    return LineWords(line);
   }
 
   // ---- header ----

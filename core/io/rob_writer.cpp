@@ -11,6 +11,7 @@
 #include "core/io/paths.h"
 #include "core/io/robot_file.h"
 #include "core/io/text_statements.h"
+#include "core/math_types.h"
 #include "core/model/element.h"
 #include "core/model/params.h"
 
@@ -67,10 +68,6 @@ std::string PerDriver(const WorldDesc& world, const ParamSpec& spec) {
 struct LinkLimits {
   double velocity_min, velocity_max, torque_max;
 };
-
-bool IsUniform(const Vec3& scale) {
-  return scale.x() == scale.y() && scale.y() == scale.z();
-}
 
 // the first geometry of a link that is not empty, or nullptr
 const GeometryDesc* FirstGeometry(const LinkDesc& link) {
@@ -214,7 +211,7 @@ void RobWriter::WriteGeometry() {
     margins.push_back(first ? first->margin : 0.0);
     const bool has_own = own != nullptr && !own->empty();
     // a non-uniform scale is folded into the geomtransform
-    const bool uniform = has_own && IsUniform(own->scale);
+    const bool uniform = has_own && IsUniformScale(own->scale);
     scales.push_back(uniform ? own->scale.x() : 1.0);
     if (!has_own) continue;
     const Affine matrix = uniform ? own->transform : own->Matrix();

@@ -14,7 +14,7 @@ namespace {
 
 using tinyxml2::XMLElement;
 
-std::vector<std::string> Words(const std::string& text) {
+std::vector<std::string> XmlWords(const std::string& text) {
   std::istringstream in(text);
   std::vector<std::string> words;
   for (std::string word; in >> word;) words.push_back(word);
@@ -94,7 +94,7 @@ bool ReadJoints(const XMLElement& robot, const std::string& path, Diagnostics& d
 std::optional<Mat3> DefaultInertia(const XmlElementReader& reader) {
   const auto text = reader.String("default_inertia");
   if (!text) return std::nullopt;
-  const size_t count = Words(*text).size();
+  const size_t count = XmlWords(*text).size();
   if (count == 1) {
     const auto value = reader.Number("default_inertia");
     if (value) return Mat3(Mat3::Identity() * *value);
@@ -156,7 +156,7 @@ void ReadPairs(const XMLElement& element, const std::string& path, Diagnostics& 
   reader.WarnUnknownAttributes({"pairs", "group1", "group2"});
   const int line = element.GetLineNum();
   if (const auto text = reader.String("pairs")) {
-    const std::vector<std::string> names = Words(*text);
+    const std::vector<std::string> names = XmlWords(*text);
     if (names.size() % 2 != 0) {
       reader.Error("pairs",
                    "expects pairs of links, got " + std::to_string(names.size()) + " names");
@@ -164,8 +164,8 @@ void ReadPairs(const XMLElement& element, const std::string& path, Diagnostics& 
     }
     for (size_t i = 0; i < names.size(); i += 2) pairs->push_back({names[i], names[i + 1], line});
   } else if (reader.Has("group1") && reader.Has("group2")) {
-    for (const std::string& first : Words(*reader.String("group1"))) {
-      for (const std::string& second : Words(*reader.String("group2"))) {
+    for (const std::string& first : XmlWords(*reader.String("group1"))) {
+      for (const std::string& second : XmlWords(*reader.String("group2"))) {
         pairs->push_back({first, second, line});
       }
     }

@@ -28,7 +28,7 @@ namespace {
 using tinyxml2::XMLElement;
 
 // Klamp't's default `automassSurfaceFraction` for world XML objects
-constexpr double kDefaultSurfaceFraction = 1.0;
+constexpr double kWorldSurfaceFraction = 1.0;
 
 // Reads `rows` from the element onto `object`, which is not in the world yet: the table's rows
 // address elements of a world, so it is lent to a world of its own meanwhile.
@@ -235,7 +235,7 @@ void WorldReader::ReadObject(const XMLElement& element) {
   if (object.inertia.isZero(0.0) && object.mass > 0.0) {
     reader.Warning("no inertia given; computed from the geometry (Klamp't would leave it zero)");
     const MassProperties mass =
-        ComputeMassProperties(object.geometry, object.mass, kDefaultSurfaceFraction);
+        ComputeMassProperties(object.geometry, object.mass, kWorldSurfaceFraction);
     if (mass.valid) object.inertia = mass.inertia;
   }
   for (const XMLElement* e = element.FirstChildElement(); e; e = e->NextSiblingElement()) {
@@ -283,7 +283,7 @@ void WorldReader::ReadObjectPhysics(const XMLElement& element, RigidObjectDesc* 
     mass_rows.push_back(FindParam(key, ElementKind::kObject));
   }
   ReadObjectParams(reader, mass_rows, object);
-  double fraction = kDefaultSurfaceFraction;
+  double fraction = kWorldSurfaceFraction;
   if (const auto value = reader.Number("automassSurfaceFraction", false)) {
     if (*value < 0 || *value > 1) {
       reader.Error("automassSurfaceFraction",

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/io/text_statements.h"
+#include "core/math_types.h"
 
 namespace lamina::core {
 
@@ -11,10 +12,6 @@ namespace {
 
 std::string FormatVector(const Vec3& v) {
   return FormatDoubles(v.data(), 3);
-}
-
-bool IsUniform(const Vec3& scale) {
-  return scale.x() == scale.y() && scale.y() == scale.z();
 }
 
 }  // namespace
@@ -85,7 +82,7 @@ void ApplyGeometryTransform(const XmlElementReader& reader, GeometryDesc* geomet
   const bool has_scale = ReadScale(reader, &scale);
   if (!has_pose && !has_scale) return;
   Affine inner = geometry->transform;
-  if (IsUniform(scale) || inner.linear().isIdentity(0.0)) {
+  if (IsUniformScale(scale) || inner.linear().isIdentity(0.0)) {
     // diag(s) * [R1 | t1] = [R1 | s*t1] * diag(s) when s is uniform or R1 = I
     inner.translation() = scale.cwiseProduct(inner.translation());
     geometry->transform = pose * inner;
@@ -124,7 +121,7 @@ bool GeometryTransformAttributes(const GeometryDesc& geometry,
   }
   if (scale != Vec3::Ones()) {
     attributes->emplace_back("scale",
-                             IsUniform(scale) ? FormatDouble(scale.x()) : FormatVector(scale));
+                             IsUniformScale(scale) ? FormatDouble(scale.x()) : FormatVector(scale));
   }
   if (!pose.translation().isZero(0.0)) {
     attributes->emplace_back("translation", FormatVector(pose.translation()));

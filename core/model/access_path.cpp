@@ -6,6 +6,7 @@
 #include <cctype>
 #include <climits>
 
+#include "core/diagnostics.h"
 #include "core/number_text.h"
 #include "core/suggest.h"
 
@@ -540,11 +541,6 @@ size_t AssignmentSign(std::string_view text) {
   return std::string_view::npos;
 }
 
-bool Refuse(std::string* error, const std::string& message) {
-  if (error) *error = message;
-  return false;
-}
-
 }  // namespace
 
 std::optional<AccessPath> ParseAccessPath(std::string_view text, std::string* error) {
@@ -589,7 +585,7 @@ std::optional<ParamValue> ParseAccessValue(const AccessTarget& target, std::stri
   const std::string refusal = target.path + ": cannot read '" + Trim(text) + "': " + rule;
   std::optional<ParamValue> value = ParseParamValue(*target.row, text, nullptr);
   if (!value || (target.component >= 0 && value->size() != 1)) {
-    Refuse(error, refusal);
+    FailWith(error, refusal);
     return std::nullopt;
   }
   return value;
@@ -623,7 +619,7 @@ std::optional<std::string> CheckAccessValue(const WorldDesc& world, const Access
 std::optional<ParamValue> GetPath(const WorldDesc& world, const AccessTarget& target,
                                   std::string* error) {
   if (target.state != StateItem::kNone) {
-    Refuse(error, target.path + ": exists only on a running simulation");
+    FailWith(error, target.path + ": exists only on a running simulation");
     return std::nullopt;
   }
   std::optional<ParamValue> whole = GetParam(world, target.element, *target.row, error);
@@ -641,18 +637,18 @@ std::optional<ParamValue> GetPath(const WorldDesc& world, std::string_view path,
 
 bool SetPath(WorldDesc* world, const AccessTarget& target, const ParamValue& value,
              std::string* error) {
-  if (target.read_only) return Refuse(error, target.path + ": read-only");
+  if (target.read_only) return FailWith(error, target.path + ": read-only");
   if (target.state != StateItem::kNone) {
-    return Refuse(error, target.path + ": exists only on a running simulation");
+    return FailWith(error, target.path + ": exists only on a running simulation");
   }
   if (target.component >= 0 && value.size() != 1) {
-    return Refuse(
+    return FailWith(
         error, target.path + ": a component takes one number, got " + std::to_string(value.size()));
   }
   std::optional<ParamValue> whole = GetParam(*world, target.element, *target.row, error);
   if (!whole) return false;
   const ParamValue full = ReplaceComponent(target, *whole, value);
-  if (auto problem = CheckAccessValue(*world, target, full)) return Refuse(error, *problem);
+  if (auto problem = CheckAccessValue(*world, target, full)) return FailWith(error, *problem);
   return SetParam(world, target.element, *target.row, full, error);
 }
 
@@ -675,11 +671,11 @@ bool SplitAssignment(std::string_view text, std::string* path, std::string* valu
                      std::string* error) {
   const size_t sign = AssignmentSign(text);
   const std::string whole = "'" + std::string(text) + "'";
-  if (sign == std::string_view::npos) return Refuse(error, whole + ": expected PATH=VALUE");
+  if (sign == std::string_view::npos) return FailWith(error, whole + ": expected PATH=VALUE");
   *path = Trim(text.substr(0, sign));
   *value = Trim(text.substr(sign + 1));
-  if (path->empty()) return Refuse(error, whole + ": no path before '='");
-  if (value->empty()) return Refuse(error, whole + ": no value after '='");
+  if (path->empty()) return FailWith(error, whole + ": no path before '='");
+  if (value->empty()) return FailWith(error, whole + ": no value after '='");
   return true;
 }
 

@@ -13,6 +13,14 @@
 
 namespace lamina::core {
 
+ParamValue VectorValue(const VecX& v) {
+  return ParamValue(v.data(), v.data() + v.size());
+}
+
+VecX ValueVector(const ParamValue& value) {
+  return Eigen::Map<const VecX>(value.data(), static_cast<Eigen::Index>(value.size()));
+}
+
 namespace {
 
 constexpr unsigned kSettings = KindBit(ElementKind::kSettings);
@@ -174,14 +182,6 @@ ParamValue GetObjectVelocity(const WorldDesc& world, const ElementIndex& element
 
 void SetObjectVelocity(WorldDesc* world, const ElementIndex& element, const ParamValue& value) {
   world->objects[element.index].initial_velocity = ValueToTwist(value);
-}
-
-ParamValue VectorValue(const VecX& v) {
-  return ParamValue(v.data(), v.data() + v.size());
-}
-
-VecX ValueVector(const ParamValue& value) {
-  return Eigen::Map<const VecX>(value.data(), static_cast<Eigen::Index>(value.size()));
 }
 
 ParamValue GetRobotConfig(const WorldDesc& world, const ElementIndex& element) {

@@ -132,5 +132,8 @@ ParamValue PoseToValue(const Pose& pose);
 Pose ValueToPose(const ParamValue& value);
 ParamValue TwistToValue(const Twist& twist);
 Twist ValueToTwist(const ParamValue& value);
+/// A vector <-> a kVector value (a robot's configuration, gains), element for element.
+ParamValue VectorValue(const VecX& v);
+VecX ValueVector(const ParamValue& value);
 
 }  // namespace lamina::core

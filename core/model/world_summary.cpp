@@ -18,12 +18,12 @@ namespace {
 
 using nlohmann::ordered_json;
 
-ordered_json Number(double value) {
+ordered_json JsonLimit(double value) {
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
   return value;
 }
 
-ordered_json Vector(const Vec3& v) {
+ordered_json SummaryVector(const Vec3& v) {
   return ordered_json::array({v.x(), v.y(), v.z()});
 }
 
@@ -31,7 +31,7 @@ ordered_json Vector(const Vec3& v) {
 ordered_json RowJson(const ParamSpec& spec, const ParamValue& value) {
   if (value.size() != 1 || spec.type == ParamType::kVector) {
     ordered_json array = ordered_json::array();
-    for (double x : value) array.push_back(Number(x));
+    for (double x : value) array.push_back(JsonLimit(x));
     return array;
   }
   switch (spec.type) {
@@ -42,7 +42,7 @@ ordered_json RowJson(const ParamSpec& spec, const ParamValue& value) {
     case ParamType::kInteger:
       return static_cast<long long>(value[0]);
     default:
-      return Number(value[0]);
+      return JsonLimit(value[0]);
   }
 }
 
@@ -83,7 +83,7 @@ ordered_json ObjectJson(const WorldDesc& world, int index) {
                       {"file", object.geometry.path},
                       {"triangles", object.geometry.triangle_count()},
                       {"points", object.geometry.point_count()},
-                      {"position", Vector(object.pose.translation())}};
+                      {"position", SummaryVector(object.pose.translation())}};
   out.update(RowsJson(world, element, Rows(ElementKind::kObject, false)));
   out["simulation"] = RowsJson(world, element, Rows(ElementKind::kObject, true));
   return out;
@@ -236,11 +236,11 @@ ordered_json JointJson(const WorldDesc& world, const WorldJointDesc& joint) {
   out["bodies"] = ordered_json::array();
   for (const WorldJointBody& body : joint.bodies)
     out["bodies"].push_back(JointBodyText(world, body));
-  if (joint.type == WorldJointType::kHinge) out["point"] = Vector(joint.point);
-  if (joint.type != WorldJointType::kFixed) out["axis"] = Vector(joint.axis);
-  out["min"] = Number(joint.min);
-  out["max"] = Number(joint.max);
-  out["friction"] = Number(joint.friction);
+  if (joint.type == WorldJointType::kHinge) out["point"] = SummaryVector(joint.point);
+  if (joint.type != WorldJointType::kFixed) out["axis"] = SummaryVector(joint.axis);
+  out["min"] = JsonLimit(joint.min);
+  out["max"] = JsonLimit(joint.max);
+  out["friction"] = JsonLimit(joint.friction);
   return out;
 }
 

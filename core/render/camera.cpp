@@ -21,7 +21,7 @@ double Radians(double degrees) {
 // extra room around a framed box
 constexpr double kFramingMargin = 1.08;
 
-std::string Number(double value) {
+std::string ExactNumber(double value) {
   char buffer[32];
   const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
   return std::string(buffer, result.ptr);
@@ -41,7 +41,7 @@ std::vector<std::string> Split(const std::string& text, char separator) {
   return parts;
 }
 
-std::string Trim(const std::string& text) {
+std::string TrimText(const std::string& text) {
   const size_t first = text.find_first_not_of(" \t");
   if (first == std::string::npos) return "";
   return text.substr(first, text.find_last_not_of(" \t") - first + 1);
@@ -49,11 +49,11 @@ std::string Trim(const std::string& text) {
 
 bool CheckRanges(const OrbitCamera& camera, std::string* error) {
   if (!(camera.pitch > -90.0 && camera.pitch < 90.0)) {
-    *error = "pitch must be in (-90, 90) degrees, got " + Number(camera.pitch);
+    *error = "pitch must be in (-90, 90) degrees, got " + ExactNumber(camera.pitch);
   } else if (!(camera.distance > 0.0)) {
-    *error = "dist must be > 0, got " + Number(camera.distance);
+    *error = "dist must be > 0, got " + ExactNumber(camera.distance);
   } else if (!(camera.fov_y > 0.0 && camera.fov_y < 180.0)) {
-    *error = "fov must be in (0, 180) degrees, got " + Number(camera.fov_y);
+    *error = "fov must be in (0, 180) degrees, got " + ExactNumber(camera.fov_y);
   } else {
     return true;
   }
@@ -98,8 +98,9 @@ bool ParseKey(const std::string& key, const std::string& value, OrbitCamera* cam
   if (key == "target") {
     const std::vector<std::string> parts = Split(value, ',');
     Eigen::Vector3d target;
-    if (parts.size() != 3 || !ParseNumber(Trim(parts[0]), &target.x()) ||
-        !ParseNumber(Trim(parts[1]), &target.y()) || !ParseNumber(Trim(parts[2]), &target.z())) {
+    if (parts.size() != 3 || !ParseNumber(TrimText(parts[0]), &target.x()) ||
+        !ParseNumber(TrimText(parts[1]), &target.y()) ||
+        !ParseNumber(TrimText(parts[2]), &target.z())) {
       *error = "camera: target expects three numbers 'x,y,z', got '" + value + "'";
       return false;
     }
@@ -215,24 +216,25 @@ OrbitCamera FramingCamera(const Eigen::AlignedBox3d& box, double aspect) {
 }
 
 std::string FormatCamera(const OrbitCamera& camera) {
-  return "target=" + Number(camera.target.x()) + "," + Number(camera.target.y()) + "," +
-         Number(camera.target.z()) + ";yaw=" + Number(camera.yaw) +
-         ";pitch=" + Number(camera.pitch) + ";dist=" + Number(camera.distance) +
-         ";fov=" + Number(camera.fov_y);
+  return "target=" + ExactNumber(camera.target.x()) + "," + ExactNumber(camera.target.y()) + "," +
+         ExactNumber(camera.target.z()) + ";yaw=" + ExactNumber(camera.yaw) +
+         ";pitch=" + ExactNumber(camera.pitch) + ";dist=" + ExactNumber(camera.distance) +
+         ";fov=" + ExactNumber(camera.fov_y);
 }
 
 bool ParseCamera(const std::string& text, OrbitCamera* camera, std::string* error) {
   if (text.find('=') == std::string::npos) return ParseCompact(text, camera, error);
   OrbitCamera parsed = *camera;
   for (const std::string& raw : Split(text, ';')) {
-    const std::string entry = Trim(raw);
+    const std::string entry = TrimText(raw);
     if (entry.empty()) continue;
     const size_t equals = entry.find('=');
     if (equals == std::string::npos) {
       *error = "camera: '" + entry + "' is not key=value";
       return false;
     }
-    if (!ParseKey(Trim(entry.substr(0, equals)), Trim(entry.substr(equals + 1)), &parsed, error)) {
+    if (!ParseKey(TrimText(entry.substr(0, equals)), TrimText(entry.substr(equals + 1)), &parsed,
+                  error)) {
       return false;
     }
   }

@@ -35,7 +35,7 @@ struct BodyPart {
 };
 
 // one body's frame and centre of mass, for the frame and COM overlays
-struct BodyFrame {
+struct ExtractedFrame {
   Pose pose;
   Vec3 com_world;
 };
@@ -66,7 +66,7 @@ void AddTerrainParts(const WorldDesc& world, int selected_id, std::vector<BodyPa
 }
 
 void AddObjectParts(const WorldDesc& world, const WorldPoses& poses, int selected_id,
-                    std::vector<BodyPart>* parts, std::vector<BodyFrame>* frames) {
+                    std::vector<BodyPart>* parts, std::vector<ExtractedFrame>* frames) {
   for (size_t i = 0; i < world.objects.size(); ++i) {
     const RigidObjectDesc& object = world.objects[i];
     const int id = world.ObjectId(static_cast<int>(i));
@@ -79,7 +79,8 @@ void AddObjectParts(const WorldDesc& world, const WorldPoses& poses, int selecte
 }
 
 void AddRobotParts(const WorldDesc& world, const WorldPoses& poses, int robot_index,
-                   int selected_id, std::vector<BodyPart>* parts, std::vector<BodyFrame>* frames) {
+                   int selected_id, std::vector<BodyPart>* parts,
+                   std::vector<ExtractedFrame>* frames) {
   const RobotDesc& robot = world.robots[robot_index];
   const bool robot_selected = world.RobotId(robot_index) == selected_id;
   const std::vector<Pose> link_frames =
@@ -98,7 +99,7 @@ void AddRobotParts(const WorldDesc& world, const WorldPoses& poses, int robot_in
 
 // every body's pieces at `poses`, in world id order
 std::vector<BodyPart> CollectParts(const WorldDesc& world, const WorldPoses& poses, int selected_id,
-                                   std::vector<BodyFrame>* frames) {
+                                   std::vector<ExtractedFrame>* frames) {
   std::vector<BodyPart> parts;
   AddTerrainParts(world, selected_id, &parts);
   AddObjectParts(world, poses, selected_id, &parts, frames);
@@ -207,10 +208,10 @@ void AddBoxes(const OverlayOptions& options, RenderScene* scene) {
   }
 }
 
-void AddFrames(const OverlayOptions& options, const std::vector<BodyFrame>& frames, float marker,
-               RenderScene* scene) {
+void AddFrames(const OverlayOptions& options, const std::vector<ExtractedFrame>& frames,
+               float marker, RenderScene* scene) {
   const double axis_length = std::max(10.0 * marker, 0.03);
-  for (const BodyFrame& frame : frames) {
+  for (const ExtractedFrame& frame : frames) {
     if (options.com)
       scene->points.push_back({frame.com_world.cast<float>(), 1.6f * marker, kComColor});
     if (!options.frames) continue;
@@ -288,7 +289,7 @@ void ExtractScene(const WorldDesc& world, const WorldPoses& poses, const Overlay
                   const std::vector<ContactMarker>& contacts, RenderMeshCache* cache,
                   RenderScene* scene) {
   *scene = RenderScene();
-  std::vector<BodyFrame> frames;
+  std::vector<ExtractedFrame> frames;
   const std::vector<BodyPart> parts = CollectParts(world, poses, options.selected_id, &frames);
   AddBodies(parts, cache, scene);
   const float marker = MarkerSize(*scene);

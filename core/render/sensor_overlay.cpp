@@ -11,7 +11,7 @@ const Rgba kHitColor(0.25f, 0.9f, 0.35f, 1.0f);
 const Rgba kMissColor(0.6f, 0.6f, 0.6f, 0.5f);
 const Rgba kOutlineColor(0.2f, 0.85f, 0.95f, 1.0f);
 const Rgba kHotColor(0.95f, 0.2f, 0.15f, 1.0f);
-const Rgba kForceColor(1.0f, 0.55f, 0.1f, 1.0f);
+const Rgba kSensedForceColor(1.0f, 0.55f, 0.1f, 1.0f);
 const Rgba kTorqueColor(0.6f, 0.3f, 0.9f, 1.0f);
 const Rgba kAccelerationColor(0.95f, 0.3f, 0.8f, 1.0f);
 
@@ -35,7 +35,7 @@ void AddArrow(const SensorDrawing::Arrow& arrow, const OverlayOptions& options,
   Rgba color = kAccelerationColor;
   if (arrow.quantity == SensorDrawing::Quantity::kForce) {
     scale = options.force_scale;
-    color = kForceColor;
+    color = kSensedForceColor;
   } else if (arrow.quantity == SensorDrawing::Quantity::kTorque) {
     scale = kTorqueArrowScale;
     color = kTorqueColor;

@@ -13,7 +13,7 @@ namespace lamina::core {
 
 namespace {
 
-constexpr double kTimeTolerance = 1e-9;  // s: accumulated periods may round
+constexpr double kPeriodTolerance = 1e-9;  // s: accumulated periods may round
 
 SourceLocation At(const std::string& file, const tinyxml2::XMLElement& e, int line_offset) {
   return {file, e.GetLineNum() + line_offset, 0};
@@ -70,7 +70,7 @@ bool NameTaken(const std::vector<std::unique_ptr<Sensor>>& sensors, const std::s
                      [&](const auto& s) { return s->name() == name; });
 }
 
-std::uint64_t Hash(const std::string& text) {
+std::uint64_t NameHash(const std::string& text) {
   std::uint64_t h = 1469598103934665603ULL;  // FNV-1a
   for (unsigned char c : text) h = (h ^ c) * 1099511628211ULL;
   return h;
@@ -148,7 +148,7 @@ RobotSensors::~RobotSensors() = default;
 
 void RobotSensors::Seed(const std::string& robot_name) {
   for (size_t i = 0; i < sensors_.size(); ++i) {
-    sensors_[i]->set_noise(SensorNoise(Hash(robot_name + "\n" + sensors_[i]->name()) + i));
+    sensors_[i]->set_noise(SensorNoise(NameHash(robot_name + "\n" + sensors_[i]->name()) + i));
   }
 }
 
@@ -175,7 +175,7 @@ void RobotSensors::FindNeeds() {
 
 bool RobotSensors::AnyDue(double time) const {
   for (int i = 0; i < size(); ++i) {
-    if (sensors_[i]->enabled() && (!started_ || time >= next_times_[i] - kTimeTolerance)) {
+    if (sensors_[i]->enabled() && (!started_ || time >= next_times_[i] - kPeriodTolerance)) {
       return true;
     }
   }
@@ -195,7 +195,7 @@ void RobotSensors::Sample(const SensorInputs& inputs, double step, double contro
   sample_dq_ = inputs.dq;
   for (int i = 0; i < size(); ++i) {
     Sensor& s = *sensors_[i];
-    if (!s.enabled() || inputs.time < next_times_[i] - kTimeTolerance) continue;
+    if (!s.enabled() || inputs.time < next_times_[i] - kPeriodTolerance) continue;
     const double period = std::max(s.rate() > 0.0 ? 1.0 / s.rate() : control_period, step);
     s.Simulate(inputs);
     s.Advance(period);

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "core/math_types.h"
 #include "core/sensors/sensor_text.h"
 #include "core/sensors/sensor_types.h"
 
@@ -17,8 +18,6 @@ std::uint64_t Mix(std::uint64_t x) {
   x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
   return x ^ (x >> 31);
 }
-
-constexpr double kTwoPi = 6.283185307179586;
 
 }  // namespace
 

@@ -29,8 +29,6 @@ namespace lamina::core {
 
 namespace {
 
-constexpr double kPi = 3.141592653589793;
-
 double Frac(double u) {
   return u - std::floor(u);
 }

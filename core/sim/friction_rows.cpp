@@ -8,9 +8,9 @@ namespace lamina::core {
 namespace {
 
 // rounding of the LCP solve relative to the bound
-constexpr double kBoundSlack = 1e-9;
+constexpr double kFrictionBoundSlack = 1e-9;
 
-double Sign(double x) {
+double SlipSign(double x) {
   return x > 0.0 ? 1.0 : -1.0;
 }
 
@@ -31,7 +31,7 @@ FrictionRowMode ChooseFrictionRow(double fmax, double cfm, double rate_now) {
 }
 
 double ExplicitFrictionTorque(FrictionRowMode mode, double fmax, double rate_now) {
-  return mode == FrictionRowMode::kExplicit ? -fmax * Sign(rate_now) : 0.0;
+  return mode == FrictionRowMode::kExplicit ? -fmax * SlipSign(rate_now) : 0.0;
 }
 
 MergedRow MergeServoAndFrictionRows(double velocity, double servo_cfm, double friction_cfm) {
@@ -44,9 +44,10 @@ bool FrictionGuessHeld(FrictionRowMode mode, double fmax, double cfm, double rat
   if (mode == FrictionRowMode::kBounded) return true;
   if (!std::isfinite(rate_after)) return false;
   const double force = FrictionRowForce(cfm, rate_after);
-  if (mode == FrictionRowMode::kUnbounded) return std::abs(force) <= fmax * (1.0 + kBoundSlack);
+  if (mode == FrictionRowMode::kUnbounded)
+    return std::abs(force) <= fmax * (1.0 + kFrictionBoundSlack);
   // the bounded row applies −F·sign(rate_now) when its unbounded force is beyond F that way
-  return -force * Sign(rate_now) >= fmax * (1.0 - kBoundSlack);
+  return -force * SlipSign(rate_now) >= fmax * (1.0 - kFrictionBoundSlack);
 }
 
 }  // namespace lamina::core

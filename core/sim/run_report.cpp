@@ -15,7 +15,7 @@ namespace {
 
 using nlohmann::ordered_json;
 
-ordered_json Vector(const Vec3& v) {
+ordered_json ReportVector(const Vec3& v) {
   return ordered_json::array({v.x(), v.y(), v.z()});
 }
 
@@ -104,10 +104,10 @@ std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
     const Eigen::Quaterniond q(pose.linear());
     const Twist velocity = simulator.GetObjectVelocity(i);
     objects.push_back({{"name", simulator.world().objects[i].name},
-                       {"position", Vector(pose.translation())},
+                       {"position", ReportVector(pose.translation())},
                        {"quaternion", ordered_json::array({q.w(), q.x(), q.y(), q.z()})},
-                       {"velocity", Vector(velocity.linear)},
-                       {"angular_velocity", Vector(velocity.angular)},
+                       {"velocity", ReportVector(velocity.linear)},
+                       {"angular_velocity", ReportVector(velocity.angular)},
                        {"asleep", simulator.ObjectAsleep(i)}});
   }
   out["objects"] = objects;

@@ -8,7 +8,7 @@ namespace lamina::core {
 namespace {
 
 // rounding of the LCP solve relative to the bound
-constexpr double kBoundSlack = 1e-9;
+constexpr double kServoBoundSlack = 1e-9;
 
 }  // namespace
 
@@ -22,7 +22,7 @@ bool ServoMayGoUnbounded(const ServoMotorCommand& motor, double rate_now) {
 }
 
 bool ServoForceWithinBound(const ServoMotorCommand& motor, double rate_after) {
-  return std::abs(ServoRowForce(motor, rate_after)) <= motor.fmax * (1.0 + kBoundSlack);
+  return std::abs(ServoRowForce(motor, rate_after)) <= motor.fmax * (1.0 + kServoBoundSlack);
 }
 
 }  // namespace lamina::core

@@ -6,22 +6,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/diagnostics.h"
+#include "core/model/params.h"
 namespace lamina::core {
 
 namespace {
-
-ParamValue VectorValue(const VecX& v) {
-  return ParamValue(v.data(), v.data() + v.size());
-}
-
-VecX ValueVector(const ParamValue& value) {
-  return Eigen::Map<const VecX>(value.data(), static_cast<Eigen::Index>(value.size()));
-}
-
-bool Refuse(std::string* error, const std::string& message) {
-  if (error) *error = message;
-  return false;
-}
 
 // The link's body. SimBody's getters do not change the simulation, but Simulator::body() is
 // not const.
@@ -37,7 +26,7 @@ std::optional<ParamValue> Commanded(const Simulator& simulator, const AccessTarg
                       ? controller.GetCommandedConfig(&value)
                       : controller.GetCommandedVelocity(&value);
   if (ok) return VectorValue(value);
-  Refuse(error, target.path + ": not every driver of the robot is in PID mode");
+  FailWith(error, target.path + ": not every driver of the robot is in PID mode");
   return std::nullopt;
 }
 
@@ -109,15 +98,15 @@ void SetState(Simulator* simulator, const AccessTarget& target, const ParamValue
   }
 }
 
-nlohmann::ordered_json JsonNumber(double value) {
+nlohmann::ordered_json AccessNumber(double value) {
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
   return value;
 }
 
 nlohmann::ordered_json JsonValue(const ParamValue& value) {
-  if (value.size() == 1) return JsonNumber(value[0]);
+  if (value.size() == 1) return AccessNumber(value[0]);
   nlohmann::ordered_json array = nlohmann::ordered_json::array();
-  for (double x : value) array.push_back(JsonNumber(x));
+  for (double x : value) array.push_back(AccessNumber(x));
   return array;
 }
 
@@ -144,16 +133,16 @@ std::optional<ParamValue> GetPath(const Simulator& simulator, std::string_view p
 
 bool SetPath(Simulator* simulator, const AccessTarget& target, const ParamValue& value,
              std::string* error) {
-  if (target.read_only) return Refuse(error, target.path + ": read-only");
+  if (target.read_only) return FailWith(error, target.path + ": read-only");
   if (target.component >= 0 && value.size() != 1) {
-    return Refuse(
+    return FailWith(
         error, target.path + ": a component takes one number, got " + std::to_string(value.size()));
   }
   std::optional<ParamValue> whole = WholeValue(*simulator, target, error);
   if (!whole) return false;
   const ParamValue full = ReplaceComponent(target, *whole, value);
   if (auto problem = CheckAccessValue(simulator->world(), target, full)) {
-    return Refuse(error, *problem);
+    return FailWith(error, *problem);
   }
   if (target.state == StateItem::kNone) {
     return simulator->SetParam(target.element, *target.row, full, error);
