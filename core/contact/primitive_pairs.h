@@ -39,11 +39,6 @@ class ContactSink {
 /// with the ends: the ends already represent it. Far above double rounding at robot scales.
 inline constexpr double kLevelTolerance = 1e-10;
 
-/// +1 for 0 and above, -1 below: the side of a face or axis a point is on, ties to the + side.
-inline double SignOf(double value) {
-  return value < 0.0 ? -1.0 : 1.0;
-}
-
 /// sphere a against any primitive b (one contact).
 void SphereContacts(const PlacedPrimitive& sphere, const PlacedPrimitive& other, ContactSink* sink);
 /// capsule a against a capsule, box, cylinder or plane b: the closest point of the capsule axis,

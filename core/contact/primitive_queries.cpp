@@ -9,7 +9,6 @@
 #include <cstddef>
 #include <utility>
 
-#include "core/contact/primitive_pairs.h"
 namespace lamina::core::primitive_detail {
 namespace {
 

@@ -11,6 +11,11 @@
 
 namespace lamina::core::primitive_detail {
 
+/// +1 for 0 and above, -1 below: the side of a face or axis a point is on, ties to the + side.
+inline double SignOf(double value) {
+  return value < 0.0 ? -1.0 : 1.0;
+}
+
 /// A primitive and the world pose of its own frame (X_W_body * primitive.pose).
 struct PlacedPrimitive {
   const Primitive* shape = nullptr;  ///< not owned
