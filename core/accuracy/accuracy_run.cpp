@@ -20,6 +20,7 @@ void ApplySolver(const AccuracySolver& solver, double step, WorldDesc* world) {
   world->settings.solver = solver.type;
   world->settings.quick_step_iterations = solver.iterations;
   world->settings.adaptive_time_stepping = solver.adaptive;
+  world->settings.joint_coordinates = solver.joint_coordinates;
 }
 
 // Per-step bookkeeping the runner keeps itself: the shortest step and the non-finite recoveries.
@@ -112,6 +113,7 @@ std::string AccuracySolver::Label() const {
   std::string label = type == SolverType::kStep     ? "exact"
                       : type == SolverType::kNewton ? "newton"
                                                     : "quick" + std::to_string(iterations);
+  if (joint_coordinates) label += "-joints";
   return adaptive ? label : label + "-fixed";
 }
 

@@ -56,9 +56,11 @@ struct AccuracySolver {
   /// "" for Lamina; "mujoco" (its defaults: Euler, Newton solver, pyramidal cone) or "bullet"
   /// (btSequentialImpulseConstraintSolver with `iterations`) for a peer's run
   std::string peer;
+  /// the world's `jointCoordinates` (the Newton solver's robots in their joint coordinates)
+  bool joint_coordinates = false;
 
-  /// "exact", "newton", "quick20", ..., with "-fixed" when adaptive stepping is off; a peer's
-  /// "mujoco" or "bullet10".
+  /// "exact", "newton", "quick20", ..., "newton-joints" with joint coordinates, with "-fixed"
+  /// when adaptive stepping is off; a peer's "mujoco" or "bullet10".
   std::string Label() const;
   bool operator==(const AccuracySolver&) const = default;
 };

@@ -19,6 +19,7 @@ void ApplySolver(const StressCase& c, WorldDesc* world) {
   world->settings.solver = c.solver.type;
   world->settings.quick_step_iterations = c.solver.iterations;
   world->settings.adaptive_time_stepping = c.solver.adaptive;
+  world->settings.joint_coordinates = c.solver.joint_coordinates;
 }
 
 bool Finite(const BodyState& body) {

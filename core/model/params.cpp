@@ -325,6 +325,13 @@ const ParamSpec kParams[] = {
      false, true, A::kLive, false, "iterations of dWorldQuickStep per step", kNoChoices,
      GetSetting<&SimSettings::quick_step_iterations>,
      SetSetting<&SimSettings::quick_step_iterations>},
+    {"jointCoordinates", "joint coordinates", "", kSettings, T::kBool, 0, 1, false, false, false,
+     A::kLive, false,
+     "newton: robots solved in their joint coordinates, one unknown per joint, and put back on "
+     "their joints after each step: no joint drift and a heavy end on light links holds at large "
+     "steps; slower on long chains",
+     kNoChoices, GetSetting<&SimSettings::joint_coordinates>,
+     SetSetting<&SimSettings::joint_coordinates>},
     {"sleeping", "sleep idle objects", "", kSettings, T::kBool, 0, 1, false, false, false,
      A::kLive, false,
      "islands of touching objects idle for sleepTime leave the steps until something wakes them",

@@ -212,7 +212,9 @@ struct SimSettings {
 
   SolverType solver = SolverType::kStep;  ///< `solver`: "step" (exact), "quick" or "newton"
   int quick_step_iterations = 20;         ///< `quickStepIterations`
-  bool sleeping = false;                  ///< `sleeping`: idle objects leave the steps
+  /// `jointCoordinates`: the Newton solver takes robots in their joint coordinates
+  bool joint_coordinates = false;
+  bool sleeping = false;  ///< `sleeping`: idle objects leave the steps
   /// `sleepSpeed`: linear (m/s) and angular (rad/s) speed below which an object is idle
   double sleep_speed = 0.01;
   double sleep_time = 0.5;  ///< `sleepTime`: s an object must stay idle to sleep

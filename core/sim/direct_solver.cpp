@@ -6,6 +6,8 @@
 
 #include <Eigen/Cholesky>
 
+#include "core/sim/reduced_system.h"
+
 namespace lamina::core {
 
 namespace {
@@ -270,14 +272,9 @@ void DirectSolver::Refine(const std::vector<NewtonBody>& bodies, const std::vect
 // other (a wheel on rough ground) without moving the fixed point the rounds settle on.
 constexpr int kUndampedRounds = 10;
 
-bool DirectSolver::Solve(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
-                         double step, const DirectOptions& options, NewtonResult* result) {
-  step_ = step;
-  result->converged = false;
-  result->iterations = 0;
-  result->rounds = 0;
-  if (!FactorBodies(bodies, rows)) return false;
-  FreeVelocity(bodies, rows);
+// the bounded rows (bounded_, position_) and their normal rows' places (normal_at_); false for a
+// friction row whose normal row is not bounded (not a row the law allows)
+bool DirectSolver::Classify(const std::vector<NewtonRow>& rows) {
   bounded_.clear();
   position_.assign(rows.size(), -1);
   for (size_t i = 0; i < rows.size(); ++i) {
@@ -289,10 +286,15 @@ bool DirectSolver::Solve(const std::vector<NewtonBody>& bodies, const std::vecto
   for (size_t k = 0; k < bounded_.size(); ++k) {
     const int normal = rows[bounded_[k]].normal;
     if (normal < 0) continue;
-    if (position_[normal] < 0) return false;  // (not a row the law allows)
+    if (position_[normal] < 0) return false;
     normal_at_[k] = position_[normal];
   }
-  BoundedSystem(rows);
+  return true;
+}
+
+// the box LCP of G and r in rounds of friction bounds (into lambda_); true when they settled
+bool DirectSolver::Rounds(const std::vector<NewtonRow>& rows, const DirectOptions& options,
+                          NewtonResult* result) {
   const Eigen::Index n = static_cast<Eigen::Index>(bounded_.size());
   lambda_.setZero(n);
   lo_.resize(n);
@@ -318,12 +320,32 @@ bool DirectSolver::Solve(const std::vector<NewtonBody>& bodies, const std::vecto
     SetBounds(rows);
     settled = true;
     for (Eigen::Index k = 0; k < n && settled; ++k) {
+      // (only a friction row's bounds move; a stop row's infinite one would make ∞ − ∞ here)
+      if (normal_at_[static_cast<size_t>(k)] < 0) continue;
       const double change = std::max(std::abs(lo_(k) - used_lo(k)), std::abs(hi_(k) - used_hi(k)));
       settled = change <= options.bound_tolerance * std::max(hi_(k) - lo_(k), 1e-12);
     }
   }
   result->iterations = options.max_pivots - budget;
-  if (!settled) return false;
+  return settled;
+}
+
+void DirectSolver::Begin(double step, NewtonResult* result) {
+  step_ = step;
+  result->converged = false;
+  result->iterations = 0;
+  result->rounds = 0;
+}
+
+bool DirectSolver::Solve(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
+                         double step, const DirectOptions& options, NewtonResult* result) {
+  Begin(step, result);
+  if (!FactorBodies(bodies, rows)) return false;
+  FreeVelocity(bodies, rows);
+  if (!Classify(rows)) return false;
+  BoundedSystem(rows);
+  if (!Rounds(rows, options, result)) return false;
+  const Eigen::Index n = static_cast<Eigen::Index>(bounded_.size());
   Eigen::VectorXd velocity = v0_;
   if (n > 0) {  // v₀ + h K⁻¹ J_Bᵀ λ = v₀ + h L⁻ᵀ Z λ
     Eigen::VectorXd push = step_ * (z_ * lambda_);
@@ -339,6 +361,91 @@ bool DirectSolver::Solve(const std::vector<NewtonBody>& bodies, const std::vecto
   }
   for (Eigen::Index k = 0; k < n; ++k) result->force[bounded_[k]] = lambda_(k);
   result->converged = velocity.allFinite();
+  return result->converged;
+}
+
+// ---- over a ReducedBasis' generalized velocities ----------------------------------------------
+
+struct DirectSolver::Reduced {
+  ReducedSystem system;
+  ReducedCholesky cholesky;
+  Eigen::VectorXd u0;
+  Eigen::MatrixXd w;  ///< K⁻¹ gᵢ per bounded row (columns)
+};
+
+DirectSolver::DirectSolver() : reduced_(std::make_unique<Reduced>()) {}
+DirectSolver::~DirectSolver() = default;
+
+// K = Sᵀ M S + h Σ_U gᵢ gᵢᵀ / cfmᵢ, factored; u₀ = K⁻¹ (Sᵀ M v_free + h Σ_U gᵢ cᵢ / cfmᵢ)
+bool DirectSolver::FactorReduced(const std::vector<NewtonRow>& rows, const ReducedBasis& basis) {
+  Reduced& r = *reduced_;
+  const ReducedSystem& system = r.system;
+  Eigen::MatrixXd& k = r.cholesky.matrix();
+  k = system.mass();
+  r.u0 = system.free_momentum();
+  for (size_t i = 0; i < rows.size(); ++i) {
+    if (!Unbounded(rows[i])) continue;
+    const double w = step_ / rows[i].cfm;
+    for (size_t e = system.first(i); e < system.first(i + 1); ++e) {
+      for (size_t f = system.first(i); f <= e; ++f) {  // (columns ascend: e's is the larger)
+        k(system.index()[e], system.index()[f]) += w * system.value()[e] * system.value()[f];
+      }
+    }
+    system.AddRow(i, w * rows[i].rhs, &r.u0);
+  }
+  if (!r.cholesky.Factor(basis, system.on_paths())) return false;
+  r.cholesky.Solve(&r.u0);
+  return r.u0.allFinite();
+}
+
+// G = h g_Bᵀ K⁻¹ g_B + diag(cfm_B), r = c_B − g_B u₀
+void DirectSolver::BoundedReduced(const std::vector<NewtonRow>& rows) {
+  Reduced& r = *reduced_;
+  const ReducedSystem& system = r.system;
+  const Eigen::Index n = static_cast<Eigen::Index>(bounded_.size());
+  r.w.setZero(system.size(), n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    Eigen::VectorXd column = Eigen::VectorXd::Zero(system.size());
+    system.AddRow(static_cast<size_t>(bounded_[k]), 1.0, &column);
+    r.cholesky.Solve(&column);
+    r.w.col(k) = column;
+  }
+  g_.resize(n, n);
+  r_.resize(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const size_t row = static_cast<size_t>(bounded_[i]);
+    for (Eigen::Index j = 0; j <= i; ++j) {
+      g_(i, j) = step_ * system.RowVelocity(row, r.w.col(j));
+      g_(j, i) = g_(i, j);
+    }
+    g_(i, i) += rows[row].cfm;
+    r_(i) = rows[row].rhs - system.RowVelocity(row, r.u0);
+  }
+}
+
+bool DirectSolver::SolveReduced(const std::vector<NewtonBody>& bodies,
+                                const std::vector<NewtonRow>& rows, const ReducedBasis& basis,
+                                double step, const DirectOptions& options, NewtonResult* result) {
+  Begin(step, result);
+  Reduced& r = *reduced_;
+  r.system.Build(bodies, rows, basis);
+  if (!FactorReduced(rows, basis) || !Classify(rows)) return false;
+  BoundedReduced(rows);
+  if (!Rounds(rows, options, result)) return false;
+  Eigen::VectorXd u = r.u0;  // u₀ + h K⁻¹ g_B λ
+  if (!bounded_.empty()) u += step_ * (r.w * lambda_);
+  result->velocity.resize(bodies.size());
+  for (size_t k = 0; k < bodies.size(); ++k) {
+    result->velocity[k] = basis.Velocity(static_cast<int>(k), u);
+  }
+  result->force.resize(rows.size());
+  for (size_t i = 0; i < rows.size(); ++i) {
+    result->force[i] = (rows[i].rhs - r.system.RowVelocity(i, u)) / rows[i].cfm;
+  }
+  for (size_t k = 0; k < bounded_.size(); ++k) {
+    result->force[bounded_[k]] = lambda_(static_cast<Eigen::Index>(k));
+  }
+  result->converged = u.allFinite();
   return result->converged;
 }
 

@@ -29,6 +29,7 @@
 // Units: those of newton_solver.h (m, kg, s, N; rows linear then angular, world axes).
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "core/sim/newton_solver.h"
@@ -45,12 +46,30 @@ struct DirectOptions {
 /// The solver keeps its matrices between calls.
 class DirectSolver {
  public:
+  DirectSolver();
+  ~DirectSolver();
+  DirectSolver(const DirectSolver&) = delete;
+  DirectSolver& operator=(const DirectSolver&) = delete;
+
   /// Solves the island's step of `step` seconds into `result` (velocity, force per row,
   /// iterations = active-set changes, rounds); returns result->converged.
   bool Solve(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows, double step,
              const DirectOptions& options, NewtonResult* result);
+  /// The same over the generalized velocities u of `basis` (v = S u, reduced_system.h: K =
+  /// Sᵀ M S + h Σ_U gᵢ gᵢᵀ / cfmᵢ, G = h g_Bᵀ K⁻¹ g_B + diag(cfm_B)); the caller leaves out the
+  /// rows that only hold the basis' joints together (newton_solver.h, SolveReduced).
+  bool SolveReduced(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
+                    const ReducedBasis& basis, double step, const DirectOptions& options,
+                    NewtonResult* result);
 
  private:
+  struct Reduced;  ///< the reduced solve's system, factorization, u₀ and K⁻¹ g_B
+  void Begin(double step, NewtonResult* result);
+  bool Classify(const std::vector<NewtonRow>& rows);
+  bool Rounds(const std::vector<NewtonRow>& rows, const DirectOptions& options,
+              NewtonResult* result);
+  bool FactorReduced(const std::vector<NewtonRow>& rows, const ReducedBasis& basis);
+  void BoundedReduced(const std::vector<NewtonRow>& rows);
   bool FactorBodies(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows);
   void FreeVelocity(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows);
   void BoundedSystem(const std::vector<NewtonRow>& rows);
@@ -76,6 +95,7 @@ class DirectSolver {
   Eigen::MatrixXd g_;
   Eigen::VectorXd r_, lambda_, lo_, hi_;
   std::vector<signed char> state_;  ///< per bounded row: -1 at lo, 0 free, 1 at hi
+  std::unique_ptr<Reduced> reduced_;
 };
 
 }  // namespace lamina::core

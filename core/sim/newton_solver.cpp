@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/sim/reduced_system.h"
+
 namespace lamina::core {
 
 double RowVelocity(const NewtonRow& row, const VecX& v) {
@@ -20,7 +22,7 @@ Vec6 MassTimes(const NewtonBody& body, const Vec6& v) {
   return out;
 }
 
-namespace {
+namespace newton_detail {  // (named: NewtonSolver::BodySpace holds a PairBlocks)
 
 // Σ over bodies of uᵀ M w
 double MassProduct(const std::vector<NewtonBody>& bodies, const VecX& u, const VecX& w) {
@@ -68,18 +70,227 @@ struct PairBlocks {
   }
 };
 
-}  // namespace
+}  // namespace newton_detail
 
-// the direction's size: its largest mass-weighted speed on one body, √(dᵀ M d / m) (a light link
-// of a heavy robot is held to the tolerance as well as the heavy base)
-double NewtonSolver::StepSize(const std::vector<NewtonBody>& bodies) const {
-  double largest = 0.0;
-  for (size_t k = 0; k < bodies.size(); ++k) {
-    const Vec6 d = direction_.segment<6>(6 * k);
-    largest = std::max(largest, d.dot(MassTimes(bodies[k], d)) / bodies[k].mass);
+using newton_detail::MassProduct;
+using newton_detail::PairBlocks;
+
+// The two spaces the Newton solver works in: the unknowns, the mass term of f, the rows' velocity
+// and the Hessian's factorization. The Newton method itself (below) is the same in both.
+
+// every body's own velocity (6 unknowns per body); the Hessian in its block profile
+class NewtonSolver::BodySpace {
+ public:
+  BodySpace(NewtonSolver* solver, const std::vector<NewtonBody>& bodies,
+            const std::vector<NewtonRow>& rows)
+      : s_(*solver), bodies_(bodies), rows_(rows) {}
+
+  Eigen::Index size() const { return 6 * static_cast<Eigen::Index>(bodies_.size()); }
+  void Start(VecX* v) {
+    s_.SetProfile(bodies_.size(), rows_);
+    v->resize(size());
+    s_.v_free_.resize(size());
+    for (size_t k = 0; k < bodies_.size(); ++k) {
+      v->segment<6>(6 * k) = bodies_[k].start;
+      s_.v_free_.segment<6>(6 * k) = bodies_[k].free_velocity;
+    }
   }
-  return std::sqrt(largest);
-}
+  double RowVelocity(size_t i, const VecX& v) const {
+    return lamina::core::RowVelocity(rows_[i], v);
+  }
+  double FreeRowVelocity(size_t i) const { return RowVelocity(i, s_.v_free_); }
+  void AddImpulse(size_t i, double impulse, VecX* gradient) const {
+    const NewtonRow& row = rows_[i];
+    if (row.a >= 0) gradient->segment<6>(6 * row.a) -= impulse * row.ja;
+    if (row.b >= 0) gradient->segment<6>(6 * row.b) -= impulse * row.jb;
+  }
+  // M (v − v_free)
+  void MassGradient(const VecX& v, VecX* gradient) const {
+    for (size_t k = 0; k < bodies_.size(); ++k) {
+      gradient->segment<6>(6 * k) =
+          MassTimes(bodies_[k], v.segment<6>(6 * k) - s_.v_free_.segment<6>(6 * k));
+    }
+  }
+  double MassProduct(const VecX& u, const VecX& w) const {
+    return newton_detail::MassProduct(bodies_, u, w);
+  }
+  // dᵀ M (v − v_free)
+  double MassOffset(const VecX& d, const VecX& v) const {
+    return newton_detail::MassProduct(bodies_, d, v - s_.v_free_);
+  }
+  // ½ (v − v_free)ᵀ M (v − v_free)
+  double MassObjective(const VecX& v) const {
+    return 0.5 * newton_detail::MassProduct(bodies_, v - s_.v_free_, v - s_.v_free_);
+  }
+  void BeginHessian() {
+    s_.cholesky_.Reset(s_.lowest_body_);
+    for (size_t k = 0; k < bodies_.size(); ++k) {
+      ProfileCholesky::Block& diagonal =
+          s_.cholesky_.block(static_cast<int>(k), static_cast<int>(k));
+      diagonal.topLeftCorner<3, 3>().diagonal().setConstant(bodies_[k].mass);
+      diagonal.bottomRightCorner<3, 3>() = bodies_[k].inertia;
+    }
+  }
+  void AddHessianRow(size_t i, double weight) {
+    const NewtonRow& row = rows_[i];
+    if (row.a != blocks_.a || row.b != blocks_.b) {
+      blocks_.Flush(&s_.cholesky_);
+      blocks_.a = row.a;
+      blocks_.b = row.b;
+    }
+    blocks_.Add(row, weight);
+  }
+  void EndHessian() { blocks_.Flush(&s_.cholesky_); }
+  bool Factor() { return s_.cholesky_.Factor(); }
+  void Solve(VecX* b) const { s_.cholesky_.Solve(b); }
+  // the direction's size: its largest mass-weighted speed on one body, √(dᵀ M d / m) (a light
+  // link of a heavy robot is held to the tolerance as well as the heavy base)
+  double StepSize(const VecX& d) const {
+    double largest = 0.0;
+    for (size_t k = 0; k < bodies_.size(); ++k) {
+      const Vec6 dk = d.segment<6>(6 * k);
+      largest = std::max(largest, dk.dot(MassTimes(bodies_[k], dk)) / bodies_[k].mass);
+    }
+    return std::sqrt(largest);
+  }
+  Vec6 BodyVelocity(size_t k, const VecX& v) const { return v.segment<6>(6 * k); }
+
+ private:
+  NewtonSolver& s_;
+  const std::vector<NewtonBody>& bodies_;
+  const std::vector<NewtonRow>& rows_;
+  PairBlocks blocks_;
+};
+
+// the generalized velocities u of a ReducedBasis (v = S u, reduced_system.h): f's mass term
+// ½ (S u − v_free)ᵀ M (S u − v_free) body by body, the Hessian Sᵀ M S + h Σ gᵢ gᵢᵀ / cfmᵢ
+struct NewtonSolver::Reduced {
+  ReducedSystem system;
+  ReducedCholesky cholesky;
+  Eigen::MatrixXd local;  ///< a group's block of the Hessian
+};
+
+class NewtonSolver::ReducedSpace {
+ public:
+  ReducedSpace(NewtonSolver* solver, const std::vector<NewtonBody>& bodies,
+               const std::vector<NewtonRow>& rows, const ReducedBasis& basis)
+      : s_(*solver), r_(*solver->reduced_), bodies_(bodies), rows_(rows), basis_(basis) {}
+
+  Eigen::Index size() const { return basis_.size(); }
+  // the system, the start's coordinates, and u_free (in v_free_): the free velocity mapped in the
+  // mass metric ((Sᵀ M S)⁻¹ Sᵀ M v_free: the u whose S u is nearest to it in kinetic energy)
+  void Start(VecX* u) {
+    r_.system.Build(bodies_, rows_, basis_);
+    r_.local.resize(size(), size());
+    basis_.Coordinates([this](int k) { return bodies_[k].start; }, u);
+    r_.cholesky.matrix() = r_.system.mass();
+    s_.v_free_ = r_.system.free_momentum();
+    // (the mass matrix alone always has the tree's sparsity)
+    if (r_.cholesky.Factor(basis_, true)) r_.cholesky.Solve(&s_.v_free_);
+  }
+  double RowVelocity(size_t i, const VecX& u) const { return r_.system.RowVelocity(i, u); }
+  // at u_free: where the first round's friction bounds come from (the robot falling as a whole,
+  // not each body on its own)
+  double FreeRowVelocity(size_t i) const { return RowVelocity(i, s_.v_free_); }
+  void AddImpulse(size_t i, double impulse, VecX* gradient) const {
+    r_.system.AddRow(i, -impulse, gradient);
+  }
+  // the mass term body by body, centred at each body's free velocity as the body space's is: the
+  // differences Newton's method compares keep their digits
+  void MassGradient(const VecX& u, VecX* gradient) const {
+    gradient->setZero(size());
+    for (int k = 0; k < basis_.bodies(); ++k) {
+      const Vec6 r = MassTimes(bodies_[k], basis_.Velocity(k, u) - bodies_[k].free_velocity);
+      const std::vector<int>& columns = basis_.columns(k);
+      for (size_t c = 0; c < columns.size(); ++c) {
+        (*gradient)[columns[c]] += basis_.block(k).col(static_cast<Eigen::Index>(c)).dot(r);
+      }
+    }
+  }
+  double MassProduct(const VecX& u, const VecX& w) const {
+    double sum = 0.0;
+    for (int k = 0; k < basis_.bodies(); ++k) {
+      sum += basis_.Velocity(k, u).dot(MassTimes(bodies_[k], basis_.Velocity(k, w)));
+    }
+    return sum;
+  }
+  double MassOffset(const VecX& d, const VecX& u) const {
+    double sum = 0.0;
+    for (int k = 0; k < basis_.bodies(); ++k) {
+      const Vec6 offset = basis_.Velocity(k, u) - bodies_[k].free_velocity;
+      sum += basis_.Velocity(k, d).dot(MassTimes(bodies_[k], offset));
+    }
+    return sum;
+  }
+  double MassObjective(const VecX& u) const {
+    double sum = 0.0;
+    for (int k = 0; k < basis_.bodies(); ++k) {
+      const Vec6 offset = basis_.Velocity(k, u) - bodies_[k].free_velocity;
+      sum += offset.dot(MassTimes(bodies_[k], offset));
+    }
+    return 0.5 * sum;
+  }
+  void BeginHessian() {
+    r_.cholesky.matrix() = r_.system.mass();
+    group_ = -1;
+  }
+  // rows over the same columns (a pair's contacts) are summed in a small dense block first
+  void AddHessianRow(size_t i, double weight) {
+    const ReducedSystem& system = r_.system;
+    const size_t first = system.first(i);
+    const Eigen::Index k = static_cast<Eigen::Index>(system.first(i + 1) - first);
+    if (system.group(static_cast<size_t>(i)) != group_) {
+      Flush();
+      group_ = system.group(i);
+      group_row_ = i;
+      r_.local.topLeftCorner(k, k).setZero();
+    }
+    const Eigen::Map<const VecX> g(system.value().data() + first, k);
+    for (Eigen::Index c = 0; c < k; ++c) {
+      r_.local.col(c).segment(c, k - c) += (weight * g[c]) * g.segment(c, k - c);
+    }
+  }
+  void EndHessian() { Flush(); }
+  bool Factor() { return r_.cholesky.Factor(basis_, r_.system.on_paths()); }
+  void Solve(VecX* b) const { r_.cholesky.Solve(b); }
+  double StepSize(const VecX& d) const {
+    double largest = 0.0;
+    for (int k = 0; k < basis_.bodies(); ++k) {
+      const Vec6 dk = basis_.Velocity(k, d);
+      largest = std::max(largest, dk.dot(MassTimes(bodies_[k], dk)) / bodies_[k].mass);
+    }
+    return std::sqrt(largest);
+  }
+  Vec6 BodyVelocity(size_t k, const VecX& u) const {
+    return basis_.Velocity(static_cast<int>(k), u);
+  }
+
+ private:
+  // the group's block into the Hessian's lower triangle (its columns ascend)
+  void Flush() {
+    if (group_ < 0) return;
+    const ReducedSystem& system = r_.system;
+    const size_t first = system.first(group_row_);
+    const Eigen::Index k = static_cast<Eigen::Index>(system.first(group_row_ + 1) - first);
+    const int* index = system.index().data() + first;
+    Eigen::MatrixXd& h = r_.cholesky.matrix();
+    for (Eigen::Index c = 0; c < k; ++c) {
+      for (Eigen::Index r = c; r < k; ++r) h(index[r], index[c]) += r_.local(r, c);
+    }
+    group_ = -1;
+  }
+
+  NewtonSolver& s_;
+  Reduced& r_;
+  const std::vector<NewtonBody>& bodies_;
+  const std::vector<NewtonRow>& rows_;
+  const ReducedBasis& basis_;
+  int group_ = -1;        ///< the group being summed, -1: none
+  size_t group_row_ = 0;  ///< its first row
+};
+
+NewtonSolver::NewtonSolver() : reduced_(std::make_unique<Reduced>()) {}
+NewtonSolver::~NewtonSolver() = default;
 
 // the first block column of each body's block row: the lowest body a row couples it with (the
 // bodies' order is the caller's: a chain in order keeps the profile narrow)
@@ -121,53 +332,46 @@ void NewtonSolver::SetBounds(const std::vector<NewtonRow>& rows) {
 }
 
 // x = c − J v for every row
-void NewtonSolver::RowOffsets(const std::vector<NewtonRow>& rows, const VecX& v) {
-  for (size_t i = 0; i < rows.size(); ++i) x_[i] = rows[i].rhs - RowVelocity(rows[i], v);
+template <class Space>
+void NewtonSolver::RowOffsets(const Space& space, const std::vector<NewtonRow>& rows,
+                              const VecX& v) {
+  for (size_t i = 0; i < rows.size(); ++i) x_[i] = rows[i].rhs - space.RowVelocity(i, v);
 }
 
 // the gradient M (v − v_free) − h Σ J_iᵀ λ_i, with x_ already that of v
-void NewtonSolver::Gradient(const std::vector<NewtonBody>& bodies,
-                            const std::vector<NewtonRow>& rows, const VecX& v) {
-  for (size_t k = 0; k < bodies.size(); ++k) {
-    gradient_.segment<6>(6 * k) =
-        MassTimes(bodies[k], v.segment<6>(6 * k) - v_free_.segment<6>(6 * k));
-  }
-  for (size_t i = 0; i < rows.size(); ++i) {
-    const NewtonRow& row = rows[i];
-    const double impulse = step_ * RowForce(i, x_[i]);
-    if (row.a >= 0) gradient_.segment<6>(6 * row.a) -= impulse * row.ja;
-    if (row.b >= 0) gradient_.segment<6>(6 * row.b) -= impulse * row.jb;
-  }
+template <class Space>
+void NewtonSolver::Gradient(const Space& space, size_t rows, const VecX& v) {
+  space.MassGradient(v, &gradient_);
+  for (size_t i = 0; i < rows; ++i) space.AddImpulse(i, step_ * RowForce(i, x_[i]), &gradient_);
 }
 
-// M + h Σ J_iᵀ J_i / cfm_i over the rows inside their bounds, lower triangle (the profile
-// factorization reads nothing else); remembers which rows those were
-void NewtonSolver::Hessian(const std::vector<NewtonBody>& bodies,
-                           const std::vector<NewtonRow>& rows) {
-  cholesky_.Reset(lowest_body_);
-  for (size_t k = 0; k < bodies.size(); ++k) {
-    ProfileCholesky::Block& diagonal = cholesky_.block(static_cast<int>(k), static_cast<int>(k));
-    diagonal.topLeftCorner<3, 3>().diagonal().setConstant(bodies[k].mass);
-    diagonal.bottomRightCorner<3, 3>() = bodies[k].inertia;
+// M + h Σ J_iᵀ J_i / cfm_i over the rows inside their bounds, and its factorization; remembers
+// which rows those were. The matrix depends on nothing else: when those rows are the ones of the
+// factorization in hand (a new round of friction bounds where the same rows are saturated, a
+// step that only moved inside the same parts of the law), that factorization is kept. False
+// when the matrix is not positive definite.
+template <class Space>
+bool NewtonSolver::Factor(Space& space, size_t rows) {
+  bool same = factored_;
+  for (size_t i = 0; i < rows; ++i) {
+    const signed char regime = Regime(i, x_[i]);
+    same = same && regime == regime_[i];
+    regime_[i] = regime;
   }
-  PairBlocks blocks;
-  for (size_t i = 0; i < rows.size(); ++i) {
-    regime_[i] = Regime(i, x_[i]);
-    if (regime_[i] != 0) continue;
-    const NewtonRow& row = rows[i];
-    if (row.a != blocks.a || row.b != blocks.b) {
-      blocks.Flush(&cholesky_);
-      blocks.a = row.a;
-      blocks.b = row.b;
-    }
-    blocks.Add(row, step_ / cfm_[i]);
+  if (same) return true;
+  space.BeginHessian();
+  for (size_t i = 0; i < rows; ++i) {
+    if (regime_[i] == 0) space.AddHessianRow(i, step_ / cfm_[i]);
   }
-  blocks.Flush(&cholesky_);
+  space.EndHessian();
+  factored_ = space.Factor();
+  return factored_;
 }
 
 // f(v) (J·s) for x_ that of v
-double NewtonSolver::Objective(const std::vector<NewtonBody>& bodies, const VecX& v) const {
-  double value = 0.5 * MassProduct(bodies, v - v_free_, v - v_free_);
+template <class Space>
+double NewtonSolver::Objective(const Space& space, const VecX& v) const {
+  double value = space.MassObjective(v);
   for (size_t i = 0; i < x_.size(); ++i) {
     const double force = RowForce(i, x_[i]);
     // Φ(x) = ∫ λ: x²/(2 cfm) inside the bounds, bound · x − bound² cfm / 2 outside
@@ -194,11 +398,12 @@ double NewtonSolver::Slope(double alpha, double* curvature) const {
 // direction lies nearer, since it moves every row to the side of its kink the linear model
 // predicts at once (the exact minimum stops at the first stiff row that turns on, and a step per
 // row is slow)
-bool NewtonSolver::FullStepDescends(const std::vector<NewtonBody>& bodies, double slope) {
-  const double before = Objective(bodies, v_);
+template <class Space>
+bool NewtonSolver::FullStepDescends(const Space& space, double slope) {
+  const double before = Objective(space, v_);
   for (size_t i = 0; i < x_.size(); ++i) x_[i] -= q_[i];
   trial_ = v_ + direction_;
-  const double after = Objective(bodies, trial_);
+  const double after = Objective(space, trial_);
   for (size_t i = 0; i < x_.size(); ++i) x_[i] += q_[i];
   return after <= before + 1e-4 * slope;
 }
@@ -206,12 +411,12 @@ bool NewtonSolver::FullStepDescends(const std::vector<NewtonBody>& bodies, doubl
 // the exact minimum along the direction: the root of the nondecreasing, piecewise linear slope,
 // by Newton's method kept inside a bracket (the full step first: it is the answer once the rows
 // inside their bounds stop changing)
-double NewtonSolver::LineSearch(const std::vector<NewtonBody>& bodies,
-                                const std::vector<NewtonRow>& rows) {
-  for (size_t i = 0; i < rows.size(); ++i) q_[i] = RowVelocity(rows[i], direction_);
+template <class Space>
+double NewtonSolver::LineSearch(const Space& space, size_t rows) {
+  for (size_t i = 0; i < rows; ++i) q_[i] = space.RowVelocity(i, direction_);
   const double start = Slope(0.0, nullptr);
   if (start >= 0.0) return 0.0;
-  if (FullStepDescends(bodies, start)) return 1.0;
+  if (FullStepDescends(space, start)) return 1.0;
   double low = 0.0, high = kInf, alpha = 1.0;
   for (int k = 0; k < 60; ++k) {
     double bend = 0.0;
@@ -228,21 +433,20 @@ double NewtonSolver::LineSearch(const std::vector<NewtonBody>& bodies,
 
 // Newton steps with the bounds as they are, until a step is below the tolerance or a full step
 // keeps every row in the part of its law it started in (then it landed on the minimum)
-bool NewtonSolver::NewtonSteps(const std::vector<NewtonBody>& bodies,
-                               const std::vector<NewtonRow>& rows, const NewtonOptions& options,
-                               int* budget) {
+template <class Space>
+bool NewtonSolver::NewtonSteps(Space& space, const std::vector<NewtonRow>& rows,
+                               const NewtonOptions& options, int* budget) {
   while (*budget > 0) {
-    RowOffsets(rows, v_);
-    Gradient(bodies, rows, v_);
-    Hessian(bodies, rows);
-    if (!cholesky_.Factor()) return false;
+    RowOffsets(space, rows, v_);
+    Gradient(space, rows.size(), v_);
+    if (!Factor(space, rows.size())) return false;
     direction_ = -gradient_;
-    cholesky_.Solve(&direction_);
-    d_m_d_ = MassProduct(bodies, direction_, direction_);
-    const double size = StepSize(bodies);
+    space.Solve(&direction_);
+    d_m_d_ = space.MassProduct(direction_, direction_);
+    const double size = space.StepSize(direction_);
     if (size <= options.velocity_tolerance) return true;
-    d_m_offset_ = MassProduct(bodies, direction_, v_ - v_free_);
-    const double alpha = LineSearch(bodies, rows);
+    d_m_offset_ = space.MassOffset(direction_, v_);
+    const double alpha = LineSearch(space, rows.size());
     --*budget;
     if (alpha == 0.0) return true;  // no descent left: the minimum within rounding
     v_ += alpha * direction_;
@@ -258,10 +462,20 @@ bool NewtonSolver::NewtonSteps(const std::vector<NewtonBody>& bodies,
 }
 
 // true when the friction bounds of the normal forces now change no friction force
-bool NewtonSolver::BoundsSettled(const std::vector<NewtonRow>& rows, double tolerance) {
-  RowOffsets(rows, v_);
+template <class Space>
+bool NewtonSolver::BoundsSettled(const Space& space, const std::vector<NewtonRow>& rows,
+                                 double tolerance, bool damped) {
+  RowOffsets(space, rows, v_);
   for (size_t i = 0; i < rows.size(); ++i) q_[i] = RowForce(i, x_[i]);  // (q_ as scratch)
+  if (damped) {
+    used_lo_ = lo_;
+    used_hi_ = hi_;
+  }
   SetBounds(rows);
+  for (size_t i = 0; i < rows.size() && damped; ++i) {
+    lo_[i] = 0.5 * (lo_[i] + used_lo_[i]);
+    hi_[i] = 0.5 * (hi_[i] + used_hi_[i]);
+  }
   for (size_t i = 0; i < rows.size(); ++i) {
     if (rows[i].normal < 0) continue;
     const double change = std::abs(RowForce(i, x_[i]) - q_[i]);
@@ -272,16 +486,23 @@ bool NewtonSolver::BoundsSettled(const std::vector<NewtonRow>& rows, double tole
 
 bool NewtonSolver::Solve(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
                          double step, const NewtonOptions& options, NewtonResult* result) {
-  const Eigen::Index n = 6 * static_cast<Eigen::Index>(bodies.size());
+  BodySpace space(this, bodies, rows);
+  return SolveIn(&space, bodies.size(), rows, step, options, result);
+}
+
+bool NewtonSolver::SolveReduced(const std::vector<NewtonBody>& bodies,
+                                const std::vector<NewtonRow>& rows, const ReducedBasis& basis,
+                                double step, const NewtonOptions& options, NewtonResult* result) {
+  ReducedSpace space(this, bodies, rows, basis);
+  return SolveIn(&space, bodies.size(), rows, step, options, result);
+}
+
+template <class Space>
+bool NewtonSolver::SolveIn(Space* space, size_t bodies, const std::vector<NewtonRow>& rows,
+                           double step, const NewtonOptions& options, NewtonResult* result) {
   step_ = step;
-  v_.resize(n);
-  v_free_.resize(n);
-  gradient_.resize(n);
-  SetProfile(bodies.size(), rows);
-  for (size_t k = 0; k < bodies.size(); ++k) {
-    v_.segment<6>(6 * k) = bodies[k].start;
-    v_free_.segment<6>(6 * k) = bodies[k].free_velocity;
-  }
+  space->Start(&v_);
+  gradient_.resize(space->size());
   const size_t m = rows.size();
   lo_.assign(m, 0.0);
   hi_.assign(m, 0.0);
@@ -290,28 +511,30 @@ bool NewtonSolver::Solve(const std::vector<NewtonBody>& bodies, const std::vecto
   cfm_.resize(m);
   regime_.assign(m, 0);
   for (size_t i = 0; i < m; ++i) cfm_[i] = rows[i].cfm;
+  factored_ = false;
   // the first round's friction bounds from the normal forces at the free velocity (with gravity
   // on every contact it loads), the start where the step began
-  RowOffsets(rows, v_free_);
+  for (size_t i = 0; i < m; ++i) x_[i] = rows[i].rhs - space->FreeRowVelocity(i);
   SetBounds(rows);
-  RowOffsets(rows, v_);
+  RowOffsets(*space, rows, v_);
   int budget = options.max_iterations;
   result->converged = false;
   result->rounds = 0;
   while (result->rounds < options.max_rounds) {
     ++result->rounds;
-    if (!NewtonSteps(bodies, rows, options, &budget)) break;
-    if (BoundsSettled(rows, options.bound_tolerance)) {
+    if (!NewtonSteps(*space, rows, options, &budget)) break;
+    if (BoundsSettled(*space, rows, options.bound_tolerance,
+                      result->rounds > options.undamped_rounds)) {
       result->converged = true;
       break;
     }
   }
   result->iterations = options.max_iterations - budget;
-  result->velocity.resize(bodies.size());
-  for (size_t k = 0; k < bodies.size(); ++k) result->velocity[k] = v_.segment<6>(6 * k);
+  result->velocity.resize(bodies);
+  for (size_t k = 0; k < bodies; ++k) result->velocity[k] = space->BodyVelocity(k, v_);
   result->force.resize(m);
   for (size_t i = 0; i < m; ++i) {
-    result->force[i] = RowForce(i, rows[i].rhs - RowVelocity(rows[i], v_));
+    result->force[i] = RowForce(i, rows[i].rhs - space->RowVelocity(i, v_));
   }
   return result->converged;
 }

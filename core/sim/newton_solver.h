@@ -22,6 +22,9 @@
 // velocities) about 7 % of islands need more than 100 Newton steps: the caller hands those back
 // (object_islands.h).
 //
+// A Newton step whose rows inside their bounds are those of the factorization in hand (a new
+// round of friction bounds, most often) keeps it: the matrix is the same.
+//
 // Warm start: Newton starts from `start` (the bodies' velocity before the step): a resting or
 // steadily moving island keeps the rows it had, and the first step lands on the answer. The
 // first round's friction bounds come from the normal forces at the free velocity, where gravity
@@ -33,14 +36,14 @@
 // of mass), as ODE's getInfo2 writes them; a row's velocity is J_a v_a + J_b v_b.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "core/math_types.h"
 #include "core/sim/profile_cholesky.h"
+#include "core/sim/reduced_basis.h"
 
 namespace lamina::core {
-
-using Vec6 = Eigen::Matrix<double, 6, 1>;
 
 /// One free body of the island.
 struct NewtonBody {
@@ -69,6 +72,10 @@ struct NewtonOptions {
   double velocity_tolerance = 1e-12;  ///< a Newton step smaller than this on every body (m/s,
                                       ///< √(dᵀ M d / m) per body) ends
   double bound_tolerance = 1e-9;      ///< relative change of a friction force that needs a round
+  /// rounds whose friction bounds follow the normal forces at once; later rounds move them
+  /// halfway from the last round's (as direct_solver.h does), which damps the back-and-forth of
+  /// contacts whose normal force and friction feed each other without moving the fixed point
+  int undamped_rounds = 1 << 30;
 };
 
 struct NewtonResult {
@@ -87,27 +94,54 @@ Vec6 MassTimes(const NewtonBody& body, const Vec6& v);
 /// The solver keeps its matrices between calls (no allocation once they have grown).
 class NewtonSolver {
  public:
+  NewtonSolver();
+  ~NewtonSolver();
+  NewtonSolver(const NewtonSolver&) = delete;
+  NewtonSolver& operator=(const NewtonSolver&) = delete;
+
   /// Solves the island's step of `step` seconds into `result`; returns result->converged.
   bool Solve(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows, double step,
              const NewtonOptions& options, NewtonResult* result);
+  /// The same row law over the generalized velocities u of `basis` (v = S u, reduced_basis.h):
+  /// the bodies' velocities stay where S puts them, so rows that only hold the basis' joints
+  /// together are left out by the caller. result->velocity is S u per body, result->force per
+  /// row of `rows`. The Hessian is over basis.size() unknowns (reduced_system.h: factored from
+  /// the tree's leaves, or densely).
+  bool SolveReduced(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
+                    const ReducedBasis& basis, double step, const NewtonOptions& options,
+                    NewtonResult* result);
 
  private:
+  class BodySpace;     ///< every body's velocity, the Hessian in its block profile
+  class ReducedSpace;  ///< a ReducedBasis' u (reduced_system.h)
+  struct Reduced;      ///< the reduced space's system and factorization
+
+  template <class Space>
+  bool SolveIn(Space* space, size_t bodies, const std::vector<NewtonRow>& rows, double step,
+               const NewtonOptions& options, NewtonResult* result);
   void SetProfile(size_t bodies, const std::vector<NewtonRow>& rows);
-  double StepSize(const std::vector<NewtonBody>& bodies) const;
   double RowForce(size_t i, double x) const;
   signed char Regime(size_t i, double x) const;
   void SetBounds(const std::vector<NewtonRow>& rows);
-  void RowOffsets(const std::vector<NewtonRow>& rows, const VecX& v);
-  void Gradient(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
-                const VecX& v);
-  void Hessian(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows);
-  double Objective(const std::vector<NewtonBody>& bodies, const VecX& v) const;
-  bool FullStepDescends(const std::vector<NewtonBody>& bodies, double slope);
-  double LineSearch(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows);
+  template <class Space>
+  void RowOffsets(const Space& space, const std::vector<NewtonRow>& rows, const VecX& v);
+  template <class Space>
+  void Gradient(const Space& space, size_t rows, const VecX& v);
+  template <class Space>
+  bool Factor(Space& space, size_t rows);
+  template <class Space>
+  double Objective(const Space& space, const VecX& v) const;
+  template <class Space>
+  bool FullStepDescends(const Space& space, double slope);
+  template <class Space>
+  double LineSearch(const Space& space, size_t rows);
   double Slope(double alpha, double* curvature) const;
-  bool NewtonSteps(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
-                   const NewtonOptions& options, int* budget);
-  bool BoundsSettled(const std::vector<NewtonRow>& rows, double tolerance);
+  template <class Space>
+  bool NewtonSteps(Space& space, const std::vector<NewtonRow>& rows, const NewtonOptions& options,
+                   int* budget);
+  template <class Space>
+  bool BoundsSettled(const Space& space, const std::vector<NewtonRow>& rows, double tolerance,
+                     bool damped);
 
   double step_ = 0.0;
   VecX v_, v_free_, gradient_, direction_, trial_;
@@ -115,8 +149,11 @@ class NewtonSolver {
   std::vector<int> lowest_body_;  ///< the Hessian's block profile: per body, the lowest body a
                                   ///< row couples it with
   std::vector<double> lo_, hi_, cfm_, x_, q_;  ///< per row: bounds now, CFM, c − J v, J d
+  std::vector<double> used_lo_, used_hi_;      ///< per row: the last round's bounds
   std::vector<signed char> regime_;            ///< per row: the part of its law in the Hessian
   double d_m_d_ = 0.0, d_m_offset_ = 0.0;
+  bool factored_ = false;             ///< the factorization in hand is that of regime_
+  std::unique_ptr<Reduced> reduced_;  ///< the reduced space's
 };
 
 }  // namespace lamina::core

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <string>
 
 #include <ode/ode.h>
 
@@ -11,6 +12,7 @@
 #include "core/sim/ode_contact_rows.h"
 #include "core/sim/ode_conversions.h"
 #include "core/sim/ode_joint_rows.h"
+#include "core/sim/reduced_basis.h"
 
 namespace lamina::core {
 
@@ -42,6 +44,10 @@ struct ObjectIslands::Island {
   std::vector<size_t> joint_members;  ///< its kept joints
   NewtonSolver solver;
   DirectSolver direct;
+  // the reduced step (SolveReduced): per body its joint to its parent, its centre, the basis
+  std::vector<TreeLink> tree;
+  std::vector<Vec3> centres;
+  ReducedBasis basis;
   NewtonResult result;
   bool newton_tried = false;  ///< this island's solve began with Newton steps
 
@@ -66,6 +72,7 @@ void ObjectIslands::Begin(int count, bool exact, int direct_bodies, int newton_c
   local_.assign(count, -1);
   kept_.clear();
   joints_.clear();
+  reduced_joints_.clear();
 }
 
 int ObjectIslands::Root(int id) {
@@ -138,6 +145,8 @@ void ObjectIslands::Island::Clear() {
   bodies.clear();
   rows.clear();
   first_row.clear();
+  tree.clear();
+  centres.clear();
 }
 
 // a free body of the island: its mass, world inertia and the velocity ODE's step gives it
@@ -164,6 +173,8 @@ void ObjectIslands::Island::AddBody(int id, dBodyID body, dWorldID world, double
   b.free_velocity.head<3>() += step * force / b.mass;
   b.free_velocity.tail<3>() += step * b.inertia.ldlt().solve(torque);
   bodies.push_back(b);
+  centres.push_back(ToVec3(dBodyGetPosition(body)));
+  tree.emplace_back();
 }
 
 void ObjectIslands::SolveIsland(dWorldID world, dJointGroupID group, double step) {
@@ -174,7 +185,11 @@ void ObjectIslands::SolveIsland(dWorldID world, dJointGroupID group, double step
     return;
   }
   ++statistics_.islands;
-  const bool built = BuildIsland(world, step);
+  if (reduced_ && robot && !exact_ && SolveReduced(world, step)) {
+    Finish(step, true);
+    return;
+  }
+  const bool built = BuildIsland(world, step, false);
   const bool large_robot =
       direct_bodies_ > 0 && robot && static_cast<int>(island.bodies.size()) >= direct_bodies_;
   // (every robot the exact solver keeps is a large one: Simulator::PrepareObjectIslands)
@@ -186,28 +201,87 @@ void ObjectIslands::SolveIsland(dWorldID world, dJointGroupID group, double step
     HandBack(world, group);
     return;
   }
+  Finish(step, false);
+}
+
+// the solved island's forces into its bodies; its robot joints off for ODE's step (it only
+// integrates: Restore enables them again), and after a reduced step remembered for
+// SolvedReduced
+void ObjectIslands::Finish(double step, bool reduced) {
+  Island& island = *island_;
   island.ApplyForces(kept_, step);
   for (size_t j : island.joint_members) {
-    dJointDisable(joints_[j].joint);  // ODE's step only integrates: Restore enables it again
+    dJointDisable(joints_[j].joint);
     disabled_.push_back(joints_[j].joint);
+    if (reduced) reduced_joints_.push_back(joints_[j].joint);
   }
+}
+
+// the robot island in its generalized velocities (reduced_basis.h): a few Newton steps, then the
+// direct solve (both cheap here: no joint rows, one unknown per joint), with the large robots'
+// backoff (SolveLargeRobot); false when its joints do not form a tree or neither settles it (the
+// caller takes the island over every body)
+bool ObjectIslands::SolveReduced(dWorldID world, double step) {
+  Island& island = *island_;
+  std::string why;
+  if (!BuildIsland(world, step, true) || !island.basis.Build(island.centres, island.tree, &why)) {
+    return false;
+  }
+  ++statistics_.reduced_islands;
+  RobotBackoff& backoff = BackoffOf(joints_[island.joint_members.front()].joint);
+  bool converged = false;
+  if (NewtonDue(&backoff)) {
+    ++statistics_.newton_islands;
+    NewtonOptions options;
+    options.max_iterations = kReducedNewtonSteps;
+    options.undamped_rounds = kUndampedReducedRounds;
+    converged = island.solver.SolveReduced(island.bodies, island.rows, island.basis, step, options,
+                                           &island.result);
+    statistics_.iterations += island.result.iterations;
+    RecordNewton(&backoff, converged);
+  }
+  if (!converged) {
+    ++statistics_.direct_islands;
+    converged = island.direct.SolveReduced(island.bodies, island.rows, island.basis, step, {},
+                                           &island.result);
+    if (!converged) ++statistics_.direct_fallbacks;
+  }
+  if (!converged) ++statistics_.reduced_fallbacks;
+  return converged;
+}
+
+bool ObjectIslands::SolvedReduced(const dxJoint* joint) const {
+  return std::find(reduced_joints_.begin(), reduced_joints_.end(), joint) != reduced_joints_.end();
 }
 
 // A large robot's island: kNewtonStepsBeforeDirect Newton steps, then the direct solve, unless
 // its last Newton steps failed (kMostDirectSteps)
 bool ObjectIslands::SolveLargeRobot(double step) {
   RobotBackoff& backoff = BackoffOf(joints_[island_->joint_members.front()].joint);
-  if (!robot_newton_ || backoff.direct_steps > 0) {
-    backoff.direct_steps = std::max(0, backoff.direct_steps - 1);
-    return SolveDirectly(step);
+  if (robot_newton_ && NewtonDue(&backoff)) {
+    const bool settled = SolveNewton(true, step);
+    RecordNewton(&backoff, settled);
+    if (settled) return true;
   }
-  if (SolveNewton(true, step)) {
-    backoff.failures = 0;
-    return true;
-  }
-  backoff.direct_steps = std::min(1 << std::min(backoff.failures, 4), kMostDirectSteps);
-  ++backoff.failures;
   return SolveDirectly(step);
+}
+
+// whether a robot's Newton steps are to be tried this step (not while its backoff runs)
+bool ObjectIslands::NewtonDue(RobotBackoff* backoff) {
+  if (backoff->direct_steps == 0) return true;
+  --backoff->direct_steps;
+  return false;
+}
+
+// after n failed Newton solves in a row, the next min(2ⁿ⁻¹, kMostDirectSteps) steps go straight
+// to the direct solve
+void ObjectIslands::RecordNewton(RobotBackoff* backoff, bool settled) {
+  if (settled) {
+    backoff->failures = 0;
+    return;
+  }
+  backoff->direct_steps = std::min(1 << std::min(backoff->failures, 4), kMostDirectSteps);
+  ++backoff->failures;
 }
 
 ObjectIslands::RobotBackoff& ObjectIslands::BackoffOf(const dxJoint* robot) {
@@ -246,8 +320,9 @@ bool ObjectIslands::SolveNewton(bool large_robot, double step) {
 
 // the island's bodies (a robot's children first, then its parents: the order the joints were
 // kept in, for a narrow profile; then the contacts' bodies) and rows; false when a joint is not
-// one ode_joint_rows.h replicates
-bool ObjectIslands::BuildIsland(dWorldID world, double step) {
+// one ode_joint_rows.h replicates. `reduced`: for the reduced step, without the rows that hold a
+// hinge or slider together, which set the island's tree instead
+bool ObjectIslands::BuildIsland(dWorldID world, double step, bool reduced) {
   Island& island = *island_;
   island.Clear();
   auto add = [&](int id, dBodyID body) {
@@ -273,11 +348,35 @@ bool ObjectIslands::BuildIsland(dWorldID world, double step) {
   for (size_t j : island.joint_members) {
     const KeptJoint& kept = joints_[j];
     const int ib = kept.b >= 0 ? local_[kept.b] : -1;
-    known =
-        known && JointRows(kept.joint, local_[kept.a], ib, kept.frame, world, step, &island.rows);
+    known = known && JointRows(kept.joint, local_[kept.a], ib, kept.frame, world, step,
+                               &island.rows, !reduced);
+    if (known && reduced) known = AddTreeLink(kept.joint, local_[kept.a], ib);
   }
   for (int id : island.ids) local_[id] = -1;
   return known;
+}
+
+// a hinge's or slider's link in the tree of the reduced step (in place of the rows that hold it
+// together); false when the child already has a parent (a loop)
+bool ObjectIslands::AddTreeLink(dJointID joint, int child, int parent) {
+  Island& island = *island_;
+  const int type = dJointGetType(joint);
+  if (type != dJointTypeHinge && type != dJointTypeSlider) return true;
+  TreeLink& link = island.tree[child];
+  if (link.kind != TreeLink::Kind::kFree) return false;
+  dVector3 axis, anchor;
+  if (type == dJointTypeHinge) {
+    link.kind = TreeLink::Kind::kHinge;
+    dJointGetHingeAxis(joint, axis);
+    dJointGetHingeAnchor(joint, anchor);
+    link.anchor = ToVec3(anchor);
+  } else {
+    link.kind = TreeLink::Kind::kSlider;
+    dJointGetSliderAxis(joint, axis);
+  }
+  link.axis = ToVec3(axis);
+  link.parent = parent;
+  return true;
 }
 
 // ODE's solver takes the island: its contact joints are made (its robot joints stay enabled)

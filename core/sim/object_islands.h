@@ -40,13 +40,15 @@ namespace lamina::core {
 class ObjectIslands {
  public:
   struct Statistics {
-    long long islands = 0;           ///< islands taken (by either solver)
-    long long fallbacks = 0;         ///< islands handed back to ODE's solver (no convergence)
-    long long newton_islands = 0;    ///< islands the Newton solver was given first
-    long long newton_fallbacks = 0;  ///< of those, handed back to ODE's solver
-    long long iterations = 0;        ///< Newton steps in all
-    long long direct_islands = 0;    ///< islands the direct solve was given
-    long long direct_fallbacks = 0;  ///< of those, not settled (then ODE's)
+    long long islands = 0;            ///< islands taken (by either solver)
+    long long fallbacks = 0;          ///< islands handed back to ODE's solver (no convergence)
+    long long newton_islands = 0;     ///< islands the Newton solver was given first
+    long long newton_fallbacks = 0;   ///< of those, handed back to ODE's solver
+    long long iterations = 0;         ///< Newton steps in all
+    long long direct_islands = 0;     ///< islands the direct solve was given
+    long long direct_fallbacks = 0;   ///< of those, not settled (then ODE's)
+    long long reduced_islands = 0;    ///< robot islands given the reduced step
+    long long reduced_fallbacks = 0;  ///< of those, not converged (then the Newton solver's)
   };
 
   /// Newton steps a large robot's island gets before the direct solve (SolveNewton).
@@ -55,6 +57,11 @@ class ObjectIslands {
   /// goes straight to the direct solve for the next min(2^(n−1), kMostDirectSteps) steps: on
   /// rough ground, where the Newton step seldom settles, it is not paid every step.
   static constexpr int kMostDirectSteps = 16;
+  /// Rounds of friction bounds a reduced step takes at once before it damps them
+  /// (NewtonOptions::undamped_rounds): wheels landing sliding swing from round to round.
+  static constexpr int kUndampedReducedRounds = 10;
+  /// Newton steps a reduced step takes before the direct solve (SolveReduced).
+  static constexpr int kReducedNewtonSteps = 4;
 
   ObjectIslands();
   ~ObjectIslands();
@@ -75,6 +82,15 @@ class ObjectIslands {
   /// change their law, as on a humanoid standing on a plane, one Newton step is the cheapest
   /// exact answer. Off: the direct solve alone.
   void SetRobotNewtonStep(bool newton) { robot_newton_ = newton; }
+  /// Whether the Newton solver (not the exact one) takes a robot's island in its generalized
+  /// velocities (reduced_basis.h: one unknown per hinge or slider and six per free body, no
+  /// joint rows; the world's `jointCoordinates`, off by default). The caller then places the
+  /// robot's bodies on their joints after ODE's step (SolvedReduced,
+  /// OdeRobot::ProjectOntoJoints). An island whose joints do not form a tree, or whose reduced
+  /// step does not settle, is solved over every body as without.
+  void SetReducedRobots(bool reduced) { reduced_ = reduced; }
+  /// After Solve: whether `joint` (a kept robot joint) was in an island given the reduced step.
+  bool SolvedReduced(const dxJoint* joint) const;
   /// `id`'s island is ODE's (a body with a persistent ODE joint, dragged, a robot the Newton
   /// solver does not take).
   void MarkOde(int id) { ode_[Root(id)] = 1; }
@@ -116,7 +132,12 @@ class ObjectIslands {
     int failures = 0;
   };
   RobotBackoff& BackoffOf(const dxJoint* robot);
-  bool BuildIsland(dxWorld* world, double step);
+  static bool NewtonDue(RobotBackoff* backoff);
+  static void RecordNewton(RobotBackoff* backoff, bool settled);
+  bool BuildIsland(dxWorld* world, double step, bool reduced);
+  bool AddTreeLink(dxJoint* joint, int child, int parent);
+  bool SolveReduced(dxWorld* world, double step);
+  void Finish(double step, bool reduced);
   void HandBack(dxWorld* world, dxJointGroup* group);
 
   std::vector<int> parent_;
@@ -128,9 +149,11 @@ class ObjectIslands {
   std::unique_ptr<Island> island_;
   Statistics statistics_;
   bool exact_ = false;
-  int direct_bodies_ = 0;     ///< Begin
-  int newton_contacts_ = 0;   ///< Begin
-  bool robot_newton_ = true;  ///< SetRobotNewtonStep
+  int direct_bodies_ = 0;                       ///< Begin
+  int newton_contacts_ = 0;                     ///< Begin
+  bool robot_newton_ = true;                    ///< SetRobotNewtonStep
+  bool reduced_ = false;                        ///< SetReducedRobots
+  std::vector<const dxJoint*> reduced_joints_;  ///< SolvedReduced
   std::vector<RobotBackoff> backoff_;
 };
 

@@ -14,8 +14,9 @@ namespace {
 // what the rows of one joint share
 struct JointContext {
   int ia, ib;
-  bool has_b;  ///< the second body is a body (not the world)
-  double cfm;  ///< the world's
+  bool has_b;      ///< the second body is a body (not the world)
+  double cfm;      ///< the world's
+  bool tree_rows;  ///< JointRows' `tree_rows`
 };
 
 Vec6 Stack(const Vec3& linear, const Vec3& angular) {
@@ -91,10 +92,14 @@ bool HingeRows(dJointID joint, const JointContext& c, const Vec3& axis2, double 
   if (dJointGetHingeParam(joint, dParamFMax) > 0.0 ||
       dJointGetHingeParam(joint, dParamBounce) > 0.0)
     return false;
-  const double k = erp / step;
-  BallRows(joint, c, k, rows);
   dVector3 axis1;
   dJointGetHingeAxis(joint, axis1);
+  if (!c.tree_rows) {
+    HingeStopRow(joint, c, ToVec3(axis1), step, rows);
+    return true;
+  }
+  const double k = erp / step;
+  BallRows(joint, c, k, rows);
   dVector3 p, q;
   dPlaneSpace(axis1, p, q);
   const Vec3 ax1 = ToVec3(axis1);
@@ -193,10 +198,14 @@ bool SliderRows(dJointID joint, const JointContext& c, const JointFrame& frame, 
       dJointGetSliderParam(joint, dParamBounce) > 0.0) {
     return false;
   }
-  const double k = erp / step;
-  FixedOrientationRows(joint, c, frame, k, rows);
   dVector3 axis1;
   dJointGetSliderAxis(joint, axis1);
+  if (!c.tree_rows) {
+    SliderStopRow(joint, c, ToVec3(axis1), step, rows);
+    return true;
+  }
+  const double k = erp / step;
+  FixedOrientationRows(joint, c, frame, k, rows);
   dVector3 p, q;
   dPlaneSpace(axis1, p, q);
   const Vec3 position1 = ToVec3(dBodyGetPosition(dJointGetBody(joint, 0)));
@@ -238,8 +247,8 @@ bool LinearMotorRows(dJointID joint, const JointContext& c, const JointFrame& fr
 }  // namespace
 
 bool JointRows(dJointID joint, int ia, int ib, const JointFrame& frame, dWorldID world, double step,
-               std::vector<NewtonRow>* rows) {
-  const JointContext c{ia, ib, dJointGetBody(joint, 1) != nullptr, dWorldGetCFM(world)};
+               std::vector<NewtonRow>* rows, bool tree_rows) {
+  const JointContext c{ia, ib, dJointGetBody(joint, 1) != nullptr, dWorldGetCFM(world), tree_rows};
   const size_t before = rows->size();
   bool known = false;
   switch (dJointGetType(joint)) {

@@ -47,8 +47,10 @@ struct JointFrame {
 /// The rows of `joint` (a hinge, a slider, a user-mode angular motor or a linear motor) between
 /// island bodies `ia` (its first body) and `ib` (its second, -1 for the world) appended to
 /// `rows`. World ERP/CFM are read from `world`; `step` in s. Returns false, appending nothing,
-/// for a joint or a state outside what is replicated (above).
+/// for a joint or a state outside what is replicated (above). Without `tree_rows` a hinge or
+/// slider gives only its stop row, not the five that hold it together (the Newton solver's
+/// reduced step keeps those joints by its basis instead: reduced_basis.h).
 bool JointRows(dxJoint* joint, int ia, int ib, const JointFrame& frame, dxWorld* world, double step,
-               std::vector<NewtonRow>* rows);
+               std::vector<NewtonRow>* rows, bool tree_rows = true);
 
 }  // namespace lamina::core

@@ -479,7 +479,13 @@ void OdeRobot::SetConfig(const VecX& q) {
 void OdeRobot::SetVelocity(const VecX& dq) {
   VecX q;
   GetConfig(&q);
-  const std::vector<Pose> frames = LinkTransforms(robot_, q);
+  SetLinkVelocities(LinkTransforms(robot_, q), dq, nullptr);
+}
+
+// every body's velocity for joint rates dq at link frames `frames`, parents first; with `base`
+// (angular, then its origin's linear) the floating link moves so, whatever dq says of it
+void OdeRobot::SetLinkVelocities(const std::vector<Pose>& frames, const VecX& dq,
+                                 const Vec6* base) {
   std::vector<Vec3> w(dof(), Vec3::Zero()), v(dof(), Vec3::Zero());  // at link origins
   for (int i = 0; i < dof(); ++i) {
     const LinkDesc& desc = robot_.links[i];
@@ -487,6 +493,11 @@ void OdeRobot::SetVelocity(const VecX& dq) {
       w[i] = w[desc.parent];
       v[i] = v[desc.parent] +
              w[desc.parent].cross(frames[i].translation() - frames[desc.parent].translation());
+    }
+    if (base != nullptr && i == floating_link_) {
+      w[i] = base->head<3>();
+      v[i] = base->tail<3>();
+      continue;
     }
     if (joint_types_[i] == JointType::kWeld) continue;
     const Vec3 axis = frames[i].linear() * desc.axis.normalized();
@@ -503,6 +514,39 @@ void OdeRobot::SetVelocity(const VecX& dq) {
     dBodySetLinearVel(link.body, com_velocity.x(), com_velocity.y(), com_velocity.z());
     dBodySetAngularVel(link.body, w[i].x(), w[i].y(), w[i].z());
   }
+}
+
+void OdeRobot::ProjectOntoJoints() {
+  VecX q;
+  GetConfig(&q);
+  std::vector<Pose> frames = LinkTransforms(robot_, q);
+  Vec6 base = Vec6::Zero();  // the floating link's ω and its origin's velocity
+  if (floating_link_ >= 0) {
+    const Link& link = links_[floating_link_];
+    Pose actual = Pose::Identity();
+    actual.linear() = ToMat3(dBodyGetRotation(link.body));
+    actual.translation() = ToVec3(dBodyGetPosition(link.body)) - actual.linear() * link.com;
+    // (q's base came through roll, pitch and yaw: the frames move onto the body as it is)
+    const Pose correction = actual * frames[floating_link_].inverse();
+    for (Pose& frame : frames) frame = correction * frame;
+    const Vec3 w = ToVec3(dBodyGetAngularVel(link.body));
+    base << w, ToVec3(dBodyGetLinearVel(link.body)) - w.cross(actual.linear() * link.com);
+  }
+  VecX dq = VecX::Zero(dof());  // the joint rates as ODE reads them
+  for (int i = 0; i < dof(); ++i) {
+    const dJointID joint = links_[i].joint;
+    if (joint == nullptr) continue;
+    dq[i] = robot_.links[i].axis_type == LinkJointAxis::kRevolute
+                ? dJointGetHingeAngleRate(joint)
+                : dJointGetSliderPositionRate(joint);
+  }
+  for (int i = 0; i < dof(); ++i) {
+    const Link& link = links_[i];
+    if (link.owns_body && i != floating_link_) {
+      PlaceBody(link.body, frames[i].linear(), frames[i] * link.com);
+    }
+  }
+  SetLinkVelocities(frames, dq, floating_link_ >= 0 ? &base : nullptr);
 }
 
 void OdeRobot::ApplyLinkForces(const VecX& forces) {

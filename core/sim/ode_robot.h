@@ -65,6 +65,12 @@ class OdeRobot {
   /// Places every body for configuration q / joint rates dq (teleports the robot).
   void SetConfig(const VecX& q);
   void SetVelocity(const VecX& dq);
+  /// Places every body on its joints: the joint values and rates as ODE reads them (relative
+  /// rotations, slider positions), the floating base's body (or the fixed base) where it is.
+  /// What a step that integrated each body on its own left of a joint's drift (a child off its
+  /// hinge's anchor or axis) is removed, and each body's velocity is the one its joints give it
+  /// (the Newton solver's reduced step: reduced_basis.h).
+  void ProjectOntoJoints();
 
   /// After robot().links[i]'s q_min/q_max changed: the joint's stops follow. A revolute joint
   /// whose new range no longer fits in its built half-turn counts turns from now on.
@@ -106,6 +112,8 @@ class OdeRobot {
   void SetStops(int i);
   void SetJointMotor(int i, double fmax, double cfm);
   double HingeAngle(int i) const;
+  void SetLinkVelocities(const std::vector<Pose>& frames, const VecX& dq,
+                         const Eigen::Matrix<double, 6, 1>* base);
   Pose FloatingBaseLocalFrame() const;
 
   const RobotDesc& robot_;

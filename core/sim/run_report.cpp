@@ -91,6 +91,7 @@ std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
         {"fallbacks", stats.newton_fallbacks},
         {"iterations", stats.newton_iterations}}},
       {"direct", {{"islands", stats.direct_islands}, {"fallbacks", stats.direct_fallbacks}}},
+      {"reduced", {{"islands", stats.reduced_islands}, {"fallbacks", stats.reduced_fallbacks}}},
       {"mesh_pairs",
        {{"searches", simulator.ContactPairSearches()}, {"reused", simulator.ContactPairReuses()}}},
       {"sleeping_objects", simulator.SleepingObjectCount()}};

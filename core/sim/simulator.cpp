@@ -438,12 +438,26 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     MarkOdeWorldFailed(ode_world_.get());
   }
   islands_.Restore();  // the robot joints the Newton solver took, back in ODE
+  if (result == IntegrateResult::kOk && islands_active_) ProjectReducedRobots();
   dJointGroupEmpty(contact_group_.get());
   statistics_.time_split.solver += watch.Lap();
   if (result == IntegrateResult::kOk && !bodies_.StateIsFinite()) {
     result = IntegrateResult::kNonFinite;
   }
   return result;
+}
+
+// the robots the Newton solver took in their joint coordinates: their bodies back on their joints
+// (the step integrated each body on its own: object_islands.h)
+void Simulator::ProjectReducedRobots() {
+  for (int r = 0; r < robot_count(); ++r) {
+    OdeRobot& robot = *robots_[r];
+    for (int l = 0; l < robot.dof(); ++l) {
+      if (robot.link(l).joint == nullptr) continue;
+      if (islands_.SolvedReduced(robot.link(l).joint)) robot.ProjectOntoJoints();
+      break;
+    }
+  }
 }
 
 // everything ODE solves in the step: kinematic motion, contact rows (with the friction anchors),
@@ -495,6 +509,8 @@ void Simulator::BuildConstraints(double step) {
     statistics_.newton_islands += after.newton_islands - before.newton_islands;
     statistics_.newton_fallbacks += after.newton_fallbacks - before.newton_fallbacks;
     statistics_.newton_iterations += after.iterations - before.iterations;
+    statistics_.reduced_islands += after.reduced_islands - before.reduced_islands;
+    statistics_.reduced_fallbacks += after.reduced_fallbacks - before.reduced_fallbacks;
   }
 }
 

@@ -471,6 +471,7 @@ class Simulator {
   void MeasureJointGaps(int robot, std::vector<double>* gaps);
   void MeasureRobotJointGapsBefore();
   int StopBrokenRobots(std::vector<int>* ids);
+  void ProjectReducedRobots();
   void RestoreControllers(const SimState& state);
   void RobotLinksChanged(int robot, unsigned changes);
   int RequireRobot(int robot) const;

@@ -156,6 +156,7 @@ void Simulator::KeepRobotJoints(int robot) {
 void Simulator::PrepareObjectIslands(bool exact) {
   islands_.Begin(bodies_.size(), exact, direct_robots_ ? direct_min_bodies_ : 0,
                  newton_objects_ ? kNewtonObjectContacts : 0);
+  islands_.SetReducedRobots(world_.settings.joint_coordinates);
   for (int r = 0; r < robot_count(); ++r) {
     if (RobotForIslands(r) && (!exact || (direct_robots_ && OwnBodies(r) >= direct_min_bodies_))) {
       KeepRobotJoints(r);

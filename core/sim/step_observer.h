@@ -57,6 +57,10 @@ struct SimStatistics {
   long direct_islands = 0;
   /// of those, not settled: handed back to dWorldStep
   long direct_fallbacks = 0;
+  /// robot islands the Newton solver took in their joint coordinates (reduced_basis.h), and of
+  /// those, not converged (then solved over every body)
+  long reduced_islands = 0;
+  long reduced_fallbacks = 0;
   StepStatus worst_status = StepStatus::kNormal;
   std::string error;  ///< what stopped the simulation (kError)
   SimTimeSplit time_split;

@@ -46,8 +46,10 @@ Vec3 BasePosition(const core::Simulator& simulator) {
 // ATHLETE dropped on the fractal terrain stands: its base moves less than the 1 cm over
 // the last 2 of 5 s
 // `handed_back`: the largest share of the direct solves that may go back to dWorldStep
-void ExpectAthleteStands(const core::SolverSettings& solver, double handed_back = 0.01) {
-  const core::WorldDesc world = LoadRobotWorld("klampt/athlete_fractal_1.xml");
+void ExpectAthleteStands(const core::SolverSettings& solver, double handed_back = 0.01,
+                         bool joint_coordinates = false) {
+  core::WorldDesc world = LoadRobotWorld("klampt/athlete_fractal_1.xml");
+  world.settings.joint_coordinates = joint_coordinates;
   core::Simulator simulator(world, solver);
   const auto start = std::chrono::steady_clock::now();
   simulator.Simulate(3.0);
@@ -83,6 +85,12 @@ TEST(RobotWorldsTest, AthleteDropsOnFractalTerrainAndStands) {
 // steps, so more of them go back to dWorldStep: 19 of 2069 measured.
 TEST(RobotWorldsTest, AthleteStandsWithTheNewtonSolver) {
   ExpectAthleteStands({core::SolverType::kNewton, 20}, 0.03);
+}
+
+// in joint coordinates (jointCoordinates: reduced_basis.h) every step's robot island is solved over
+// its 42 joint coordinates, and the robot stands as in the bodies' own
+TEST(RobotWorldsTest, AthleteStandsInJointCoordinates) {
+  ExpectAthleteStands({core::SolverType::kNewton, 20}, 0.03, true);
 }
 
 // QuickStep leaves the friction of ATHLETE's light feet unconverged: without friction anchors
@@ -313,6 +321,28 @@ TEST(RobotWorldsTest, Hrp2StandsWithTheNewtonSolver) {
 
 TEST(RobotWorldsTest, Hrp2StandsWithTheNewtonSolverAlone) {
   ExpectHrp2StandsWithTheNewtonSolver(false);
+}
+
+// HRP-2 in joint coordinates: every step's island is the reduced step's (one unknown per joint),
+// its joints keep no gap, and it stands as over its bodies (the base still over the last 2 s)
+TEST(RobotWorldsTest, Hrp2StandsInJointCoordinates) {
+  test::LoadedWorld loaded;
+  test::LoadWorld(test::WorldsPath("klampt/hrp2_plane.xml"), &loaded);
+  ASSERT_TRUE(loaded.ok) << loaded.diagnostics.FormatAll();
+  loaded.world.settings.joint_coordinates = true;
+  core::Simulator simulator(loaded.world, {core::SolverType::kNewton, 20});
+  simulator.Simulate(3.0);
+  const VecX settled = simulator.GetRobotConfig(0);
+  simulator.Simulate(2.0);
+  const core::SimStatistics& statistics = simulator.statistics();
+  ASSERT_NE(statistics.worst_status, core::StepStatus::kError);
+  const VecX q = simulator.GetRobotConfig(0);
+  EXPECT_LT((q.head<3>() - settled.head<3>()).norm(), 1e-4);
+  EXPECT_NEAR(q[2], 0.0, 0.006);
+  EXPECT_LT(q.segment(3, 3).cwiseAbs().maxCoeff(), 0.01);
+  EXPECT_GE(statistics.reduced_islands, statistics.steps);
+  EXPECT_EQ(statistics.reduced_fallbacks, 0);
+  EXPECT_EQ(statistics.instability_corrections, 0);
 }
 
 // sphere.rob: a sphere on a translating floating base (3 virtual links) held by translation

@@ -62,6 +62,29 @@ TEST(DirectSolverTest, AThousandToOneStackHolds) {
   EXPECT_TRUE(test::ExpectAThousandToOneStackHolds(&solver).converged);
 }
 
+// a stop row bounded on one side only (a hinge at its upper stop: lo = −∞, hi = 0) settles in one
+// round; its infinite bound once made the rounds' test ∞ − ∞ and the solve never settled
+TEST(DirectSolverTest, AStopRowWithAnInfiniteBoundSettles) {
+  const double h = 0.001;
+  Vec6 start = Vec6::Zero();
+  start(2) = 1.0;  // rising into the stop
+  const std::vector<NewtonBody> bodies = {IslandBody(1.0, start, h)};
+  NewtonRow stop;
+  stop.a = 0;
+  stop.ja << Vec3::UnitZ(), Vec3::Zero();
+  stop.lo = -kInf;
+  stop.hi = 0.0;
+  DirectSolver solver;
+  NewtonResult result;
+  ASSERT_TRUE(solver.Solve(bodies, {stop}, h, {}, &result));
+  EXPECT_EQ(result.rounds, 1);
+  // the stop holds the body: m (v' − v_free) = h λ with v' = −cfm λ, so λ = −m v_free / (h + m cfm)
+  const double v_free = 1.0 - kIslandGravity * h, cfm = stop.cfm;
+  const double force = -v_free / (h + cfm);
+  EXPECT_NEAR(result.force[0], force, 1e-9 * std::abs(force));
+  EXPECT_NEAR(result.velocity[0](2), -cfm * force, 1e-12);
+}
+
 TEST(DirectSolverTest, AHangingChainIsHeldByItsUnboundedRowsAlone) {
   // three 1 kg cubes hanging from the world by ball joints 10 cm apart, at rest: every joint
   // carries the weight below it (to the joints' give, cfm·λ in series: 5e-6 of it at 1 ms), and
