@@ -352,15 +352,14 @@ void NewtonSolver::Gradient(const Space& space, size_t rows, const VecX& v) {
 // when the matrix is not positive definite.
 template <class Space>
 bool NewtonSolver::Factor(Space& space, size_t rows) {
-  bool same = factored_;
-  for (size_t i = 0; i < rows; ++i) {
-    const signed char regime = Regime(i, x_[i]);
-    same = same && regime == regime_[i];
-    regime_[i] = regime;
+  if (factored_) {
+    bool same = true;
+    for (size_t i = 0; i < rows && same; ++i) same = Regime(i, x_[i]) == regime_[i];
+    if (same) return true;
   }
-  if (same) return true;
   space.BeginHessian();
   for (size_t i = 0; i < rows; ++i) {
+    regime_[i] = Regime(i, x_[i]);
     if (regime_[i] == 0) space.AddHessianRow(i, step_ / cfm_[i]);
   }
   space.EndHessian();
