@@ -532,14 +532,8 @@ void OdeRobot::ProjectOntoJoints() {
     const Vec3 w = ToVec3(dBodyGetAngularVel(link.body));
     base << w, ToVec3(dBodyGetLinearVel(link.body)) - w.cross(actual.linear() * link.com);
   }
-  VecX dq = VecX::Zero(dof());  // the joint rates as ODE reads them
-  for (int i = 0; i < dof(); ++i) {
-    const dJointID joint = links_[i].joint;
-    if (joint == nullptr) continue;
-    dq[i] = robot_.links[i].axis_type == LinkJointAxis::kRevolute
-                ? dJointGetHingeAngleRate(joint)
-                : dJointGetSliderPositionRate(joint);
-  }
+  VecX dq;  // the joint rates as ODE reads them (the floating base's are replaced by `base`)
+  GetVelocity(&dq);
   for (int i = 0; i < dof(); ++i) {
     const Link& link = links_[i];
     if (link.owns_body && i != floating_link_) {
