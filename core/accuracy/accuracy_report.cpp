@@ -95,7 +95,7 @@ std::vector<BarVerdict> JudgeAccuracyBars(const std::vector<AccuracyRun>& runs) 
   for (const AccuracyScene& scene : AccuracyScenes()) {
     if (!HasLaminaRuns(runs, scene.name)) continue;
     for (const AccuracyBar& bar : scene.bars) {
-      const auto found = FindAccuracyRuns(runs, scene.name, DefaultAccuracySolver(), bar.steps);
+      const auto found = FindAccuracyRuns(runs, scene.name, bar.solver, bar.steps);
       verdicts.push_back({scene.name, bar.text, bar.check(found), bar.known_failure});
     }
   }

@@ -148,17 +148,22 @@ struct Job {
   std::size_t slot;
 };
 
-std::vector<double> BarSteps(const AccuracyScene& scene) {
+// the steps of the bars judged with `solver`
+std::vector<double> BarSteps(const AccuracyScene& scene, const AccuracySolver& solver) {
   std::vector<double> steps;
-  for (const AccuracyBar& bar : scene.bars)
-    steps.insert(steps.end(), bar.steps.begin(), bar.steps.end());
+  for (const AccuracyBar& bar : scene.bars) {
+    if (bar.solver == solver) steps.insert(steps.end(), bar.steps.begin(), bar.steps.end());
+  }
   std::sort(steps.begin(), steps.end());
   steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
   return steps;
 }
 
-std::vector<double> SceneSteps(const AccuracyGrid& grid, const AccuracyScene& scene) {
-  if (grid.bars_only) return BarSteps(scene);
+// a solver of the grid's runs at the default solver's bar steps, one that only a bar names at
+// that bar's
+std::vector<double> SceneSteps(const AccuracyGrid& grid, const AccuracyScene& scene,
+                               const AccuracySolver& solver, bool grid_solver) {
+  if (grid.bars_only) return BarSteps(scene, grid_solver ? DefaultAccuracySolver() : solver);
   std::vector<double> steps;
   for (double step : grid.steps) {
     if (step >= scene.min_step * (1.0 - 1e-9)) steps.push_back(step);
@@ -166,14 +171,28 @@ std::vector<double> SceneSteps(const AccuracyGrid& grid, const AccuracyScene& sc
   return steps;
 }
 
+// the solvers a bar of the scene is judged with that the grid does not have
+std::vector<AccuracySolver> BarOnlySolvers(const AccuracyGrid& grid, const AccuracyScene& scene) {
+  std::vector<AccuracySolver> solvers;
+  for (const AccuracyBar& bar : scene.bars) {
+    const auto has = [&](const std::vector<AccuracySolver>& list) {
+      return std::find(list.begin(), list.end(), bar.solver) != list.end();
+    };
+    if (!has(grid.solvers) && !has(solvers)) solvers.push_back(bar.solver);
+  }
+  return solvers;
+}
+
 std::vector<Job> MakeJobs(const AccuracyGrid& grid) {
   std::vector<Job> jobs;
   for (const AccuracyScene* scene : grid.scenes) {
-    for (const AccuracySolver& solver : grid.solvers) {
-      for (double step : SceneSteps(grid, *scene)) {
+    const auto add = [&](const AccuracySolver& solver, bool grid_solver) {
+      for (double step : SceneSteps(grid, *scene, solver, grid_solver)) {
         jobs.push_back({scene, solver, step, jobs.size()});
       }
-    }
+    };
+    for (const AccuracySolver& solver : grid.solvers) add(solver, true);
+    for (const AccuracySolver& solver : BarOnlySolvers(grid, *scene)) add(solver, false);
   }
   return jobs;
 }

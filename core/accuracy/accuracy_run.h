@@ -23,7 +23,8 @@ AccuracyRun RunAccuracySceneOn(const AccuracyScene& scene, WorldDesc world,
                                const AccuracySolver& solver, double step);
 
 /// What a sweep runs: every scene with every solver at every step (each scene leaves out steps
-/// below its min_step), or with `bars_only` each scene at the steps its bars name.
+/// below its min_step), or with `bars_only` each scene at the steps its bars name. A scene whose
+/// bar is judged with a solver the grid lacks (AccuracyBar::solver) runs with it too.
 struct AccuracyGrid {
   std::vector<const AccuracyScene*> scenes;
   std::vector<AccuracySolver> solvers;

@@ -56,7 +56,8 @@ struct AccuracySolver {
   /// "" for Lamina; "mujoco" (its defaults: Euler, Newton solver, pyramidal cone) or "bullet"
   /// (btSequentialImpulseConstraintSolver with `iterations`) for a peer's run
   std::string peer;
-  /// the world's `jointCoordinates` (the Newton solver's robots in their joint coordinates)
+  /// the world's `jointCoordinates` (the Newton solver's robots and world joints in their joint
+  /// coordinates)
   bool joint_coordinates = false;
 
   /// "exact", "newton", "quick20", ..., "newton-joints" with joint coordinates, with "-fixed"
@@ -72,6 +73,12 @@ std::optional<AccuracySolver> ParseAccuracySolver(const std::string& label);
 /// The solver of a scene's bars and of the editor's default: exact, adaptive.
 inline AccuracySolver DefaultAccuracySolver() {
   return {};
+}
+
+/// The Newton solver in joint coordinates (the world's `jointCoordinates`: its robots' and its
+/// world joints' islands over their joint rates), adaptive: "newton-joints".
+inline AccuracySolver JointCoordinateSolver() {
+  return {SolverType::kNewton, 20, true, "", true};
 }
 
 /// One run's outcome, as the report lists it.
@@ -98,7 +105,8 @@ struct BarCheck {
   std::string measured;
 };
 
-/// A pass bar: the steps it needs (default solver) and the check on those runs, in that order.
+/// A pass bar: the steps it needs (of `solver`'s runs) and the check on those runs, in that
+/// order.
 struct AccuracyBar {
   std::string text;  ///< e.g. "error ≤ ½·g·h·T at 1 ms"
   std::vector<double> steps;
@@ -107,6 +115,8 @@ struct AccuracyBar {
   /// why). The bar stays in the report as not met; `make test`'s short version expects it to
   /// fail, so that it says so as soon as it passes and the mark can go.
   bool known_failure = false;
+  /// The runs it judges (a scene's other bars may name another, e.g. joint coordinates).
+  AccuracySolver solver = DefaultAccuracySolver();
 };
 
 struct AccuracyScene {

@@ -327,9 +327,9 @@ const ParamSpec kParams[] = {
      SetSetting<&SimSettings::quick_step_iterations>},
     {"jointCoordinates", "joint coordinates", "", kSettings, T::kBool, 0, 1, false, false, false,
      A::kLive, false,
-     "newton: robots solved in their joint coordinates, one unknown per joint, and put back on "
-     "their joints after each step: no joint drift and a heavy end on light links holds at large "
-     "steps; slower on long chains",
+     "newton: robots and world hinges and sliders solved in their joint coordinates, one "
+     "unknown per joint, and put back on their joints after each step: no joint drift and a "
+     "heavy end on light links holds at large steps; slower on long chains",
      kNoChoices, GetSetting<&SimSettings::joint_coordinates>,
      SetSetting<&SimSettings::joint_coordinates>},
     {"sleeping", "sleep idle objects", "", kSettings, T::kBool, 0, 1, false, false, false,

@@ -44,8 +44,12 @@ struct ObjectIslands::Island {
   std::vector<size_t> joint_members;  ///< its kept joints
   NewtonSolver solver;
   DirectSolver direct;
-  // the reduced step (SolveReduced): per body its joint to its parent, its centre, the basis
+  // the reduced step (SolveReduced): its hinges and sliders (and their joints), per body its
+  // link to its parent and the edge that makes it a child (OrientTree), its centre, the basis
+  std::vector<TreeEdge> edges;
+  std::vector<dJointID> edge_joints;
   std::vector<TreeLink> tree;
+  std::vector<int> child_edge;
   std::vector<Vec3> centres;
   ReducedBasis basis;
   NewtonResult result;
@@ -73,6 +77,7 @@ void ObjectIslands::Begin(int count, bool exact, int direct_bodies, int newton_c
   kept_.clear();
   joints_.clear();
   reduced_joints_.clear();
+  reduced_tree_.clear();
 }
 
 int ObjectIslands::Root(int id) {
@@ -145,6 +150,8 @@ void ObjectIslands::Island::Clear() {
   bodies.clear();
   rows.clear();
   first_row.clear();
+  edges.clear();
+  edge_joints.clear();
   tree.clear();
   centres.clear();
 }
@@ -174,7 +181,6 @@ void ObjectIslands::Island::AddBody(int id, dBodyID body, dWorldID world, double
   b.free_velocity.tail<3>() += step * b.inertia.ldlt().solve(torque);
   bodies.push_back(b);
   centres.push_back(ToVec3(dBodyGetPosition(body)));
-  tree.emplace_back();
 }
 
 void ObjectIslands::SolveIsland(dWorldID world, dJointGroupID group, double step) {
@@ -214,6 +220,11 @@ void ObjectIslands::Finish(double step, bool reduced) {
     dJointDisable(joints_[j].joint);
     disabled_.push_back(joints_[j].joint);
     if (reduced) reduced_joints_.push_back(joints_[j].joint);
+  }
+  if (!reduced) return;
+  for (int k : island.basis.order()) {
+    const int e = island.child_edge[k];
+    if (e >= 0) reduced_tree_.push_back({island.edge_joints[e], island.edges[e].first == k});
   }
 }
 
@@ -350,33 +361,33 @@ bool ObjectIslands::BuildIsland(dWorldID world, double step, bool reduced) {
     const int ib = kept.b >= 0 ? local_[kept.b] : -1;
     known = known && JointRows(kept.joint, local_[kept.a], ib, kept.frame, world, step,
                                &island.rows, !reduced);
-    if (known && reduced) known = AddTreeLink(kept.joint, local_[kept.a], ib);
+    if (known && reduced) AddTreeEdge(kept.joint, local_[kept.a], ib);
   }
   for (int id : island.ids) local_[id] = -1;
-  return known;
+  const int count = static_cast<int>(island.bodies.size());
+  return known && (!reduced || OrientTree(count, island.edges, &island.tree, &island.child_edge));
 }
 
-// a hinge's or slider's link in the tree of the reduced step (in place of the rows that hold it
-// together); false when the child already has a parent (a loop)
-bool ObjectIslands::AddTreeLink(dJointID joint, int child, int parent) {
+// a hinge or slider between island bodies `first` and `second` (-1: the world) as an edge of the
+// reduced step's tree (in place of the rows that hold it together)
+void ObjectIslands::AddTreeEdge(dJointID joint, int first, int second) {
   Island& island = *island_;
   const int type = dJointGetType(joint);
-  if (type != dJointTypeHinge && type != dJointTypeSlider) return true;
-  TreeLink& link = island.tree[child];
-  if (link.kind != TreeLink::Kind::kFree) return false;
+  if (type != dJointTypeHinge && type != dJointTypeSlider) return;
+  TreeEdge edge{first, second, {}};
   dVector3 axis, anchor;
   if (type == dJointTypeHinge) {
-    link.kind = TreeLink::Kind::kHinge;
+    edge.link.kind = TreeLink::Kind::kHinge;
     dJointGetHingeAxis(joint, axis);
     dJointGetHingeAnchor(joint, anchor);
-    link.anchor = ToVec3(anchor);
+    edge.link.anchor = ToVec3(anchor);
   } else {
-    link.kind = TreeLink::Kind::kSlider;
+    edge.link.kind = TreeLink::Kind::kSlider;
     dJointGetSliderAxis(joint, axis);
   }
-  link.axis = ToVec3(axis);
-  link.parent = parent;
-  return true;
+  edge.link.axis = ToVec3(axis);
+  island.edges.push_back(edge);
+  island.edge_joints.push_back(joint);
 }
 
 // ODE's solver takes the island: its contact joints are made (its robot joints stay enabled)

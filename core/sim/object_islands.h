@@ -22,7 +22,9 @@
 //   step, which then only integrates the bodies, and enabled again after it (Restore).
 // - An island with a body held by another persistent ODE joint (a world joint, the mouse
 //   spring), with a joint outside what ode_joint_rows.h replicates, or whose solve does not
-//   converge gets its ODE joints as before, and ODE's solver takes it in the same step.
+//   converge gets its ODE joints as before, and ODE's solver takes it in the same step. (Under
+//   the Newton solver in joint coordinates the world's hinges and sliders between free rigid
+//   objects, without friction, are kept like a robot's joints: Simulator::KeepWorldJoints.)
 // - Contact feedback: a kept contact fills its dJointFeedback (force and torque on each body, as
 //   ODE reports them) from λ.
 // Units: SI; forces in N, torques in N·m about each body's centre of mass, world axes.
@@ -91,6 +93,14 @@ class ObjectIslands {
   void SetReducedRobots(bool reduced) { reduced_ = reduced; }
   /// After Solve: whether `joint` (a kept robot joint) was in an island given the reduced step.
   bool SolvedReduced(const dxJoint* joint) const;
+  /// A hinge or slider of an island given the reduced step, and which of its bodies is the child
+  /// in the island's tree (reduced_basis.h OrientTree).
+  struct TreeJoint {
+    const dxJoint* joint;
+    bool first_is_child;
+  };
+  /// After Solve: those joints, every one after the joint that carries its parent.
+  const std::vector<TreeJoint>& reduced_tree() const { return reduced_tree_; }
   /// `id`'s island is ODE's (a body with a persistent ODE joint, dragged, a robot the Newton
   /// solver does not take).
   void MarkOde(int id) { ode_[Root(id)] = 1; }
@@ -102,9 +112,9 @@ class ObjectIslands {
   /// the fixed world or a kinematic body), reporting into `feedback` when not null.
   void Keep(const dContact& contact, int a, int b, dxBody* body_a, dxBody* body_b,
             dJointFeedback* feedback);
-  /// Keeps a robot's joint or motor `joint` between its first body (world id `a`) and its
-  /// second (`b`, -1: the world), and links them into one island. `frame`: ode_joint_rows.h.
-  /// Joints kept in children-first order keep the solver's matrix narrow.
+  /// Keeps a robot's (or a world's) joint or motor `joint` between its first body (world id `a`)
+  /// and its second (`b`, -1: the world), and links them into one island. `frame`:
+  /// ode_joint_rows.h. Joints kept in children-first order keep the solver's matrix narrow.
   void KeepJoint(dxJoint* joint, int a, int b, const JointFrame& frame);
   /// Solves every island of the kept contacts and joints, adds the forces to the bodies and
   /// disables the kept joints of the solved islands; an island that does not converge gets its
@@ -135,7 +145,7 @@ class ObjectIslands {
   static bool NewtonDue(RobotBackoff* backoff);
   static void RecordNewton(RobotBackoff* backoff, bool settled);
   bool BuildIsland(dxWorld* world, double step, bool reduced);
-  bool AddTreeLink(dxJoint* joint, int child, int parent);
+  void AddTreeEdge(dxJoint* joint, int first, int second);
   bool SolveReduced(dxWorld* world, double step);
   void Finish(double step, bool reduced);
   void HandBack(dxWorld* world, dxJointGroup* group);
@@ -154,6 +164,7 @@ class ObjectIslands {
   bool robot_newton_ = true;                    ///< SetRobotNewtonStep
   bool reduced_ = false;                        ///< SetReducedRobots
   std::vector<const dxJoint*> reduced_joints_;  ///< SolvedReduced
+  std::vector<TreeJoint> reduced_tree_;         ///< reduced_tree
   std::vector<RobotBackoff> backoff_;
 };
 

@@ -246,6 +246,32 @@ bool LinearMotorRows(dJointID joint, const JointContext& c, const JointFrame& fr
 
 }  // namespace
 
+JointFrame OdeHingeFrame(dBodyID second, const Vec3& axis) {
+  JointFrame frame;
+  frame.axis2 = second != nullptr
+                    ? Vec3(ToMat3(dBodyGetRotation(second)).transpose() * axis.normalized())
+                    : axis;
+  return frame;
+}
+
+JointFrame OdeSliderFrame(dBodyID first, dBodyID second, const Vec3& axis) {
+  JointFrame frame;
+  const double* q1 = dBodyGetQuaternion(first);
+  const Eigen::Quaterniond first_turn(q1[0], q1[1], q1[2], q1[3]);
+  Eigen::Quaterniond relative = first_turn.conjugate();
+  const Vec3 position = ToVec3(dBodyGetPosition(first));
+  frame.offset = position;
+  if (second != nullptr) {
+    const double* q2 = dBodyGetQuaternion(second);
+    relative = first_turn.conjugate() * Eigen::Quaterniond(q2[0], q2[1], q2[2], q2[3]);
+    frame.offset = ToMat3(dBodyGetRotation(second)).transpose() *
+                   (position - ToVec3(dBodyGetPosition(second)));
+  }
+  frame.relative << relative.w(), relative.x(), relative.y(), relative.z();
+  frame.axis1 = ToMat3(dBodyGetRotation(first)).transpose() * axis;
+  return frame;
+}
+
 bool JointRows(dJointID joint, int ia, int ib, const JointFrame& frame, dWorldID world, double step,
                std::vector<NewtonRow>* rows, bool tree_rows) {
   const JointContext c{ia, ib, dJointGetBody(joint, 1) != nullptr, dWorldGetCFM(world), tree_rows};

@@ -44,6 +44,15 @@ struct JointFrame {
   Vec3 axis1 = Vec3::UnitZ();
 };
 
+/// What ODE keeps of a hinge about `axis` (world) whose second body is `second` (null: the
+/// world) when it is built: setAxes keeps the axis in the second body's axes, normalized (the
+/// world's as given).
+JointFrame OdeHingeFrame(dxBody* second, const Vec3& axis);
+/// What ODE keeps of a slider (and its linear motor) from `first` to `second` (null: the world)
+/// along `axis` (world) when it is built: slider.cpp computeInitialRelativeRotation and
+/// computeOffset, the motor's axis in the first body's axes (lmotor.cpp).
+JointFrame OdeSliderFrame(dxBody* first, dxBody* second, const Vec3& axis);
+
 /// The rows of `joint` (a hinge, a slider, a user-mode angular motor or a linear motor) between
 /// island bodies `ia` (its first body) and `ib` (its second, -1 for the world) appended to
 /// `rows`. World ERP/CFM are read from `world`; `step` in s. Returns false, appending nothing,

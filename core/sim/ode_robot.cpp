@@ -97,27 +97,6 @@ std::vector<int> ChildrenFirst(const RobotDesc& robot) {
   return order;
 }
 
-// what ODE keeps of a slider (and its linear motor) between `body` and `parent` along `axis`
-// (world) when it is built: slider.cpp computeInitialRelativeRotation and computeOffset, the
-// motor's axis in the body's axes (lmotor.cpp)
-JointFrame SliderFrame(dBodyID body, dBodyID parent, const Vec3& axis) {
-  JointFrame frame;
-  const double* q1 = dBodyGetQuaternion(body);
-  const Eigen::Quaterniond first(q1[0], q1[1], q1[2], q1[3]);
-  Eigen::Quaterniond relative = first.conjugate();
-  const Vec3 position = ToVec3(dBodyGetPosition(body));
-  frame.offset = position;
-  if (parent != nullptr) {
-    const double* q2 = dBodyGetQuaternion(parent);
-    relative = first.conjugate() * Eigen::Quaterniond(q2[0], q2[1], q2[2], q2[3]);
-    frame.offset = ToMat3(dBodyGetRotation(parent)).transpose() *
-                   (position - ToVec3(dBodyGetPosition(parent)));
-  }
-  frame.relative << relative.w(), relative.x(), relative.y(), relative.z();
-  frame.axis1 = ToMat3(dBodyGetRotation(body)).transpose() * axis;
-  return frame;
-}
-
 }  // namespace
 
 OdeRobot::OdeRobot(dWorldID world, const RobotDesc& robot, Diagnostics& diagnostics)
@@ -278,10 +257,7 @@ void OdeRobot::BuildJoints(dWorldID world, const VecX& q) {
       dJointAttach(link.joint, link.body, parent);
       dJointSetHingeAnchor(link.joint, origin.x(), origin.y(), origin.z());
       dJointSetHingeAxis(link.joint, axis.x(), axis.y(), axis.z());
-      // as setAxes (ode/src/joints/joint.cpp) keeps it: in the parent body's axes, normalized
-      link.frame.axis2 =
-          parent != nullptr ? Vec3(ToMat3(dBodyGetRotation(parent)).transpose() * axis.normalized())
-                            : axis;
+      link.frame = OdeHingeFrame(parent, axis);
       link.servo = dJointCreateAMotor(world, nullptr);
       dJointAttach(link.servo, link.body, parent);
       dJointSetAMotorMode(link.servo, dAMotorUser);
@@ -295,7 +271,7 @@ void OdeRobot::BuildJoints(dWorldID world, const VecX& q) {
       link.joint = dJointCreateSlider(world, nullptr);
       dJointAttach(link.joint, link.body, parent);
       dJointSetSliderAxis(link.joint, axis.x(), axis.y(), axis.z());
-      link.frame = SliderFrame(link.body, parent, axis);
+      link.frame = OdeSliderFrame(link.body, parent, axis);
       link.servo = dJointCreateLMotor(world, nullptr);
       dJointAttach(link.servo, link.body, parent);
       dJointSetLMotorNumAxes(link.servo, 2);

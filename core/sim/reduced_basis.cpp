@@ -5,6 +5,77 @@
 
 namespace lamina::core {
 
+namespace {
+
+void MakeChild(const std::vector<TreeEdge>& edges, int e, int child, int parent,
+               std::vector<TreeLink>* links, std::vector<int>* child_edge) {
+  TreeLink& link = (*links)[child];
+  link = edges[e].link;
+  link.parent = parent;
+  (*child_edge)[child] = e;
+}
+
+bool OrientAsGiven(const std::vector<TreeEdge>& edges, std::vector<TreeLink>* links,
+                   std::vector<int>* child_edge) {
+  for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
+    if ((*child_edge)[edges[e].first] >= 0) return false;
+    MakeChild(edges, e, edges[e].first, edges[e].second, links, child_edge);
+  }
+  return true;
+}
+
+// breadth first from the bodies reached so far (`queue`), each edge used once; false when an
+// edge meets a body already reached (a loop)
+bool Spread(const std::vector<TreeEdge>& edges, std::vector<int>* queue, std::vector<char>* used,
+            std::vector<TreeLink>* links, std::vector<int>* child_edge) {
+  for (size_t i = 0; i < queue->size(); ++i) {
+    const int k = (*queue)[i];
+    for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
+      const TreeEdge& edge = edges[e];
+      if ((*used)[e] || (edge.first != k && edge.second != k)) continue;
+      (*used)[e] = 1;
+      const int other = edge.first == k ? edge.second : edge.first;
+      if (other < 0 || std::find(queue->begin(), queue->end(), other) != queue->end()) {
+        return false;
+      }
+      MakeChild(edges, e, other, k, links, child_edge);
+      queue->push_back(other);
+    }
+  }
+  return true;
+}
+
+bool OrientFromWorld(const std::vector<TreeEdge>& edges, std::vector<TreeLink>* links,
+                     std::vector<int>* child_edge) {
+  std::vector<char> used(edges.size(), 0);
+  std::vector<int> queue;
+  for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
+    if (edges[e].second >= 0) continue;
+    if ((*child_edge)[edges[e].first] >= 0) return false;  // held by the world twice
+    MakeChild(edges, e, edges[e].first, -1, links, child_edge);
+    used[e] = 1;
+    queue.push_back(edges[e].first);
+  }
+  for (size_t e = 0;; ++e) {
+    if (!Spread(edges, &queue, &used, links, child_edge)) return false;
+    while (e < edges.size() && used[e]) ++e;
+    if (e == edges.size()) return true;
+    queue.push_back(std::min(edges[e].first, edges[e].second));  // a free root
+  }
+}
+
+}  // namespace
+
+bool OrientTree(int bodies, const std::vector<TreeEdge>& edges, std::vector<TreeLink>* links,
+                std::vector<int>* child_edge) {
+  links->assign(static_cast<size_t>(bodies), TreeLink{});
+  child_edge->assign(static_cast<size_t>(bodies), -1);
+  if (OrientAsGiven(edges, links, child_edge)) return true;
+  links->assign(static_cast<size_t>(bodies), TreeLink{});
+  child_edge->assign(static_cast<size_t>(bodies), -1);
+  return OrientFromWorld(edges, links, child_edge);
+}
+
 bool ReducedBasis::Build(const std::vector<Vec3>& centres, const std::vector<TreeLink>& links,
                          std::string* why) {
   const int count = static_cast<int>(links.size());

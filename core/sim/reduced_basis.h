@@ -38,6 +38,23 @@ struct TreeLink {
   Vec3 anchor = Vec3::Zero();  ///< a point on a hinge's axis (m, world)
 };
 
+/// A hinge or slider between island bodies `first` and `second` (-1: the fixed world): its kind,
+/// axis and anchor as a TreeLink (whose `parent` OrientTree sets).
+struct TreeEdge {
+  int first = -1;
+  int second = -1;
+  TreeLink link;
+};
+
+/// Every one of `bodies` bodies' link to its parent (a body no edge makes a child is free) and
+/// `child_edge[k]`, the edge that makes body k a child (-1: none). The edges as given, each
+/// first body the child of the second, when that gives no body two parents (a robot's joints);
+/// otherwise from the fixed world outwards and then from a body of each remaining part (the
+/// world's joints, listed in any order and either way round). False when the edges close a loop
+/// that way (as given, ReducedBasis::Build finds a loop).
+bool OrientTree(int bodies, const std::vector<TreeEdge>& edges, std::vector<TreeLink>* links,
+                std::vector<int>* child_edge);
+
 class ReducedBasis {
  public:
   using Block = Eigen::Matrix<double, 6, Eigen::Dynamic>;

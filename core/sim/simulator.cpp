@@ -438,7 +438,10 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     MarkOdeWorldFailed(ode_world_.get());
   }
   islands_.Restore();  // the robot joints the Newton solver took, back in ODE
-  if (result == IntegrateResult::kOk && islands_active_) ProjectReducedRobots();
+  if (result == IntegrateResult::kOk && islands_active_) {
+    ProjectReducedRobots();
+    ProjectReducedWorldJoints();
+  }
   dJointGroupEmpty(contact_group_.get());
   statistics_.time_split.solver += watch.Lap();
   if (result == IntegrateResult::kOk && !bodies_.StateIsFinite()) {
@@ -457,6 +460,25 @@ void Simulator::ProjectReducedRobots() {
       if (islands_.SolvedReduced(robot.link(l).joint)) robot.ProjectOntoJoints();
       break;
     }
+  }
+}
+
+// the world's hinges and sliders the Newton solver took in joint coordinates: each child back on
+// its joint from its parent, parents first (joint_projection.h; its coordinate and rate as the
+// step left them)
+void Simulator::ProjectReducedWorldJoints() {
+  if (world_joints_.size() == 0) return;
+  for (const ObjectIslands::TreeJoint& tree_joint : islands_.reduced_tree()) {
+    const int j = world_joints_.IndexOf(tree_joint.joint);
+    if (j < 0) continue;
+    dJointID joint = world_joints_.ode_joint(j);
+    dBodyID child = dJointGetBody(joint, tree_joint.first_is_child ? 0 : 1);
+    dBodyID parent = dJointGetBody(joint, tree_joint.first_is_child ? 1 : 0);
+    const BodyState from = parent != nullptr ? ReadBodyState(parent) : BodyState{};
+    const BodyState now = ReadBodyState(child);
+    const JointPlacement& placement = world_joints_.placement(j, tree_joint.first_is_child);
+    WriteBodyState(child, PlaceOnJoint(placement, from, JointCoordinate(placement, from, now),
+                                       JointRate(placement, from, now)));
   }
 }
 

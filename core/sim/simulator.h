@@ -450,6 +450,12 @@ class Simulator {
   bool RobotSolvedDirectly(int robot);
   int OwnBodies(int robot) const;
   void KeepRobotJoints(int robot);
+  /// Under the Newton solver in joint coordinates: the world's hinges and sliders between free
+  /// rigid objects (or one and the world) kept in the islands; `kept[id]`: how many on body id
+  void KeepWorldJoints(std::vector<int>* kept);
+  bool WorldJointIslandBodies(int joint, int* a, int* b) const;
+  /// After a step: the bodies of those the reduced step took back on their joints
+  void ProjectReducedWorldJoints();
 
   // the accuracy meter (simulator_meter.cpp)
   void SampleStepError(double step);
@@ -536,6 +542,7 @@ class Simulator {
   CameraRenderer* camera_renderer_ = nullptr;
   std::vector<std::vector<std::pair<int, int>>> self_collision_pairs_;  ///< per robot, sorted
   std::vector<RobotScratch> robot_scratch_;  ///< per robot, reused every sub-step
+  std::vector<int> island_joint_count_;      ///< PrepareObjectIslands: kept world joints per body
   std::vector<int> collidable_;              ///< ids of bodies with geometry, for the broad phase
   ContactSet contacts_;
   FrictionAnchors anchors_;

@@ -157,6 +157,9 @@ void Simulator::PrepareObjectIslands(bool exact) {
   islands_.Begin(bodies_.size(), exact, direct_robots_ ? direct_min_bodies_ : 0,
                  newton_objects_ ? kNewtonObjectContacts : 0);
   islands_.SetReducedRobots(world_.settings.joint_coordinates);
+  std::vector<int>& kept = island_joint_count_;
+  kept.assign(static_cast<size_t>(bodies_.size()), 0);
+  if (!exact && world_.settings.joint_coordinates) KeepWorldJoints(&kept);
   for (int r = 0; r < robot_count(); ++r) {
     if (RobotForIslands(r) && (!exact || (direct_robots_ && OwnBodies(r) >= direct_min_bodies_))) {
       KeepRobotJoints(r);
@@ -171,8 +174,8 @@ void Simulator::PrepareObjectIslands(bool exact) {
   for (int id = 0; id < bodies_.size(); ++id) {
     const BodyRecord& record = bodies_[id];
     if (record.body == nullptr || record.kind == WorldId::Kind::kRobotLink) continue;
-    if ((exact && !newton_objects_) || !record.is_object() || dBodyGetNumJoints(record.body) > 0 ||
-        (drag_.active && drag_.body == id)) {
+    if ((exact && !newton_objects_) || !record.is_object() ||
+        dBodyGetNumJoints(record.body) > kept[id] || (drag_.active && drag_.body == id)) {
       islands_.MarkOde(id);
     }
   }
@@ -185,6 +188,38 @@ void Simulator::PrepareObjectIslands(bool exact) {
       const BodyRecord& other = bodies_[a >= 0 ? pair.b : pair.a];
       if (other.body != nullptr && !dBodyIsEnabled(other.body)) islands_.MarkOde(a >= 0 ? a : b);
     }
+  }
+}
+
+// a world joint's world id of its first and second body (-1: the world), or false when it is
+// not a hinge or slider without friction between free rigid objects (or one and the world)
+bool Simulator::WorldJointIslandBodies(int joint, int* a, int* b) const {
+  const WorldJointDesc& desc = world_.joints[static_cast<size_t>(joint)];
+  dJointID ode = world_joints_.ode_joint(joint);
+  if (ode == nullptr || desc.type == WorldJointType::kFixed || desc.friction > 0.0 ||
+      dJointGetBody(ode, 0) == nullptr) {
+    return false;
+  }
+  int ids[2] = {-1, -1};
+  for (size_t i = 0; i < desc.bodies.size() && i < 2; ++i) {
+    const WorldJointBody& body = desc.bodies[i];
+    if (body.kind == WorldId::Kind::kTerrain) continue;
+    if (body.kind != WorldId::Kind::kRigidObject) return false;
+    ids[i] = IslandBody(world_.ObjectId(body.index));
+    if (ids[i] < 0) return false;
+  }
+  *a = ids[0];
+  *b = ids[1];
+  return *a >= 0;
+}
+
+void Simulator::KeepWorldJoints(std::vector<int>* kept) {
+  for (int j = 0; j < world_joints_.size(); ++j) {
+    int a = -1, b = -1;
+    if (!WorldJointIslandBodies(j, &a, &b)) continue;
+    islands_.KeepJoint(world_joints_.ode_joint(j), a, b, world_joints_.frame(j));
+    ++(*kept)[static_cast<size_t>(a)];
+    if (b >= 0) ++(*kept)[static_cast<size_t>(b)];
   }
 }
 

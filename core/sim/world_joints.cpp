@@ -6,6 +6,8 @@
 
 #include <ode/ode.h>
 
+#include "core/sim/ode_conversions.h"
+
 namespace lamina::core {
 
 namespace {
@@ -64,10 +66,37 @@ void OdeWorldJoints::Build(dxWorld* ode_world, const WorldDesc& world, const Bod
                           "joint " + std::to_string(j) + " (" + WorldJointTypeName(desc.type) +
                               ") holds nothing that moves; it is left out");
       joints_.push_back(nullptr);
+      frames_.emplace_back();
+      placements_.emplace_back();
       continue;
     }
     joints_.push_back(MakeJoint(ode_world, desc, a, b));
+    Record(joints_.back(), desc);
   }
+}
+
+// what the Newton solver's rows (JointFrame) and the placement after a step in joint
+// coordinates need of a hinge or slider whose first body moves, with the bodies as built
+void OdeWorldJoints::Record(dJointID joint, const WorldJointDesc& desc) {
+  frames_.emplace_back();
+  placements_.emplace_back();
+  const bool slider = desc.type == WorldJointType::kSlider;
+  dBodyID first = dJointGetBody(joint, 0), second = dJointGetBody(joint, 1);
+  if ((desc.type != WorldJointType::kHinge && !slider) || first == nullptr) return;
+  frames_.back() =
+      slider ? OdeSliderFrame(first, second, desc.axis) : OdeHingeFrame(second, desc.axis);
+  const BodyState a = ReadBodyState(first);
+  const BodyState b = second != nullptr ? ReadBodyState(second) : BodyState{};
+  Placements& both = placements_.back();
+  both.first_child = MakeJointPlacement(b, a, slider, desc.axis, desc.point);
+  both.second_child = MakeJointPlacement(a, b, slider, desc.axis, desc.point);
+}
+
+int OdeWorldJoints::IndexOf(const dxJoint* joint) const {
+  for (size_t j = 0; j < joints_.size(); ++j) {
+    if (joints_[j] == joint) return static_cast<int>(j);
+  }
+  return -1;
 }
 
 void OdeWorldJoints::Clear() {
@@ -76,6 +105,8 @@ void OdeWorldJoints::Clear() {
   }
   joints_.clear();
   types_.clear();
+  frames_.clear();
+  placements_.clear();
 }
 
 double OdeWorldJoints::Position(int joint) const {

@@ -12,7 +12,9 @@
 
 #include "core/diagnostics.h"
 #include "core/model/world_desc.h"
+#include "core/sim/joint_projection.h"
 #include "core/sim/ode_fwd.h"
+#include "core/sim/ode_joint_rows.h"
 
 namespace lamina::core {
 
@@ -38,9 +40,29 @@ class OdeWorldJoints {
   double Position(int joint) const;
   double Rate(int joint) const;
 
+  /// Joint `joint`'s ODE joint (null when skipped), and what JointRows needs of it
+  /// (ode_joint_rows.h: the Newton solver's rows of a hinge or slider whose first body moves).
+  dxJoint* ode_joint(int joint) const { return joints_.at(static_cast<size_t>(joint)); }
+  const JointFrame& frame(int joint) const { return frames_.at(static_cast<size_t>(joint)); }
+  /// The world joint whose ODE joint is `joint`, or -1.
+  int IndexOf(const dxJoint* joint) const;
+  /// A hinge's or slider's placement (joint_projection.h), as built: with its first body the
+  /// child of its second (or of the world), or with its second body the child of its first.
+  const JointPlacement& placement(int joint, bool first_is_child) const {
+    const Placements& both = placements_.at(static_cast<size_t>(joint));
+    return first_is_child ? both.first_child : both.second_child;
+  }
+
  private:
+  struct Placements {
+    JointPlacement first_child, second_child;
+  };
+  void Record(dxJoint* joint, const WorldJointDesc& desc);
+
   std::vector<dxJoint*> joints_;  ///< one per WorldJointDesc; null when skipped
   std::vector<WorldJointType> types_;
+  std::vector<JointFrame> frames_;
+  std::vector<Placements> placements_;
 };
 
 }  // namespace lamina::core

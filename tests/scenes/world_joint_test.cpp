@@ -158,6 +158,81 @@ TEST(WorldJointTest, AFixedJointHoldsACabinetWhoseDrawerSlidesInIt) {
   EXPECT_NEAR(simulator.WorldJointPosition(1), 0.25, 0.002);  // the drawer in the cabinet
 }
 
+// ---- in joint coordinates (the Newton solver with jointCoordinates: object_islands.h) --------
+
+constexpr const char* kJointCoordinates =
+    "    <globals solver=\"newton\" jointCoordinates=\"1\"/>\n";
+
+// the door as above (gravity pulls across its hinge): the reduced step is symplectic Euler on
+// the hinge angle, ω_n = n·h·α and θ_n = h²·α·n(n+1)/2 to rounding (ODE
+// turns a body by exactly h·ω in its finite rotation mode), and the hinge keeps the door where it
+// is to rounding (the exact solver: 1e-4 m and 1 %, above)
+TEST(WorldJointTest, InJointCoordinatesADoorTurnsAsSymplecticEulerOnItsHingeAngle) {
+  std::string xml = DoorWorld("");
+  xml.replace(xml.find("  <simulation>\n") + 15, 0, kJointCoordinates);
+  core::Simulator simulator(Load("door_joints.xml", xml));
+  const double torque = 2.0, h = simulator.world().settings.timestep;  // 1 ms
+  const int steps = 500;
+  core::SimBody door = simulator.body(simulator.world().ObjectId(0));
+  for (int k = 0; k < steps; ++k) {
+    door.ApplyWrench(Vec3::Zero(), Vec3(0, 0, torque));
+    simulator.Simulate(h);
+  }
+  ASSERT_NE(simulator.statistics().worst_status, core::StepStatus::kError);
+  EXPECT_EQ(simulator.statistics().reduced_islands, steps);
+  // (the file's inertia has six decimals: α within 1e-6)
+  const double alpha = torque / kDoorInertia, rate = simulator.WorldJointRate(0);
+  EXPECT_NEAR(rate, steps * h * alpha, 1e-6 * steps * h * alpha);
+  // θ_n = h·Σ ω_k = h·ω_n·(n + 1)/2 when every step adds the same h·α to ω
+  EXPECT_NEAR(simulator.WorldJointPosition(0), h * rate * (steps + 1) / 2, 1e-12);
+  EXPECT_NEAR(door.GetTransform().translation().z(), 0.1, 1e-12);
+  EXPECT_NEAR(door.GetTransform().translation().norm(), 0.1, 1e-12);  // the edge on the axis
+}
+
+TEST(WorldJointTest, InJointCoordinatesADrawerSlidesToItsStopAndStaysOnItsLine) {
+  std::string xml = DrawerWorld("");
+  xml.replace(xml.find("  <simulation>\n") + 15, 0, kJointCoordinates);
+  core::Simulator simulator(Load("drawer_joints.xml", xml));
+  simulator.Simulate(1.0);
+  EXPECT_GT(simulator.statistics().reduced_islands, 0);
+  EXPECT_NEAR(simulator.WorldJointPosition(0), 0.3, 0.002);
+  EXPECT_NEAR(simulator.GetObjectVelocity(0).linear.norm(), 0.0, 0.01);
+  const Vec3 at = simulator.GetObjectPose(0).translation();
+  EXPECT_NEAR(at.y(), 0.0, 1e-12);
+  EXPECT_NEAR(at.z(), 1.0, 1e-12);  // held up, exactly
+}
+
+// three 1 m links hung level from the world at x = 0, their joints listed out of order and
+// either way round: the island's tree is found from the world outwards (reduced_basis.h
+// OrientTree), every step is the reduced one, and every hinge keeps its anchors together
+TEST(WorldJointTest, InJointCoordinatesAChainListedInAnyOrderKeepsEveryHingeClosed) {
+  std::string xml = "<world>\n";
+  for (int i = 0; i < 3; ++i) {
+    xml += Box("link" + std::to_string(i), Vec3(1.0, 0.04, 0.04), Vec3(i + 0.5, 0, 2), 1.0, false);
+  }
+  const auto hinge = [](double x, const std::string& first, const std::string& second) {
+    return "    <joint type=\"hinge\" point=\"" + std::to_string(x) +
+           " 0 2\" axis=\"0 1 0\"><rigidObject name=\"" + first + "\"/>" +
+           (second.empty() ? "" : "<rigidObject name=\"" + second + "\"/>") + "</joint>\n";
+  };
+  xml += std::string("  <simulation>\n") + kJointCoordinates + hinge(1, "link0", "link1") +
+         hinge(2, "link1", "link2") + hinge(0, "link0", "") + "  </simulation>\n</world>\n";
+  core::Simulator simulator(Load("chain_joints.xml", xml));
+  const int steps = 1000;
+  for (int k = 0; k < steps; ++k) simulator.Simulate(1e-3);
+  EXPECT_EQ(simulator.statistics().reduced_islands, steps);
+  // each hinge's point on both links: x = i m on the level chain, in each link's frame
+  for (int i = 0; i < 3; ++i) {
+    const core::Pose a = simulator.GetObjectPose(i);
+    const Vec3 start_of_link = a * Vec3(-0.5, 0, 0);
+    const Vec3 before =
+        i == 0 ? Vec3(0, 0, 2) : Vec3(simulator.GetObjectPose(i - 1) * Vec3(0.5, 0, 0));
+    EXPECT_NEAR((start_of_link - before).norm(), 0.0, 1e-12) << "hinge " << i;
+  }
+  // it swings: the free end has fallen well below the pivot
+  EXPECT_LT((simulator.GetObjectPose(2) * Vec3(0.5, 0, 0)).z(), 1.5);
+}
+
 // the joints follow their objects through the editor's object edits
 TEST(WorldJointTest, ObjectEditsKeepTheJointsOnTheirBodiesAndRefuseRemovingAHeldOne) {
   const std::string xml =

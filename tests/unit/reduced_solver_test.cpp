@@ -6,6 +6,8 @@
 // symplectic Euler step.
 #include <cmath>
 #include <random>
+#include <string>
+#include <vector>
 
 #include <Eigen/Cholesky>
 #include <gtest/gtest.h>
@@ -237,6 +239,78 @@ TEST(ReducedSolveTest, AChainOnTheGroundAgreesWithItsBodiesSolvedWithStiffJointR
                 1e-8 * std::abs(bodies_newton.force[0]))
         << i;
   }
+}
+
+// ---- OrientTree -------------------------------------------------------------------------------
+
+TreeEdge HingeEdge(int first, int second) {
+  TreeEdge edge;
+  edge.first = first;
+  edge.second = second;
+  edge.link.kind = TreeLink::Kind::kHinge;
+  edge.link.axis = Vec3::UnitY();
+  edge.link.anchor = Vec3(first, 0, 0);
+  return edge;
+}
+
+TEST(OrientTreeTest, EdgesGivenChildFirstKeepTheirParents) {
+  // a robot's way: 1 and 2 hang from 0, 3 from 2; 0 is free
+  const std::vector<TreeEdge> edges = {HingeEdge(3, 2), HingeEdge(1, 0), HingeEdge(2, 0)};
+  std::vector<TreeLink> links;
+  std::vector<int> child_edge;
+  ASSERT_TRUE(OrientTree(4, edges, &links, &child_edge));
+  EXPECT_EQ(links[0].kind, TreeLink::Kind::kFree);
+  EXPECT_EQ(child_edge[0], -1);
+  const int parents[] = {-1, 0, 0, 2}, edge_of[] = {-1, 1, 2, 0};
+  for (int k = 1; k < 4; ++k) {
+    EXPECT_EQ(links[k].parent, parents[k]) << k;
+    EXPECT_EQ(child_edge[k], edge_of[k]) << k;
+    EXPECT_EQ(links[k].kind, TreeLink::Kind::kHinge);
+    EXPECT_EQ(links[k].anchor, edges[edge_of[k]].link.anchor);
+  }
+}
+
+TEST(OrientTreeTest, AChainListedAnyWayRoundHangsFromTheWorld) {
+  // 0 - 1 - 2 - 3 with 0 on the world, the world's joint last and 0 first in two edges
+  const std::vector<TreeEdge> edges = {HingeEdge(0, 1), HingeEdge(2, 1), HingeEdge(2, 3),
+                                       HingeEdge(0, -1)};
+  std::vector<TreeLink> links;
+  std::vector<int> child_edge;
+  ASSERT_TRUE(OrientTree(4, edges, &links, &child_edge));
+  const int parents[] = {-1, 0, 1, 2}, edge_of[] = {3, 0, 1, 2};
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(links[k].kind, TreeLink::Kind::kHinge) << k;
+    EXPECT_EQ(links[k].parent, parents[k]) << k;
+    EXPECT_EQ(child_edge[k], edge_of[k]) << k;
+  }
+  ReducedBasis basis;
+  std::string why;
+  EXPECT_TRUE(basis.Build(std::vector<Vec3>(4, Vec3::Zero()), links, &why)) << why;
+  EXPECT_EQ(basis.size(), 4);
+}
+
+TEST(OrientTreeTest, TwoPartsWithoutTheWorldGetAFreeRootEach) {
+  const std::vector<TreeEdge> edges = {HingeEdge(1, 0), HingeEdge(1, 2), HingeEdge(4, 3),
+                                       HingeEdge(4, 5)};
+  std::vector<TreeLink> links;
+  std::vector<int> child_edge;
+  ASSERT_TRUE(OrientTree(6, edges, &links, &child_edge));
+  int free = 0;
+  for (const TreeLink& link : links) free += link.kind == TreeLink::Kind::kFree;
+  EXPECT_EQ(free, 2);
+  ReducedBasis basis;
+  std::string why;
+  EXPECT_TRUE(basis.Build(std::vector<Vec3>(6, Vec3::Zero()), links, &why)) << why;
+  EXPECT_EQ(basis.size(), 2 * 6 + 4);
+}
+
+TEST(OrientTreeTest, ALoopIsRefused) {
+  std::vector<TreeLink> links;
+  std::vector<int> child_edge;
+  // a ring of three, and a body held by the world twice
+  EXPECT_FALSE(
+      OrientTree(3, {HingeEdge(0, 1), HingeEdge(0, 2), HingeEdge(1, 2)}, &links, &child_edge));
+  EXPECT_FALSE(OrientTree(2, {HingeEdge(0, -1), HingeEdge(0, -1)}, &links, &child_edge));
 }
 
 }  // namespace
