@@ -5,16 +5,6 @@
 
 namespace lamina::core {
 
-Vec3 ToVec3(const dReal* v) {
-  return {v[0], v[1], v[2]};
-}
-
-Mat3 ToMat3(const dReal* r) {
-  Mat3 m;
-  m << r[0], r[1], r[2], r[4], r[5], r[6], r[8], r[9], r[10];
-  return m;
-}
-
 void SetBodyRotation(dBodyID body, const Mat3& rotation) {
   const Eigen::Quaterniond q(rotation);
   const dQuaternion ode_q = {q.w(), q.x(), q.y(), q.z()};
