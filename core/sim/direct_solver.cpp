@@ -78,11 +78,10 @@ void DirectSolver::BoundedSystem(const std::vector<NewtonRow>& rows) {
   const Eigen::Index n = static_cast<Eigen::Index>(bounded_.size());
   z_.setZero(v0_.size(), n);
   filled_.resize(static_cast<size_t>(n));
-  Eigen::VectorXd column(v0_.size());
+  Eigen::VectorXd column = Eigen::VectorXd::Zero(v0_.size());
   std::vector<char> nonzero;
   for (Eigen::Index k = 0; k < n; ++k) {
     const NewtonRow& row = rows[bounded_[k]];
-    column.setZero();
     if (row.a >= 0) column.segment<6>(6 * row.a) += row.ja;
     if (row.b >= 0) column.segment<6>(6 * row.b) += row.jb;
     const int start = row.a < 0 ? row.b : (row.b < 0 ? row.a : std::min(row.a, row.b));
@@ -91,7 +90,12 @@ void DirectSolver::BoundedSystem(const std::vector<NewtonRow>& rows) {
     for (int block = 0; block < static_cast<int>(nonzero.size()); ++block) {
       if (nonzero[block]) filled_[k].push_back(block);
     }
-    z_.col(k) = column;
+    // only the filled blocks are copied and cleared for the next column (the rest stay zero:
+    // a block left out holds the row's zero Jacobian block)
+    for (int block : filled_[k]) z_.col(k).segment<6>(6 * block) = column.segment<6>(6 * block);
+    for (int block : filled_[k]) column.segment<6>(6 * block).setZero();
+    if (row.a >= 0) column.segment<6>(6 * row.a).setZero();
+    if (row.b >= 0) column.segment<6>(6 * row.b).setZero();
   }
   g_.resize(n, n);
   r_.resize(n);
@@ -132,13 +136,14 @@ void DirectSolver::SetBounds(const std::vector<NewtonRow>& rows) {
 
 // the free rows (inside their bounds) into free_, and G_FF⁻¹ rhs into `solution`; false when G_FF
 // does not factor or the solution is not finite
-bool DirectSolver::SolveFreeBlock(const Eigen::VectorXd& rhs, Eigen::VectorXd* solution) const {
+// (G_FF gathered column by column, as G is stored, and factored in place)
+bool DirectSolver::SolveFreeBlock(const Eigen::VectorXd& rhs, Eigen::VectorXd* solution) {
   const Eigen::Index f = static_cast<Eigen::Index>(free_.size());
-  Eigen::MatrixXd gff(f, f);
-  for (Eigen::Index i = 0; i < f; ++i) {
-    for (Eigen::Index j = 0; j < f; ++j) gff(i, j) = g_(free_[i], free_[j]);
+  free_block_.resize(f, f);
+  for (Eigen::Index j = 0; j < f; ++j) {
+    for (Eigen::Index i = j; i < f; ++i) free_block_(i, j) = g_(free_[i], free_[j]);
   }
-  Eigen::LLT<Eigen::MatrixXd> llt(gff);
+  Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(free_block_);
   if (llt.info() != Eigen::Success) return false;
   *solution = llt.solve(rhs);
   return solution->allFinite();
@@ -161,7 +166,8 @@ bool DirectSolver::SolveFree(Eigen::VectorXd* target) {
   for (Eigen::Index i = 0; i < f; ++i) {
     double sum = r_(free_[i]);
     for (size_t k = 0; k < state_.size(); ++k) {
-      if (state_[k] != 0) sum -= g_(free_[i], static_cast<Eigen::Index>(k)) * lambda_(k);
+      if (state_[k] != 0)
+        sum -= g_(static_cast<Eigen::Index>(k), free_[i]) * lambda_(k);  // (G = Gᵀ)
     }
     rhs(i) = sum;
   }

@@ -78,7 +78,7 @@ class DirectSolver {
   bool Optimal(const Eigen::VectorXd& gradient, int* released);
   bool SolveFree(Eigen::VectorXd* target);
   void FindFree();
-  bool SolveFreeBlock(const Eigen::VectorXd& rhs, Eigen::VectorXd* solution) const;
+  bool SolveFreeBlock(const Eigen::VectorXd& rhs, Eigen::VectorXd* solution);
   void Refine(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
               Eigen::VectorXd* velocity);
 
@@ -95,6 +95,7 @@ class DirectSolver {
   Eigen::MatrixXd g_;
   Eigen::VectorXd r_, lambda_, lo_, hi_;
   std::vector<signed char> state_;  ///< per bounded row: -1 at lo, 0 free, 1 at hi
+  Eigen::MatrixXd free_block_;      ///< G_FF, then its factor (SolveFreeBlock's storage)
   std::unique_ptr<Reduced> reduced_;
 };
 
