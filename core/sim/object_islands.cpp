@@ -200,7 +200,7 @@ void ObjectIslands::SolveIsland(dWorldID world, dJointGroupID group, double step
       direct_bodies_ > 0 && robot && static_cast<int>(island.bodies.size()) >= direct_bodies_;
   // (every robot the exact solver keeps is a large one: Simulator::PrepareObjectIslands)
   island.newton_tried = false;
-  const bool converged = built && (large_robot ? SolveLargeRobot(step) : SolveNewton(false, step));
+  const bool converged = built && (large_robot ? SolveLargeRobot(step) : SolveNewton(0, step));
   if (!converged) {
     ++statistics_.fallbacks;
     statistics_.newton_fallbacks += island.newton_tried;
@@ -265,12 +265,14 @@ bool ObjectIslands::SolvedReduced(const dxJoint* joint) const {
   return std::find(reduced_joints_.begin(), reduced_joints_.end(), joint) != reduced_joints_.end();
 }
 
-// A large robot's island: kNewtonStepsBeforeDirect Newton steps, then the direct solve, unless
-// its last Newton steps failed (kMostDirectSteps)
+// A large robot's island: kNewtonStepsBeforeDirect Newton steps (kNewtonStepsWhileSettling
+// after a Newton solve that settled), then the direct solve, unless its last Newton steps failed
+// (kMostDirectSteps)
 bool ObjectIslands::SolveLargeRobot(double step) {
   RobotBackoff& backoff = BackoffOf(joints_[island_->joint_members.front()].joint);
   if (robot_newton_ && NewtonDue(&backoff)) {
-    const bool settled = SolveNewton(true, step);
+    const int steps = backoff.failures < 2 ? kNewtonStepsWhileSettling : kNewtonStepsBeforeDirect;
+    const bool settled = SolveNewton(steps, step);
     RecordNewton(&backoff, settled);
     if (settled) return true;
   }
@@ -311,18 +313,18 @@ bool ObjectIslands::SolveDirectly(double step) {
   return settled;
 }
 
-// The Newton solver's island; a large robot's gets kNewtonStepsBeforeDirect Newton steps
-// (SolveLargeRobot goes on to the direct solve, and dWorldStep when that does not settle: the
-// Newton solver's whole budget then seldom did either, ATHLETE on fractal terrain 197 of 198).
-// Where few rows change their law (a humanoid standing on a plane) one Newton step is the
-// cheapest answer, where many do (feet and wheels on rough ground: 20 Newton steps and more) one
-// direct solve is (the robot benchmarks of docs/simulator.md).
-bool ObjectIslands::SolveNewton(bool large_robot, double step) {
+// The Newton solver's island, with at most `max_iterations` Newton steps (0: the solver's own
+// budget); a large robot's gets one or two (SolveLargeRobot, which goes on to the direct solve, and
+// dWorldStep when that does not settle: the Newton solver's whole budget then seldom did either,
+// ATHLETE on fractal terrain 197 of 198). Where few rows change their law (a humanoid standing on a
+// plane) one Newton step is the cheapest answer, where many do (feet and wheels on rough ground: 20
+// Newton steps and more) one direct solve is (the robot benchmarks of docs/simulator.md).
+bool ObjectIslands::SolveNewton(int max_iterations, double step) {
   Island& island = *island_;
   ++statistics_.newton_islands;
   island.newton_tried = true;
   NewtonOptions options;
-  if (large_robot) options.max_iterations = kNewtonStepsBeforeDirect;
+  if (max_iterations > 0) options.max_iterations = max_iterations;
   const bool converged =
       island.solver.Solve(island.bodies, island.rows, step, options, &island.result);
   statistics_.iterations += island.result.iterations;

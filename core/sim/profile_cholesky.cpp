@@ -2,67 +2,14 @@
 #include "core/sim/profile_cholesky.h"
 
 #include <algorithm>
-#include <cmath>
+
+#include <Eigen/Cholesky>
 
 namespace lamina::core {
 
 namespace {
 
 using Vec6 = Eigen::Matrix<double, 6, 1>;
-using Block6 = ProfileCholesky::Block;
-
-// The 6 × 6 kernels, written out: Eigen's LLT and triangular solves take their general paths
-// (dynamic-size blocks, a blocked triangular solve) for a matrix this small, which cost the
-// Newton solver about 5 % of a robot's step.
-
-// The lower Cholesky factor of the symmetric `a` (its lower triangle read) in place, the upper
-// triangle zeroed; false when a pivot is not positive and finite.
-bool FactorDiagonalBlock(Block6* a) {
-  Block6& m = *a;
-  for (int j = 0; j < 6; ++j) {
-    double pivot = m(j, j);
-    for (int k = 0; k < j; ++k) pivot -= m(j, k) * m(j, k);
-    if (!(pivot > 0.0) || !std::isfinite(pivot)) return false;
-    const double root = std::sqrt(pivot);
-    m(j, j) = root;
-    for (int i = j + 1; i < 6; ++i) {
-      double sum = m(i, j);
-      for (int k = 0; k < j; ++k) sum -= m(i, k) * m(j, k);
-      m(i, j) = sum / root;
-      m(j, i) = 0.0;
-    }
-  }
-  return true;
-}
-
-// x ← x L⁻ᵀ for the lower-triangular L: row by row, L y = x(r, :)ᵀ by forward substitution
-void SolveTransposedOnTheRight(const Block6& l, Block6* x) {
-  for (int r = 0; r < 6; ++r) {
-    for (int j = 0; j < 6; ++j) {
-      double sum = (*x)(r, j);
-      for (int k = 0; k < j; ++k) sum -= l(j, k) * (*x)(r, k);
-      (*x)(r, j) = sum / l(j, j);
-    }
-  }
-}
-
-// y ← L⁻¹ y
-void SolveLower(const Block6& l, Vec6* y) {
-  for (int j = 0; j < 6; ++j) {
-    double sum = (*y)[j];
-    for (int k = 0; k < j; ++k) sum -= l(j, k) * (*y)[k];
-    (*y)[j] = sum / l(j, j);
-  }
-}
-
-// y ← L⁻ᵀ y
-void SolveLowerTransposed(const Block6& l, Vec6* y) {
-  for (int j = 5; j >= 0; --j) {
-    double sum = (*y)[j];
-    for (int k = j + 1; k < 6; ++k) sum -= l(k, j) * (*y)[k];
-    (*y)[j] = sum / l(j, j);
-  }
-}
 
 }  // namespace
 
@@ -87,13 +34,14 @@ bool ProfileCholesky::Factor() {
       sum = block(i, j);
       for (int k = std::max(first_[i], first_[j]); k < j; ++k)
         sum.noalias() -= block(i, k) * block(j, k).transpose();
-      SolveTransposedOnTheRight(block(j, j), &sum);
+      block(j, j).transpose().triangularView<Eigen::Upper>().solveInPlace<Eigen::OnTheRight>(sum);
       block(i, j) = sum;
     }
     sum = block(i, i);
     for (int k = first_[i]; k < i; ++k) sum.noalias() -= block(i, k) * block(i, k).transpose();
-    if (!FactorDiagonalBlock(&sum) || !sum.allFinite()) return false;
-    block(i, i) = sum;
+    Eigen::LLT<Block> llt(sum);
+    if (llt.info() != Eigen::Success || !llt.matrixLLT().allFinite()) return false;
+    block(i, i) = llt.matrixL();
   }
   return true;
 }
@@ -112,7 +60,7 @@ void ProfileCholesky::ForwardSolve(Eigen::VectorXd* b, int start,
       any = true;
     }
     if (!any) continue;
-    SolveLower(block(i, i), &y);
+    block(i, i).triangularView<Eigen::Lower>().solveInPlace(y);
     x.segment<6>(6 * i) = y;
     (*nonzero)[i] = 1;
   }
@@ -122,7 +70,7 @@ void ProfileCholesky::BackSolve(Eigen::VectorXd* b) const {
   Eigen::VectorXd& x = *b;
   for (int i = blocks() - 1; i >= 0; --i) {  // Lᵀ x = y, block column by block column of Lᵀ
     Vec6 y = x.segment<6>(6 * i);
-    SolveLowerTransposed(block(i, i), &y);
+    block(i, i).transpose().triangularView<Eigen::Upper>().solveInPlace(y);
     x.segment<6>(6 * i) = y;
     for (int k = first_[i]; k < i; ++k)
       x.segment<6>(6 * k).noalias() -= block(i, k).transpose() * y;
@@ -134,7 +82,7 @@ void ProfileCholesky::Solve(Eigen::VectorXd* b) const {
   for (int i = 0; i < blocks(); ++i) {  // L y = b
     Vec6 y = x.segment<6>(6 * i);
     for (int k = first_[i]; k < i; ++k) y.noalias() -= block(i, k) * x.segment<6>(6 * k);
-    SolveLower(block(i, i), &y);
+    block(i, i).triangularView<Eigen::Lower>().solveInPlace(y);
     x.segment<6>(6 * i) = y;
   }
   BackSolve(b);
