@@ -129,6 +129,10 @@ struct AccuracyScene {
   std::string answer;      ///< the analytic answer, for the report
   double duration = 1.0;   ///< simulated time of a run, s
   double min_step = 1e-5;  ///< the sweep leaves out smaller steps (cost), s
+  /// When > 0: `make test`'s short version (tests/physics/accuracy_bars_test.cpp) runs the bars'
+  /// steps this long instead, s. Only for the many-body scenes that would cost seconds of CPU
+  /// there; the report and `accuracy --bars` always run `duration`.
+  double test_duration = 0.0;
   /// Optional change of the loaded world before a run (a variant of a shared file).
   std::function<void(WorldDesc*)> adjust;
   std::function<std::unique_ptr<AccuracyProbe>(const WorldDesc&)> probe;

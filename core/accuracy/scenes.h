@@ -14,6 +14,8 @@ AccuracyScene BallisticBoxScene();
 AccuracyScene SlidingBlockScene(double degrees);
 /// The ball with restitution `restitution` ("0.5", "0.9" or "1": the world file's suffix).
 AccuracyScene BouncingBallScene(const std::string& restitution);
+/// SimBenchmark's "bouncing": 49 balls with restitution 1 dropped from 5 m.
+AccuracyScene BouncingBallsScene();
 AccuracyScene PendulumScene();
 /// Rods hinged end to end, released level: `links` 2 (the double pendulum) or 10.
 AccuracyScene LinkedPendulumScene(int links);
@@ -22,9 +24,15 @@ AccuracyScene InclineScene();
 /// its launch direction, which hooks it.
 AccuracyScene SlideToRollScene(bool spin);
 AccuracyScene BoxStackScene();
+/// 210 boxes in a pyramid with a base of 20.
+AccuracyScene PyramidScene();
+/// SimBenchmark's "666": 216 frictionless spheres collapsing onto the floor.
+AccuracyScene SpherePileScene();
 /// The heavy box (`ratio` kg: 100 or 1000) on the 1 kg box.
 AccuracyScene HeavyOnLightScene(int ratio);
 AccuracyScene ChainScene();
+/// Solver2D's "Bridge": 160 hinged links pinned to the world at both ends.
+AccuracyScene BridgeScene();
 AccuracyScene StiffnessScene();
 AccuracyScene StiffnessDropScene();
 /// The balls against thin walls, or (`rods`) the thin rods falling onto thin floors.

@@ -2,9 +2,10 @@
 // `make test`'s short version of the accuracy report (docs/accuracy.md): every scene of
 // worlds/accuracy at the steps its bars name, with the default solver (exact, adaptive), and
 // every bar met — except the bars marked known_failure, which must still fail (so that the mark
-// goes as soon as the simulator meets them). The bars, their tolerances and their reasons are
-// stated in each scene's file (core/accuracy/scene_*.cpp); `lamina-headless accuracy --bars`
-// prints the same verdicts.
+// goes as soon as the simulator meets them). A scene with a test_duration runs that long here,
+// and its known failures are left to the report (`lamina-headless accuracy --bars --check`). The
+// bars, their tolerances and their reasons are stated in each scene's file
+// (core/accuracy/scene_*.cpp); `lamina-headless accuracy --bars` prints the same verdicts.
 #include <string>
 #include <vector>
 
@@ -20,8 +21,11 @@ namespace {
 class AccuracyBarsTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(AccuracyBarsTest, EveryBarIsMet) {
-  const AccuracyScene* scene = FindAccuracyScene(GetParam());
-  ASSERT_NE(scene, nullptr);
+  const AccuracyScene* found = FindAccuracyScene(GetParam());
+  ASSERT_NE(found, nullptr);
+  AccuracyScene shortened = *found;  // the many-body scenes run shorter here (test_duration)
+  if (shortened.test_duration > 0.0) shortened.duration = shortened.test_duration;
+  const AccuracyScene* scene = &shortened;
   AccuracyGrid grid = BarAccuracyGrid();
   grid.scenes = {scene};
   const std::vector<AccuracyRun> runs =
@@ -34,6 +38,9 @@ TEST_P(AccuracyBarsTest, EveryBarIsMet) {
   ASSERT_EQ(verdicts.size(), scene->bars.size());
   for (std::size_t i = 0; i < verdicts.size(); ++i) {
     const BarVerdict& bar = verdicts[i];
+    if (scene->bars[i].known_failure && found->test_duration > 0.0) {
+      continue;  // the shortened run may end before the failure shows; the report judges it
+    }
     if (scene->bars[i].known_failure) {
       EXPECT_FALSE(bar.check.pass)
           << "a known failure now passes; clear its known_failure: " << bar.text << ": "

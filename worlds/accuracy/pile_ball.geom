@@ -1,0 +1,3 @@
+Primitive
+Sphere
+0 0 0 0.0975
