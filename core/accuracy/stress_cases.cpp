@@ -189,11 +189,61 @@ void AddRobotCases(std::vector<StressCase>* cases) {
   AddRuns(c, {{kExact, 1e-3}, {kQuick, 1e-3}, {kNewton, 1e-3}}, cases);
 }
 
+// numerics §6's many-body scenes (worlds/accuracy/, written by make_pile_worlds.py), at the
+// solvers and steps the accuracy suite's bars do not run, kept short for `make test`
+void AddManyBodyCases(std::vector<StressCase>* cases) {
+  StressCase c;
+  c.name = "pyramid_20";
+  c.world = "accuracy/pyramid_20.xml";
+  c.what = "210 boxes in a pyramid with a base of 20";
+  c.duration = 0.5;
+  c.probe = SceneProbe("pyramid_20");
+  c.metric_text = "top box's displacement at the end";
+  c.unit = "m";
+  c.keep_out = {Below(0.0)};
+  AddRuns(c, {{kNewton, 1e-2}}, cases);
+  // QuickStep's 20 iterations let the boxes' cores meet at 10 ms (contact unreliable) — flagged
+  c.expected = StressVerdict::kFlagged;
+  AddRuns(c, {{kQuick, 1e-2}}, cases);
+
+  c = {};
+  c.name = "sphere_pile_666";
+  c.world = "accuracy/sphere_pile_666.xml";
+  c.what = "216 frictionless 10 kg spheres collapsing from a 6 × 6 × 6 cube";
+  c.duration = 1.0;
+  c.probe = SceneProbe("sphere_pile_666");
+  c.metric_text = "666 metric: time-mean of the summed squared overlaps";
+  c.unit = "m²";
+  c.keep_out = {Below(0.0)};
+  AddRuns(c, {{kQuick, 1e-3}, {kQuick, 1e-2}}, cases);
+
+  c = {};
+  c.name = "bouncing_balls_49";
+  c.world = "accuracy/bouncing_balls_49.xml";
+  c.what = "49 balls with restitution 1 dropped from 5 m";
+  c.duration = 20.0;
+  c.probe = SceneProbe("bouncing_balls_49");
+  c.metric_text = "RMS of the total energy's error over time, over E₀";
+  c.keep_out = {Below(0.0)};
+  AddRuns(c, {{kQuick, 1e-3}, {kExact, 1e-2}}, cases);
+
+  c = {};
+  c.name = "bridge_160";
+  c.world = "accuracy/bridge_160.xml";
+  c.what = "160 hinged 1 m links pinned to the world at both ends, released straight";
+  c.duration = 2.0;
+  c.probe = SceneProbe("bridge_160");
+  c.metric_text = "largest hinge gap during the run, relative to the link length";
+  c.keep_out = {Below(0.0)};
+  AddRuns(c, {{kQuick, 1e-3}, {kQuick, 1e-2}}, cases);
+}
+
 std::vector<StressCase> MakeCases() {
   std::vector<StressCase> cases;
   AddContactCases(&cases);
   AddImpactCases(&cases);
   AddRobotCases(&cases);
+  AddManyBodyCases(&cases);
   return cases;
 }
 
