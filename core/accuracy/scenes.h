@@ -28,6 +28,8 @@ AccuracyScene BoxStackScene();
 AccuracyScene PyramidScene();
 /// SimBenchmark's "666": 216 frictionless spheres collapsing onto the floor.
 AccuracyScene SpherePileScene();
+/// SimBenchmark's "Kapla": a tower of 102 blocks in 6 floors.
+AccuracyScene KaplaScene();
 /// The heavy box (`ratio` kg: 100 or 1000) on the 1 kg box.
 AccuracyScene HeavyOnLightScene(int ratio);
 AccuracyScene ChainScene();

@@ -207,6 +207,20 @@ void AddManyBodyCases(std::vector<StressCase>* cases) {
   AddRuns(c, {{kQuick, 1e-2}}, cases);
 
   c = {};
+  c.name = "kapla_102";
+  c.world = "accuracy/kapla_102.xml";
+  c.what = "SimBenchmark's Kapla tower: 102 blocks in 6 floors";
+  c.duration = 2.0;
+  c.probe = SceneProbe("kapla_102");
+  c.metric_text = "top block's displacement at the end";
+  c.unit = "m";
+  c.keep_out = {Below(0.0)};
+  AddRuns(c, {{kNewton, 1e-2}}, cases);
+  // at SimBenchmark's 10 ms QuickStep's 20 iterations let the tower collapse (cores meet) — flagged
+  c.expected = StressVerdict::kFlagged;
+  AddRuns(c, {{kQuick, 1e-2}}, cases);
+
+  c = {};
   c.name = "sphere_pile_666";
   c.world = "accuracy/sphere_pile_666.xml";
   c.what = "216 frictionless 10 kg spheres collapsing from a 6 × 6 × 6 cube";

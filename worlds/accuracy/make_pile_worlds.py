@@ -6,6 +6,7 @@
 #   sphere_pile_666.xml    scene 7: SimBenchmark's "666", 6 x 6 x 6 frictionless spheres
 #   bouncing_balls_49.xml  scene 6: SimBenchmark's "bouncing", 7 x 7 balls with e = 1 from 5 m
 #   bridge_160.xml         scene 9: Solver2D's "Bridge", 160 hinged links pinned at both ends
+#   kapla_102.xml          scene 7: SimBenchmark's "Kapla" tower of 102 blocks
 # Deterministic: the same files on every run (the pile's perturbations come from a fixed seed).
 # Units: m, kg. The floor's top is z = 0 (floor.geom, floor_wide.geom).
 import os
@@ -135,8 +136,49 @@ Accuracy scene bridge_160 (docs/accuracy.md; numerics section 6 scene 9, Solver2
      gap); a rigid bridge that long cannot sag at all. Written by make_pile_worlds.py.""", body)
 
 
+# Kapla: SimBenchmark's KaplaBenchmark (bulletSim/KaplaBenchmark.cpp: shortLen 0.05, longLen 0.2,
+# heightLen 0.1 m); each of 6 floors has 8 "base" blocks across y at x = 0, 0.2, ... 1.4 (centres
+# 0.05 m above the floor's bottom) and on them "wall" blocks of 0.2 x 0.05 x 0.1 m along x at
+# y = -0.1 (x = 0.1, 0.5, 0.9, 1.3) and y = +0.1 (x = 0.1, 0.3, 0.7, 1.1, 1.3), centres 0.15 m
+# above it; floors 0.2 m apart: 6 x 17 = 102 blocks. The sizes of SimBenchmark's base.urdf and
+# wall.urdf are not in the sources read: the bases here are 0.05 x 0.25 x 0.1 m, so that each wall
+# rests across its whole width on the bases' ends (with 0.2 m bases a wall's centre of mass would
+# stand exactly over their edge). Lamina's padded block is that block (cores 5 mm smaller under
+# 2.5 mm of padding), so every block rests on the padding layers below it. 1 kg each, friction
+# 0.5, no restitution (nor are the masses and friction in those sources). The last object is the
+# top floor's last wall block, whose fall SimBenchmark takes as the collapse.
+KAPLA_FLOORS = 6
+KAPLA_BASES = 8
+
+
+def kapla():
+    body = ['  <terrain name="floor" file="floor.geom"/>\n']
+    surface = 'kRestitution="0" kFriction="0.5"'
+    walls = KAPLA_BASES // 2
+    for floor in range(KAPLA_FLOORS):
+        z = floor * 0.2
+        for j in range(KAPLA_BASES):
+            body.append(obj(f"base{floor}_{j}", j * 0.2, 0, z + 0.05, "kapla_base.geom", 1, surface))
+        right = [j * 0.4 + 0.1 for j in range(walls)]
+        left = [0.1] + [j * 0.4 + 0.3 for j in range(walls - 1)] + [(walls - 1) * 0.4 + 0.1]
+        for k, x in enumerate(right):
+            body.append(obj(f"wall{floor}_r{k}", x, -0.1, z + 0.15, "kapla_wall.geom", 1, surface))
+        for k, x in enumerate(left):
+            body.append(obj(f"wall{floor}_l{k}", x, 0.1, z + 0.15, "kapla_wall.geom", 1, surface))
+    body.append(floor_surface(0, 0.5))
+    write("kapla_102.xml", """
+Accuracy scene kapla_102 (docs/accuracy.md; numerics section 6 scene 7, SimBenchmark's
+     "Kapla"): a tower of 102 blocks (the padded surface: cores 5 mm smaller under 2.5 mm of
+     padding), 1 kg each, in 6 floors of 8 blocks of 0.05 x 0.25 x 0.1 m across and 9 blocks of
+     0.2 x 0.05 x 0.1 m along on their ends, every block resting on the padding layers below it
+     (the walls wholly on the bases' ends). Friction 0.5, no
+     restitution. Static answer: the tower stands; the top floor's last block (the last object)
+     stays where it starts. Written by make_pile_worlds.py.""", body)
+
+
 if __name__ == "__main__":
     pyramid()
     sphere_pile()
     bouncing_balls()
     bridge()
+    kapla()
