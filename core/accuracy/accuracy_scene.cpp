@@ -7,17 +7,40 @@ namespace lamina::core {
 
 const std::vector<AccuracyScene>& AccuracyScenes() {
   static const std::vector<AccuracyScene> scenes = {
-      BallisticBoxScene(),     SlidingBlockScene(0.0),   SlidingBlockScene(22.5),
-      SlidingBlockScene(45.0), BouncingBallScene("0.5"), BouncingBallScene("0.9"),
-      BouncingBallScene("1"),  BouncingBallsScene(),     PendulumScene(),
-      LinkedPendulumScene(2),  LinkedPendulumScene(10),  InclineScene(),
-      SlideToRollScene(false), SlideToRollScene(true),   BoxStackScene(),
-      PyramidScene(),          SpherePileScene(),        KaplaScene(),
-      HeavyOnLightScene(100),  HeavyOnLightScene(1000),  ChainScene(),
-      BridgeScene(),           StiffnessScene(),         StiffnessDropScene(),
-      HighSpeedScene(false),   HighSpeedScene(true),     MeshJitterScene(""),
-      MeshJitterScene("pad0"), MeshJitterScene("pad1"),  MeshJitterScene("pad5"),
-      ScannedTrayScene(),      SoftBallScene(4),         SoftBallScene(20),
+      BallisticBoxScene(),
+      SlidingBlockScene(0.0),
+      SlidingBlockScene(22.5),
+      SlidingBlockScene(45.0),
+      BouncingBallScene("0.5"),
+      BouncingBallScene("0.9"),
+      BouncingBallScene("1"),
+      BouncingBallsScene(),  // SimBenchmark's bouncing
+      PendulumScene(),
+      LinkedPendulumScene(2),
+      LinkedPendulumScene(10),
+      InclineScene(),
+      SlideToRollScene(false),
+      SlideToRollScene(true),
+      BoxStackScene(),
+      PyramidScene(),     // Solver2D's pyramid
+      SpherePileScene(),  // SimBenchmark's 666
+      KaplaScene(),       // SimBenchmark's Kapla
+      HeavyOnLightScene(100),
+      HeavyOnLightScene(1000),
+      ChainScene(),
+      BridgeScene(),  // Solver2D's bridge
+      StiffnessScene(),
+      StiffnessDropScene(),
+      HighSpeedScene(false),
+      HighSpeedScene(true),
+      MeshJitterScene(""),
+      MeshJitterScene("pad0"),
+      MeshJitterScene("pad1"),
+      MeshJitterScene("pad5"),
+      GripperPadScene(),  // numerics' gripper pad pressing a mesh
+      ScannedTrayScene(),
+      SoftBallScene(4),
+      SoftBallScene(20),
       SoftBallScene(100),
   };
   return scenes;

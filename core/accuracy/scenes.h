@@ -42,6 +42,8 @@ AccuracyScene HighSpeedScene(bool rods);
 /// The mesh cube on the mesh floor; `variant` "" (2.5 mm padding), "pad0", "pad1" or "pad5"
 /// (padding 0, 1, 5 mm).
 AccuracyScene MeshJitterScene(const std::string& variant);
+/// The mesh cube pressed by a robot's pad on a PID-held prismatic joint.
+AccuracyScene GripperPadScene();
 /// The open tray with a scanned bottom on the mesh floor.
 AccuracyScene ScannedTrayScene();
 /// The soft tessellated ball resting with maxContacts `max_contacts` (4, 20 or 100).
