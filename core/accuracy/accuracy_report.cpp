@@ -320,7 +320,9 @@ std::string Method() {
   unreliable`, `unstable`, `error`); rollbacks, the shortest step taken, instability corrections
   and non-finite states undone are in `runs.csv` and `runs.json`.
 - **Bars.** Each scene states pass bars on its runs with the default solver (exact, adaptive).
-  `make test` runs the same bars (tests/physics/accuracy_bars_test.cpp).
+  `make test` runs the same bars (tests/physics/accuracy_bars_test.cpp); the many-body scenes
+  (pyramid_20, sphere_pile_666, kapla_102, bridge_160) only for their first 0.02 to 1 s there,
+  and their known failures are judged here alone.
 )";
 }
 
