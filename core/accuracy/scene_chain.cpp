@@ -48,6 +48,7 @@
 // bridge_160 cases (QuickStep) hold its numbers there.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "core/accuracy/probe_support.h"
@@ -127,6 +128,13 @@ class ChainProbe : public AccuracyProbe {
   double e0_ = 0.0, gap_ = 0.0, growth_ = 0.0;
 };
 
+// the bar "the largest hinge gap is at most `bound` of the link length"
+std::function<BarCheck(const std::vector<const AccuracyRun*>&)> HingeGapAtMost(double bound) {
+  return [bound](const std::vector<const AccuracyRun*>& runs) {
+    return AtMost(runs, {"", "of ℓ"}, bound);
+  };
+}
+
 BarCheck ChainSecondOrder(const std::vector<const AccuracyRun*>& runs) {
   BarCheck check;
   if (!RunsUsable(runs, &check)) return check;
@@ -151,20 +159,13 @@ AccuracyScene ChainScene() {
   scene.min_step = 4e-4;
   scene.probe = [](const WorldDesc& world) { return std::make_unique<ChainProbe>(world); };
   scene.bars = {
-      {"largest hinge gap < 1e-4 of the link length at 1 ms",
-       {1e-3},
-       [](const auto& runs) {
-         return AtMost(runs, {"", "of ℓ"}, 1e-4);
-       },
-       true},
+      {"largest hinge gap < 1e-4 of the link length at 1 ms", {1e-3}, HingeGapAtMost(1e-4), true},
       {"gap second order in h: slope 2 ± 0.2 from 1 to 4 ms", {4e-3, 1e-3}, ChainSecondOrder},
       {"no blow-up: no corrections or non-finite states at 1 ms and 10 ms", {1e-3, 1e-2}, Stable},
       {"in joint coordinates (newton-joints): largest hinge gap < 1e-9 of the link length at 1 "
        "and 10 ms",
        {1e-3, 1e-2},
-       [](const auto& runs) {
-         return AtMost(runs, {"", "of ℓ"}, 1e-9);
-       },
+       HingeGapAtMost(1e-9),
        false,
        JointCoordinateSolver()},
       {"in joint coordinates (newton-joints): no blow-up at 1 ms and 10 ms",
@@ -193,12 +194,7 @@ AccuracyScene BridgeScene() {
   scene.min_step = 1e-3;
   scene.probe = [](const WorldDesc& world) { return std::make_unique<ChainProbe>(world); };
   scene.bars = {
-      {"largest hinge gap < 1e-4 of the link length at 1 ms",
-       {1e-3},
-       [](const auto& runs) {
-         return AtMost(runs, {"", "of ℓ"}, 1e-4);
-       },
-       true},
+      {"largest hinge gap < 1e-4 of the link length at 1 ms", {1e-3}, HingeGapAtMost(1e-4), true},
       {"no blow-up: no corrections or non-finite states at 1 ms", {1e-3}, Stable},
       {"no blow-up: no corrections or non-finite states at 10 ms", {1e-2}, Stable, true},
   };
