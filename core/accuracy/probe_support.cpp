@@ -15,6 +15,10 @@ Vec3 ObjectCom(const Simulator& simulator, int object) {
   return simulator.GetObjectPose(object) * simulator.world().objects.at(object).com;
 }
 
+double TotalEnergy(const Simulator& simulator) {
+  return simulator.KineticEnergy() + simulator.PotentialEnergy();
+}
+
 Vec3 ObjectComVelocity(const Simulator& simulator, int object) {
   const Pose pose = simulator.GetObjectPose(object);
   const Twist twist = simulator.GetObjectVelocity(object);

@@ -25,6 +25,8 @@ double ObjectLayerOverlap(const Simulator& simulator, const std::vector<ContactP
                           int object);
 /// Angular momentum about the centre of mass (kg·m²/s, world): R I Rᵀ ω.
 Vec3 ObjectAngularMomentum(const Simulator& simulator, int object);
+/// The world's kinetic plus potential energy (J).
+double TotalEnergy(const Simulator& simulator);
 
 /// What a probe of object 0 coming to rest gathers from the steps after `settle` seconds: the
 /// RMS speed of its centre of mass (m/s) and its RMS angular speed (rad/s), where the centre was

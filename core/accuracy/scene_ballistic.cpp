@@ -22,7 +22,7 @@ class BallisticProbe : public AccuracyProbe {
     v0_ = ObjectComVelocity(simulator, 0);
     g_ = simulator.world().settings.gravity;
     l0_ = ObjectAngularMomentum(simulator, 0);
-    e0_ = Energy(simulator);
+    e0_ = TotalEnergy(simulator);
   }
   void Observe(const StepEvent& event) override {
     const Simulator& simulator = event.simulator;
@@ -31,16 +31,13 @@ class BallisticProbe : public AccuracyProbe {
     position_error_ = std::max(position_error_, (ObjectCom(simulator, 0) - exact).norm());
     const Vec3 l = ObjectAngularMomentum(simulator, 0);
     momentum_drift_ = std::max(momentum_drift_, (l - l0_).norm() / l0_.norm());
-    energy_drift_ = std::max(energy_drift_, std::abs(Energy(simulator) - e0_));
+    energy_drift_ = std::max(energy_drift_, std::abs(TotalEnergy(simulator) - e0_));
   }
   ProbeResult Finish(const Simulator&) override {
     return {position_error_, {{"L drift", momentum_drift_}, {"energy drift J", energy_drift_}}, ""};
   }
 
  private:
-  static double Energy(const Simulator& simulator) {
-    return simulator.KineticEnergy() + simulator.PotentialEnergy();
-  }
   Vec3 p0_, v0_, g_, l0_;
   double e0_ = 0.0;
   double position_error_ = 0.0, momentum_drift_ = 0.0, energy_drift_ = 0.0;

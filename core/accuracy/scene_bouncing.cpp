@@ -90,9 +90,9 @@ BarCheck ReboundWithin(const std::vector<const AccuracyRun*>& runs) {
 
 class EnergyRmsProbe : public AccuracyProbe {
  public:
-  void Begin(const Simulator& simulator) override { e0_ = Energy(simulator); }
+  void Begin(const Simulator& simulator) override { e0_ = TotalEnergy(simulator); }
   void Observe(const StepEvent& event) override {
-    const double error = Energy(event.simulator) - e0_;
+    const double error = TotalEnergy(event.simulator) - e0_;
     squares_ += error * error * event.h;
     time_ += event.h;
     largest_ = std::max(largest_, std::abs(error));
@@ -103,14 +103,11 @@ class EnergyRmsProbe : public AccuracyProbe {
     result.metrics = {{"E0 J", e0_},
                       {"RMS energy error J", rms},
                       {"largest energy error", largest_ / e0_},
-                      {"final energy error", (Energy(simulator) - e0_) / e0_}};
+                      {"final energy error", (TotalEnergy(simulator) - e0_) / e0_}};
     return result;
   }
 
  private:
-  static double Energy(const Simulator& simulator) {
-    return simulator.KineticEnergy() + simulator.PotentialEnergy();
-  }
   double e0_ = 0.0, squares_ = 0.0, time_ = 0.0, largest_ = 0.0;
 };
 

@@ -96,29 +96,25 @@ double EnergyScale(const WorldDesc& world, double link) {
   return mass * world.settings.gravity.norm() * 0.5 * length;
 }
 
-double ChainEnergy(const Simulator& simulator) {
-  return simulator.KineticEnergy() + simulator.PotentialEnergy();
-}
-
 class ChainProbe : public AccuracyProbe {
  public:
   explicit ChainProbe(const WorldDesc& world)
       : anchors_(ReadAnchors(world)),
         link_((world.joints.at(1).point - world.joints.at(0).point).norm()),
         energy_scale_(EnergyScale(world, link_)) {}
-  void Begin(const Simulator& simulator) override { e0_ = ChainEnergy(simulator); }
+  void Begin(const Simulator& simulator) override { e0_ = TotalEnergy(simulator); }
   void Observe(const StepEvent& event) override {
     for (const auto& [a, b] : anchors_) {
       const double gap = (AnchorPoint(event.simulator, a) - AnchorPoint(event.simulator, b)).norm();
       gap_ = std::max(gap_, gap);
     }
-    growth_ = std::max(growth_, ChainEnergy(event.simulator) - e0_);
+    growth_ = std::max(growth_, TotalEnergy(event.simulator) - e0_);
   }
   ProbeResult Finish(const Simulator& simulator) override {
     ProbeResult result{gap_ / link_, {}, ""};
     result.metrics = {{"largest gap m", gap_},
                       {"energy growth", growth_ / energy_scale_},
-                      {"energy drift", (ChainEnergy(simulator) - e0_) / energy_scale_}};
+                      {"energy drift", (TotalEnergy(simulator) - e0_) / energy_scale_}};
     return result;
   }
 

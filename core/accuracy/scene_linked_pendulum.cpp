@@ -39,10 +39,6 @@ namespace {
 
 constexpr double kReferenceStep = 1e-4;  // s: RK4's error at it is below 1e-9 m here (tested)
 
-double LinkedEnergy(const Simulator& simulator) {
-  return simulator.KineticEnergy() + simulator.PotentialEnergy();
-}
-
 // The energy released from level to hanging straight down (J).
 double ReleasedEnergy(const PlanarChain& chain) {
   double depth = 0.0, energy = 0.0;
@@ -64,7 +60,7 @@ class LinkedPendulumProbe : public AccuracyProbe {
         std::make_unique<PlanarChainTrajectory>(read.chain, read.start, duration, kReferenceStep);
     read_ = std::move(read);
   }
-  void Begin(const Simulator& simulator) override { e0_ = LinkedEnergy(simulator); }
+  void Begin(const Simulator& simulator) override { e0_ = TotalEnergy(simulator); }
   void Observe(const StepEvent& event) override {
     if (!reference_) return;
     const std::vector<Vec3> expected = read_.Centres(reference_->State(event.time).angle);
@@ -72,13 +68,13 @@ class LinkedPendulumProbe : public AccuracyProbe {
       const double d = (ObjectCom(event.simulator, static_cast<int>(k)) - expected[k]).norm();
       error_ = std::max(error_, d);
     }
-    departure_ = std::max(departure_, std::abs(LinkedEnergy(event.simulator) - e0_));
+    departure_ = std::max(departure_, std::abs(TotalEnergy(event.simulator) - e0_));
   }
   ProbeResult Finish(const Simulator& simulator) override {
     if (!reference_) return {kInf, {}, "not a planar chain: " + problem_};
     ProbeResult result{error_, {}, ""};
     result.metrics = {{"energy departure", departure_ / scale_},
-                      {"energy drift", (LinkedEnergy(simulator) - e0_) / scale_}};
+                      {"energy drift", (TotalEnergy(simulator) - e0_) / scale_}};
     return result;
   }
 

@@ -87,10 +87,6 @@ Pendulum ReadPendulum(const WorldDesc& world) {
   return p;
 }
 
-double PendulumEnergy(const Simulator& simulator) {
-  return simulator.KineticEnergy() + simulator.PotentialEnergy();
-}
-
 struct EnergySample {
   double time, h, delta;  // s, s, J (E − E₀)
 };
@@ -110,7 +106,7 @@ class PendulumProbe : public AccuracyProbe {
  public:
   explicit PendulumProbe(const WorldDesc& world) : pendulum_(ReadPendulum(world)) {}
   void Begin(const Simulator& simulator) override {
-    e0_ = PendulumEnergy(simulator);
+    e0_ = TotalEnergy(simulator);
     angle_ = pendulum_.Angle(ObjectCom(simulator, 0));
   }
   void Observe(const StepEvent& event) override {
@@ -119,7 +115,7 @@ class PendulumProbe : public AccuracyProbe {
       crossings_.push_back(event.time - event.h * angle / (angle - angle_));
     }
     angle_ = angle;
-    const EnergySample sample{event.time, event.h, PendulumEnergy(event.simulator) - e0_};
+    const EnergySample sample{event.time, event.h, TotalEnergy(event.simulator) - e0_};
     samples_.push_back(sample);
     oscillation_ = std::max(oscillation_, std::abs(sample.delta));
   }

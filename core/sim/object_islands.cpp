@@ -271,7 +271,8 @@ bool ObjectIslands::SolvedReduced(const dxJoint* joint) const {
 bool ObjectIslands::SolveLargeRobot(double step) {
   RobotBackoff& backoff = BackoffOf(joints_[island_->joint_members.front()].joint);
   if (robot_newton_ && NewtonDue(&backoff)) {
-    const int steps = backoff.failures < 2 ? kNewtonStepsWhileSettling : kNewtonStepsBeforeDirect;
+    const int steps = backoff.failures < kFailuresBeforeOneNewtonStep ? kNewtonStepsWhileSettling
+                                                                      : kNewtonStepsBeforeDirect;
     const bool settled = SolveNewton(steps, step);
     RecordNewton(&backoff, settled);
     if (settled) return true;

@@ -61,6 +61,7 @@ class ObjectIslands {
   /// steps always: 7.6 % more).
   static constexpr int kNewtonStepsBeforeDirect = 1;
   static constexpr int kNewtonStepsWhileSettling = 2;
+  static constexpr int kFailuresBeforeOneNewtonStep = 2;
   /// After a large robot's Newton step has not settled its island n times in a row, its island
   /// goes straight to the direct solve for the next min(2^(n−1), kMostDirectSteps) steps: on
   /// rough ground, where the Newton step seldom settles, it is not paid every step.
