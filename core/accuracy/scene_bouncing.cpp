@@ -11,14 +11,19 @@
 // = Σ ½mv² + m·g·z stays E₀ = 49·m·g·5 m (24,010 J with g = 9.8). The error is SimBenchmark's
 // metric made relative: the RMS over time of E − E₀ (time-weighted over the accepted steps), over
 // E₀. Bar (numerics §6 scene 6): RMS/E₀ ≤ ODE's 5.7e-4 at 1 ms (SimBenchmark
-// data/bouncing/sample.csv; Bullet and DART 1.1e-2). Measured 8.8e-3 at 1 ms (15 times ODE's), so
-// it is marked a known failure: every bounce loses energy (none is gained), the balls end 1.5 %
-// below E₀ after their ten bounces at 1 ms and 17 % at 10 ms (RMS 0.11 of E₀), about 0.15 % of a
-// ball's energy per bounce at 1 ms and 2 % at 10 ms: first order in h, as the single ball's rebound
-// (bouncing_ball_1: 0.22 % low at 1 ms), close to 2·g·h/v per bounce (v = 9.9 m/s at impact), as if
-// the rebound gave back e times the speed before the step but not the g·h that gravity adds during
-// it. Without adaptive stepping (exact-fixed) the balls reach the cores (contact unreliable) and
-// lose less: 5.9e-4 at 0.4 and 1 ms; with it, 2.3e-3 at 0.1 ms. The run at 1 ms costs 0.5 s of CPU.
+// data/bouncing/sample.csv; Bullet and DART 1.1e-2). Measured 1.36e-3 at 1 ms (2.4 times ODE's),
+// so it is marked a known failure; the balls end 0.22 % below E₀ after their ten bounces. At 10 ms
+// (the stress suite) 5.7e-3, ODE's own figure. What is lost now is the hard contact's CFM (1e-9,
+// contact_rows.h): the rebound falls short of e·v by CFM·λ, a fraction CFM·m·(1 + e)/h of the
+// speed, 1.6e-4 for a 10 kg ball at the 0.125 ms sub-step that adaptive stepping takes at the
+// impact (3.2e-4 of its energy a bounce). With no CFM on the bouncing rows the RMS is 5.65e-4,
+// within the bar, but a box landing flat on four corners then drifts sideways (dWorldStep's LCP
+// picks one of its many answers) and the Newton solver hands every such bounce back to ODE; a
+// bouncing row's CFM scaled by h over its effective mass would keep both. Until 2026-11-29 every
+// bounce also lost about 2·g·h/v of the ball's energy (0.15 % at 1 ms, RMS 8.8e-3): the step
+// changes that adaptive stepping makes at an impact gave gravity's kick the wrong length
+// (gravity_kick.h). Without adaptive stepping (exact-fixed) the balls reach the cores (contact
+// unreliable): 5.9e-4 at 1 ms. The run at 1 ms costs 0.6 s of CPU.
 #include <algorithm>
 #include <cmath>
 #include <string>

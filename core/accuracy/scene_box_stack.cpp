@@ -33,11 +33,11 @@
 // is that block; "fell at s" when it got 5 cm from its start) and the stack's bars over 10 s.
 // Measured: it stands, the top block moving 1.2e-8 m at 1 ms and 1.1e-8 m at 10 ms (bars met; 12.7
 // s of CPU at 1 ms, so `make test` runs it for 0.5 s). QuickStep at SimBenchmark's 10 ms does not
-// hold it: with 20 iterations the top block falls at 1.36 s, with 100 at 4.2 s (cores meet: contact
-// unreliable); at 1 ms QuickStep's top block creeps 3 mm (20) and 4.3 mm (100) in 10 s. With 0.2 m
-// bases (each wall's centre of mass right over their ends) the top floor's walls tip at once, the
-// Newton solver needs 38 iterations a step and falls back to dWorldStep, which takes the
-// 800-contact island at 3.4 s of CPU a step.
+// hold it: with 20 iterations the top block falls at 2.2 s, with 100 at 3.8 s (cores meet: contact
+// unreliable; when is chaotic: 1.36 and 4.2 s before gravity_kick.h); at 1 ms QuickStep's top block
+// creeps 3 mm (20) and 4.3 mm (100) in 10 s. With 0.2 m bases (each wall's centre of mass right
+// over their ends) the top floor's walls tip at once, the Newton solver needs 38 iterations a step
+// and falls back to dWorldStep, which takes the 800-contact island at 3.4 s of CPU a step.
 #include <algorithm>
 #include <cmath>
 #include <vector>

@@ -107,6 +107,7 @@ SimState CarryState(const WorldLayout& from, const SimState& state, const WorldL
                     const std::vector<bool>& moves, SimState to_initial) {
   SimState out = std::move(to_initial);
   out.time = state.time;
+  out.last_step = state.last_step;
   CarryByUid(from.objects, state.objects, to.objects, &out.objects);
   CarryByUid(from.objects, state.sleep, to.objects, &out.sleep);
   CarryByUid(from.robots, state.robots, to.robots, &out.robots);

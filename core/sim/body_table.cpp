@@ -110,6 +110,22 @@ void BodyTable::ApplyForces() const {
   }
 }
 
+void BodyTable::MarkKicked() {
+  for (BodyRecord& body : records_) {
+    body.kicked = body.moves_freely() && dBodyIsEnabled(body.body);
+  }
+}
+
+void BodyTable::CancelExtraKick(const Vec3& extra) const {
+  for (const BodyRecord& body : records_) {
+    if (!body.owns_body || body.kicked || !body.moves_freely()) continue;
+    if (!dBodyIsEnabled(body.body) || dBodyGetGravityMode(body.body) == 0) continue;
+    dMass mass;
+    dBodyGetMass(body.body, &mass);
+    AddForceAndTorque(body.body, -mass.mass * extra, Vec3::Zero());
+  }
+}
+
 Vec3 BodyTable::HeldTorque(const BodyRecord& body) const {
   if (!body.held.active || body.body == nullptr) return Vec3::Zero();
   Vec3 torque = body.held.torque;

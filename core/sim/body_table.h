@@ -51,6 +51,8 @@ struct BodyRecord {
   bool dragged = false;        ///< held by the mouse spring (kept awake, out of the energy check)
   Eigen::AlignedBox3d bounds;  ///< padded world bounds
   double energy = -1.0;        ///< kinetic energy after the last accepted step; < 0 unknown
+  /// moved freely and awake in the last accepted step: took gravity's kick (gravity_kick.h)
+  bool kicked = false;
 
   bool moves_freely() const { return body != nullptr && enabled && dynamic; }
   bool is_object() const { return kind == WorldId::Kind::kRigidObject; }
@@ -92,6 +94,11 @@ class BodyTable {
   /// Adds this step's forces to the ODE bodies: the one-call forces and the held wrenches of
   /// every awake, freely moving body.
   void ApplyForces() const;
+  /// Sets every record's `kicked` from whether its body moves freely and is awake now.
+  void MarkKicked();
+  /// Adds −m·`extra` to each body that moves freely and is awake now but was not kicked in the
+  /// last step: gravity's scaled kick (gravity_kick.h) starts from the plain one there.
+  void CancelExtraKick(const Vec3& extra) const;
   /// The one-call forces end (Simulate calls this at the end of every call).
   void ClearCallForces();
   /// The torque of body's held wrench about its centre of mass (its own torque plus the moment

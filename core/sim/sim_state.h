@@ -49,7 +49,10 @@ struct ObjectSleep {
 };
 
 struct SimState {
-  double time = 0.0;               ///< s
+  double time = 0.0;  ///< s
+  /// the accepted step that led to this state (s; 0: none yet): the next step's gravity kick
+  /// spans half of it (gravity_kick.h)
+  double last_step = 0.0;
   std::vector<BodyState> objects;  ///< one per rigid object
   std::vector<RobotSimState> robots;
   std::vector<FrictionAnchor> anchors;  ///< pairs that stick, sorted by (a, b)

@@ -13,6 +13,7 @@
 #include <ode/ode.h>
 
 #include "core/sim/contact_readout.h"
+#include "core/sim/gravity_kick.h"
 #include "core/sim/ode_conversions.h"
 #include "core/sim/ode_handle.h"
 #include "core/sim/ode_robot.h"
@@ -180,6 +181,7 @@ void Simulator::KeepRobotPlacements(const std::vector<RobotPlacement>& placement
 void Simulator::Reset() {
   if (halted_) BuildKeepingFlags();
   time_ = 0.0;
+  last_step_ = 0.0;
   statistics_ = SimStatistics();
   meter_.Reset();
   ClearInteraction();
@@ -237,6 +239,7 @@ void Simulator::CaptureState(SimState* state) const {
 
 void Simulator::CaptureBodyState(SimState* state, bool with_controllers) const {
   state->time = time_;
+  state->last_step = last_step_;
   const std::vector<int>& ids = bodies_.object_ids();
   state->objects.resize(ids.size());
   for (size_t i = 0; i < ids.size(); ++i) state->objects[i] = ReadBodyState(bodies_[ids[i]].body);
@@ -256,6 +259,7 @@ void Simulator::SetState(const SimState& state) {
   }
   contacts_.Invalidate();
   RestoreState(state);
+  bodies_.MarkKicked();  // (as in the run the state came from)
   RestoreControllers(state);
   for (BodyRecord& body : bodies_) body.energy = -1.0;
 }
@@ -263,6 +267,7 @@ void Simulator::SetState(const SimState& state) {
 // the bodies, robots, anchors and sleep of `state`; what depends on them is the caller's
 void Simulator::RestoreState(const SimState& state) {
   time_ = state.time;
+  last_step_ = state.last_step;
   const std::vector<int>& ids = bodies_.object_ids();
   for (size_t i = 0; i < ids.size() && i < state.objects.size(); ++i) {
     WriteBodyState(bodies_[ids[i]].body, state.objects[i]);
@@ -394,7 +399,7 @@ Simulator::SubStep Simulator::TrySubStep(double* h, StepProgress* progress, bool
   const int corrected = guard_.CorrectInstabilities(
       &bodies_, contacts_.before(),
       [this](const ContactPair& pair) { return PairSurface(pair.a, pair.b).stiffness; },
-      world_.settings.gravity, *h, &progress->corrected_bodies);
+      KickGravity(*h), *h, &progress->corrected_bodies);
   if (corrected > 0) {
     progress->flags |= kStepCorrected;
     progress->corrections += corrected;
@@ -419,6 +424,12 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
   Stopwatch watch;
   IntegrateResult result = IntegrateResult::kOk;
   try {
+    // gravity's kick across a change of step (the Newton islands read ODE's gravity too)
+    const Vec3 gravity = KickGravity(step);
+    dWorldSetGravity(ode_world_.get(), gravity.x(), gravity.y(), gravity.z());
+    if (gravity != world_.settings.gravity) {
+      bodies_.CancelExtraKick(gravity - world_.settings.gravity);
+    }
     BuildConstraints(step);
     if (world_.settings.solver == SolverType::kQuickStep) {
       dWorldSetQuickStepNumIterations(ode_world_.get(), world_.settings.quick_step_iterations);
@@ -437,6 +448,8 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     result = IntegrateResult::kOdeError;
     MarkOdeWorldFailed(ode_world_.get());
   }
+  const Vec3& gravity = world_.settings.gravity;
+  dWorldSetGravity(ode_world_.get(), gravity.x(), gravity.y(), gravity.z());
   islands_.Restore();  // the robot joints the Newton solver took, back in ODE
   if (result == IntegrateResult::kOk && islands_active_) {
     ProjectReducedRobots();
@@ -448,6 +461,12 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     result = IntegrateResult::kNonFinite;
   }
   return result;
+}
+
+// the meter's probe steps are the plain ones it compares (error_meter.h)
+Vec3 Simulator::KickGravity(double step) const {
+  const double scale = probing_ ? 1.0 : GravityKickScale(last_step_, step);
+  return scale * world_.settings.gravity;
 }
 
 // the robots the Newton solver took in their joint coordinates: their bodies back on their joints
@@ -538,6 +557,10 @@ void Simulator::BuildConstraints(double step) {
 
 StepStatus Simulator::AcceptStep(double step, StepProgress* progress) {
   feedback_.RecordStep(step);
+  if (!probing_) {
+    last_step_ = step;
+    bodies_.MarkKicked();
+  }
   AcceptRobotStep(step);
   AcceptInteraction(step);
   time_ += step;

@@ -422,6 +422,8 @@ class Simulator {
   StepStatus Step(double step);
   SubStep TrySubStep(double* h, StepProgress* progress, bool* recovered);
   IntegrateResult Integrate(double step);
+  /// The gravity of a step of `step` (gravity_kick.h; the world's while the meter probes).
+  Vec3 KickGravity(double step) const;
   void BuildConstraints(double step);
   StepStatus AcceptStep(double step, StepProgress* progress);
   SubStep Halt(const std::string& error);
@@ -560,8 +562,9 @@ class Simulator {
   bool dispatching_ = false;  ///< observers are being called
   int next_observer_ = 0;
   double time_ = 0.0;
-  bool halted_ = false;  ///< an error stopped the simulation
-  SimState last_good_;   ///< when halted: the state at the start of the step that failed
+  double last_step_ = 0.0;  ///< the last accepted step (s; 0: none yet; gravity_kick.h)
+  bool halted_ = false;     ///< an error stopped the simulation
+  SimState last_good_;      ///< when halted: the state at the start of the step that failed
   SimStatistics statistics_;
   ErrorMeter meter_;
   bool meter_on_ = false;

@@ -47,8 +47,13 @@ void Simulator::SampleStepError(double step) {
   std::vector<ContactFeedbackRecord> feedback = feedback_.records();
   const DragState drag = drag_;
   const std::map<int, KinematicTarget> targets = targets_;
-  std::vector<double> energies;  // the energy check's references, which SetState forgets
-  for (const BodyRecord& record : bodies_) energies.push_back(record.energy);
+  // the energy check's references, which SetState forgets, and which bodies took gravity's kick
+  std::vector<double> energies;
+  std::vector<bool> kicked;
+  for (const BodyRecord& record : bodies_) {
+    energies.push_back(record.energy);
+    kicked.push_back(record.kicked);
+  }
   CameraRenderer* const renderer = camera_renderer_;
   camera_renderer_ = nullptr;
   probing_ = true;
@@ -63,7 +68,10 @@ void Simulator::SampleStepError(double step) {
   drag_ = drag;
   targets_ = targets;
   std::size_t i = 0;
-  for (BodyRecord& record : bodies_) record.energy = energies[i++];
+  for (BodyRecord& record : bodies_) {
+    record.energy = energies[i];
+    record.kicked = kicked[i++];
+  }
   if (ok) {
     meter_.Add(MakeStepErrorSample(time_, step, full, halves), watch.Lap());
   } else {

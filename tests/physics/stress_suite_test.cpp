@@ -124,24 +124,23 @@ void ExpectManyBodyNumbers(const Records& records) {
   EXPECT_LT(records.at("pyramid_20/newton/10ms").max_penetration, 1e-6);
   EXPECT_GT(records.at("pyramid_20/quick20/10ms").max_penetration, 0.0025);
   // the Kapla tower stands under the Newton solver (measured 1.1e-8 m); at SimBenchmark's 10 ms
-  // QuickStep's 20 iterations let it collapse: the top block falls at 1.36 s (5 cm from its
-  // start; quick100 holds it to 4.2 s, accuracy.md), 0.17 m away at 2 s
+  // QuickStep's 20 iterations let the cores meet (flagged) and the tower come apart: the top block
+  // 4.1 cm away at 2 s (when it falls is chaotic: at 1.36 s before gravity_kick.h)
   EXPECT_LT(metric("kapla_102/newton/10ms"), 1e-6);
-  EXPECT_NEAR(ProbeMetricOf(records.at("kapla_102/quick20/10ms"), "fell at s"), 1.36, 0.2);
-  EXPECT_GT(metric("kapla_102/quick20/10ms"), 0.05);
+  EXPECT_GT(metric("kapla_102/quick20/10ms"), 0.02);
+  EXPECT_GT(records.at("kapla_102/quick20/10ms").max_penetration, 0.0025);
   // numerics' 666 bar (2e-4 m² at 1 ms; ODE 1.5e-4) under QuickStep at both steps: measured
   // 1.1e-5 and 5.7e-5 m², every sphere still on the floor
   for (const char* name : {"sphere_pile_666/quick20/1ms", "sphere_pile_666/quick20/10ms"}) {
     EXPECT_LT(metric(name), 2e-4) << name;
     EXPECT_EQ(ProbeMetricOf(records.at(name), "spheres off the floor"), 0.0) << name;
   }
-  // the balls lose energy at every bounce (a known failure of the accuracy suite): RMS/E₀ 8.8e-3
-  // at 1 ms against ODE's 5.7e-4, 0.11 at 10 ms against ODE's 5.7e-3. Still failing numerics'
-  // bars, and no worse than measured
+  // the balls' energy (a known failure of the accuracy suite at 1 ms): RMS/E₀ 1.36e-3 at 1 ms
+  // against ODE's 5.7e-4 (the hard contacts' CFM, scene_bouncing.cpp), 5.7e-3 at 10 ms, ODE's
+  // figure (8.8e-3 and 0.11 before gravity_kick.h)
   EXPECT_GT(metric("bouncing_balls_49/quick20/1ms"), 5.7e-4);
-  EXPECT_LT(metric("bouncing_balls_49/quick20/1ms"), 0.015);
-  EXPECT_GT(metric("bouncing_balls_49/exact/10ms"), 5.7e-3);
-  EXPECT_LT(metric("bouncing_balls_49/exact/10ms"), 0.15);
+  EXPECT_LT(metric("bouncing_balls_49/quick20/1ms"), 1.5e-3);
+  EXPECT_LT(metric("bouncing_balls_49/exact/10ms"), 6e-3);
   // the taut bridge under QuickStep: hinges within 1 % of a link at 1 ms (measured 0.33 %); at
   // 10 ms they open by 44 % of a link with status normal — nothing flags it (docs/stress.md)
   EXPECT_LT(metric("bridge_160/quick20/1ms"), 0.01);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Bodies without contact: free fall against the closed form of ODE's semi-implicit Euler, a
-// spinning body keeping its momentum, state snapshots that replay bit for bit.
+// Bodies without contact: free fall against the closed form of ODE's semi-implicit Euler (also
+// through changes of the step, gravity_kick.h), a spinning body keeping its momentum, state
+// snapshots that replay bit for bit.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -49,6 +50,25 @@ TEST_P(FreeFallTest, MatchesSemiImplicitEulerClosedForm) {
 
 INSTANTIATE_TEST_SUITE_P(Steps, FreeFallTest, ::testing::Values(0.001, 0.002, 0.004));
 
+// 10 steps of 1 ms, 2 of 0.5 ms, 4 of 0.25 ms, 5 of 1 ms (Simulate(dt) shorter than the step
+// takes one step of dt). Gravity's kick between steps of h0 and h spans (h0 + h)/2: the positions
+// stay those of the constant 1 ms step, z = z0 - g t²/2 - g h t/2 with h = 1 ms, and so does the
+// velocity, -g t. Kicks of g·h at every step instead leave z 6.1e-6 m lower.
+TEST(FreeFallTest, ChangesOfStepKeepTheConstantStepsPositions) {
+  const double g = 9.8, h = 0.001;
+  core::Simulator simulator(FallingSphereWorld(100.0));
+  simulator.Simulate(10 * h);
+  for (int i = 0; i < 2; ++i) simulator.Simulate(h / 2);
+  for (int i = 0; i < 4; ++i) simulator.Simulate(h / 4);
+  simulator.Simulate(5 * h);
+  EXPECT_EQ(simulator.statistics().steps, 21);
+  const double t = simulator.time();
+  ASSERT_NEAR(t, 0.017, 1e-15);
+  EXPECT_NEAR(simulator.GetObjectVelocity(0).linear.z(), -g * t, 1e-12);
+  EXPECT_NEAR(simulator.GetObjectPose(0).translation().z(), 100.0 - g * t * t / 2 - g * h * t / 2,
+              1e-12);
+}
+
 TEST(FreeBodyTest, SpinWithoutGravityKeepsAngularVelocityOfASymmetricBody) {
   core::WorldDesc world = FallingSphereWorld(0.0);
   world.settings.gravity = Vec3::Zero();
@@ -95,6 +115,21 @@ TEST(DeterminismTest, SetStateReplaysBitForBit) {
   EXPECT_EQ(twin.GetState(), end);
 }
 
+// a state taken after a shorter step keeps that step's length (SimState::last_step), on which the
+// next step's gravity kick depends
+TEST(DeterminismTest, StateAfterAShortStepReplaysBitForBit) {
+  core::Simulator simulator(FallingSphereWorld(10.0));
+  simulator.Simulate(0.0103);  // ends with a step of 0.3 ms
+  const core::SimState middle = simulator.GetState();
+  EXPECT_NEAR(middle.last_step, 0.0003, 1e-15);
+  simulator.Simulate(0.05);
+  const core::SimState end = simulator.GetState();
+  core::Simulator replay(FallingSphereWorld(10.0));
+  replay.SetState(middle);
+  replay.Simulate(0.05);
+  EXPECT_EQ(replay.GetState(), end);
+}
+
 TEST(SimulatorTest, ResetReturnsToTheWorldDescription) {
   core::Simulator simulator(FallingSphereWorld(3.0));
   simulator.Simulate(0.1);
@@ -102,6 +137,7 @@ TEST(SimulatorTest, ResetReturnsToTheWorldDescription) {
   EXPECT_EQ(simulator.time(), 0.0);
   EXPECT_EQ(simulator.GetObjectPose(0).translation(), Vec3(0, 0, 3));
   EXPECT_EQ(simulator.GetObjectVelocity(0).linear, Vec3::Zero());
+  EXPECT_EQ(simulator.GetState().last_step, 0.0);
 }
 
 }  // namespace
