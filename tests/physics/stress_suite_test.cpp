@@ -119,7 +119,7 @@ double ProbeMetricOf(const StressRecord& record, const std::string& name) {
 void ExpectManyBodyNumbers(const Records& records) {
   const auto metric = [&](const std::string& name) { return records.at(name).metric; };
   // the pyramid stands (rigid answer 0; measured 1.7e-8 m, overlaps of 5e-10 m); QuickStep's 20
-  // iterations at 10 ms let cores meet (4.8 mm of overlap, 16 mm of drift in 0.5 s)
+  // iterations at 10 ms let cores meet (6 mm of overlap, 18 mm of drift in 0.5 s)
   EXPECT_LT(metric("pyramid_20/newton/10ms"), 1e-6);
   EXPECT_LT(records.at("pyramid_20/newton/10ms").max_penetration, 1e-6);
   EXPECT_GT(records.at("pyramid_20/quick20/10ms").max_penetration, 0.0025);
@@ -130,7 +130,7 @@ void ExpectManyBodyNumbers(const Records& records) {
   EXPECT_GT(metric("kapla_102/quick20/10ms"), 0.02);
   EXPECT_GT(records.at("kapla_102/quick20/10ms").max_penetration, 0.0025);
   // numerics' 666 bar (2e-4 m² at 1 ms; ODE 1.5e-4) under QuickStep at both steps: measured
-  // 1.1e-5 and 5.7e-5 m², every sphere still on the floor
+  // 1.0e-5 and 5.6e-5 m², every sphere still on the floor
   for (const char* name : {"sphere_pile_666/quick20/1ms", "sphere_pile_666/quick20/10ms"}) {
     EXPECT_LT(metric(name), 2e-4) << name;
     EXPECT_EQ(ProbeMetricOf(records.at(name), "spheres off the floor"), 0.0) << name;
