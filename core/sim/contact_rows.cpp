@@ -30,6 +30,9 @@ void SetNormalRow(const Contact& contact, const PairLaw& law, double normal_spee
   const bool bouncing = row->bounce && normal_speed < -settings.bounce_velocity_threshold;
   row->erp = bouncing ? 0.0 : HardContactErp(contact.depth, step, settings);
   row->cfm = std::min(settings.cfm, kHardContactCfm);
+  if (bouncing && law.inverse_mass > 0.0) {
+    row->cfm = std::min(row->cfm, kBounceRegularization * step * law.inverse_mass);
+  }
 }
 
 // The first friction direction t1 whose second axis n × t1 is the rolling axis: ODE bounds the

@@ -12,7 +12,9 @@
 // - Soft layers rebound as their spring and damper make them: no restitution on top (that would
 //   count the rebound twice and pump energy into a body rolling on a tessellated surface).
 // - Hard contacts correct a layer overlap no faster than maxCorrectionSpeed, with CFM at most
-//   1e-9; at a bouncing impact not at all (the restitution row sets the rebound).
+//   1e-9; at a bouncing impact not at all (the restitution row sets the rebound), and with CFM
+//   also at most kBounceRegularization·h/m, so that the rebound loses at most that fraction of
+//   its speed whatever the mass and the step (Klamp't's CFM is the world's).
 // - Friction: the first direction opposes what friction has to take away (the sliding velocity
 //   less the friction anchor's correction), so ODE's per-axis friction becomes isotropic; the
 //   anchor's correction is asked on ODE's own axes through motion1/motion2.
@@ -41,6 +43,11 @@ namespace lamina::core {
 
 /// The hard-contact CFM ceiling (the world's CFM when smaller).
 inline constexpr double kHardContactCfm = 1e-9;
+/// A bouncing row's CFM is at most this times the step times the pair's inverse mass: with CFM
+/// the rebound falls short of e·v by CFM·λ, at most this fraction of (1 + e)·v. The fixed ceiling
+/// alone took CFM·m·(1 + e)/h: 1.6e-4 of the speed of a 10 kg ball at a 0.125 ms sub-step
+/// (2e-6 for 1 kg at 1 ms, where the two agree).
+inline constexpr double kBounceRegularization = 1e-6;
 /// Sliding slower than this keeps ODE's default friction directions (m/s).
 inline constexpr double kSlidingSpeedThreshold = 1e-6;
 /// Rolling slower than this does not choose the friction directions (rad/s).
@@ -63,6 +70,9 @@ struct PairLaw {
   double max_depth = 0.0;    ///< deepest weight depth (m)
   double tolerance = 0.0;    ///< padding sum (m)
   bool pushes = true;        ///< false: a layer with no stiffness and no damping (no rows)
+  /// 1/m of the pair's bodies that move, summed (1/kg; 0: not known): bounds the bouncing rows'
+  /// CFM (kBounceRegularization)
+  double inverse_mass = 0.0;
 };
 
 /// One contact joint (and its core row) in ODE's terms, without ODE.

@@ -31,6 +31,14 @@ Vec3 RelativeAngularVelocity(dBodyID a, dBodyID b) {
   return relative;
 }
 
+// 1/m of the ODE body that carries `body` when it moves (kg⁻¹; 0: static or kinematic)
+double InverseMass(const BodyRecord& body) {
+  if (!body.moves_freely()) return 0.0;
+  dMass mass;
+  dBodyGetMass(body.body, &mass);
+  return mass.mass > 0.0 ? 1.0 / mass.mass : 0.0;
+}
+
 RowSettings ContactRowSettings(const SimSettings& s) {
   return {s.erp, s.cfm, s.max_correction_speed, s.bounce_velocity_threshold};
 }
@@ -44,7 +52,9 @@ BlendedSurface Simulator::PairSurface(int a, int b) const {
 }
 
 PairLaw Simulator::PairContactLaw(const ContactPair& pair, double step) const {
-  return MakePairLaw(pair, PairSurface(pair.a, pair.b), step);
+  PairLaw law = MakePairLaw(pair, PairSurface(pair.a, pair.b), step);
+  law.inverse_mass = InverseMass(bodies_[pair.a]) + InverseMass(bodies_[pair.b]);
+  return law;
 }
 
 void Simulator::AddContactJoints(const ContactPair& pair, const Vec3* anchor_velocities,

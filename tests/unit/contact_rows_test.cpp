@@ -79,6 +79,31 @@ TEST(ContactRowsTest, HardRowsCorrectOverlapGentlyAndBounceOnlyAtImpact) {
   EXPECT_EQ(HardContactErp(1e-7, kStep, settings), settings.erp);
 }
 
+// a bouncing row's CFM: the ceiling 1e-9 for 1 kg at 1 ms (1e-6·h/m is the same), 1e-6·h/m for a
+// 10 kg ball at a 0.125 ms sub-step (its rebound then short of e·v by at most 1e-6·(1 + e)·v); a
+// resting row keeps the ceiling, whatever the mass
+TEST(ContactRowsTest, ABouncingRowsCfmIsBoundedByItsInverseMassAndStep) {
+  const ContactPair pair = PairOf({At(Vec3::Zero(), 0.001)}, 0.01);
+  const RowSettings settings;
+  PairLaw law = MakePairLaw(pair, {1.0, 0.5, kInf, kInf}, kStep);
+  law.inverse_mass = 1.0;
+  const ContactRow light =
+      MakeContactRow(pair.contacts[0], law, Vec3(0, 0, -5.0), Vec3::Zero(), kStep, settings);
+  EXPECT_DOUBLE_EQ(light.cfm, kHardContactCfm);
+  law.inverse_mass = 0.1;
+  const double sub_step = kStep / 8;
+  const ContactRow heavy =
+      MakeContactRow(pair.contacts[0], law, Vec3(0, 0, -5.0), Vec3::Zero(), sub_step, settings);
+  EXPECT_DOUBLE_EQ(heavy.cfm, 1e-6 * sub_step * 0.1);
+  const ContactRow resting =
+      MakeContactRow(pair.contacts[0], law, Vec3(0, 0, -0.001), Vec3::Zero(), sub_step, settings);
+  EXPECT_EQ(resting.cfm, kHardContactCfm);
+  law.inverse_mass = 0.0;  // not known: the ceiling
+  EXPECT_EQ(
+      MakeContactRow(pair.contacts[0], law, Vec3(0, 0, -5.0), Vec3::Zero(), sub_step, settings).cfm,
+      kHardContactCfm);
+}
+
 TEST(ContactRowsTest, FrictionOpposesSlidingLessTheAnchorCorrection) {
   const ContactPair pair = PairOf({At(Vec3::Zero(), 0.001)}, 0.01);
   const PairLaw law = MakePairLaw(pair, {0.0, 0.5, kInf, kInf}, kStep);
