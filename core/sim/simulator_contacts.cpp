@@ -53,7 +53,9 @@ BlendedSurface Simulator::PairSurface(int a, int b) const {
 
 PairLaw Simulator::PairContactLaw(const ContactPair& pair, double step) const {
   PairLaw law = MakePairLaw(pair, PairSurface(pair.a, pair.b), step);
-  law.inverse_mass = InverseMass(bodies_[pair.a]) + InverseMass(bodies_[pair.b]);
+  if (law.surface.restitution > 0.0) {  // (only bouncing rows read it)
+    law.inverse_mass = InverseMass(bodies_[pair.a]) + InverseMass(bodies_[pair.b]);
+  }
   return law;
 }
 
