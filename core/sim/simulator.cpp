@@ -427,9 +427,6 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     // gravity's kick across a change of step (the Newton islands read ODE's gravity too)
     const Vec3 gravity = KickGravity(step);
     dWorldSetGravity(ode_world_.get(), gravity.x(), gravity.y(), gravity.z());
-    if (gravity != world_.settings.gravity) {
-      bodies_.CancelExtraKick(gravity - world_.settings.gravity);
-    }
     BuildConstraints(step);
     if (world_.settings.solver == SolverType::kQuickStep) {
       dWorldSetQuickStepNumIterations(ode_world_.get(), world_.settings.quick_step_iterations);
@@ -539,6 +536,9 @@ void Simulator::BuildConstraints(double step) {
     anchor_velocities += pair.contacts.size();
   }
   bodies_.ApplyForces();
+  // (after the sleepers woke: they start from the plain kick too)
+  const Vec3 extra_gravity = KickGravity(step) - s.gravity;
+  if (!extra_gravity.isZero(0.0)) bodies_.CancelExtraKick(extra_gravity);
   AddDragJoint(step);
   PrepareRobotsForStep(step);
   if (islands_active_) {
