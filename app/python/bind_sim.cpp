@@ -145,15 +145,16 @@ void BindSim(py::module_& m) {
            })
       .def("updateWorld", [](const PySim& s) { s.get().UpdateWorld(s.desc.get()); })
       .def("getWorld", [](const PySim& s) { return PyWorld{s.desc}; })
-      .def("getStatus", [](const PySim& s) { return static_cast<int>(s.status); })
+      .def("getStatus", [](const PySim& s) { return core::KlamptStatusCode(s.status); })
       .def(
           "getStatusString",
           [](const PySim& s, int status) {
-            if (status < 0) status = static_cast<int>(s.status);
-            if (status > static_cast<int>(core::StepStatus::kError)) {
+            // Klamp't's numbers; without one, the last call's status by Lamina's own name
+            if (status < 0) return std::string(core::StepStatusName(s.status));
+            if (status > core::KlamptStatusCode(core::StepStatus::kError)) {
               throw py::value_error("no status " + std::to_string(status));
             }
-            return std::string(core::StepStatusName(static_cast<core::StepStatus>(status)));
+            return std::string(core::StepStatusName(core::StatusOfKlamptCode(status)));
           },
           py::arg("s") = -1)
       .def("getActualConfig",

@@ -114,9 +114,12 @@ void AddContactCases(std::vector<StressCase>* cases) {
   c.name = "gripper_pad";
   c.world = "accuracy/gripper_pad.xml";
   c.what = "the mesh cube pressed by a robot's pad on a PID-held prismatic joint (about 10 N)";
-  // not quick20 at 10 ms: there the pad's PID (servoP 1e4 N/m on 0.2 kg: ω·h = 2.2) blows up to
-  // 1e125 m with status "adaptive step", a silent failure (docs/stress.md) this suite would fail on
   AddRuns(c, {{kQuick, 1e-3}, {kNewton, 1e-2}}, cases);
+  // QuickStep's explicit PD is unstable at 10 ms (servoP·h²/m = 5, servoD·h/m = 5): the pad
+  // oscillates out through its stops, which opens its joint (robot_guard.h): flagged, the robot
+  // put back at rest at every such step. It went to 1e125 m with status "adaptive step" before
+  c.expected = StressVerdict::kFlagged;
+  AddRuns(c, {{kQuick, 1e-2}}, cases);
 }
 
 void AddImpactCases(std::vector<StressCase>* cases) {
@@ -257,7 +260,10 @@ void AddManyBodyCases(std::vector<StressCase>* cases) {
   c.probe = SceneProbe("bridge_160");
   c.metric_text = "largest hinge gap during the run, relative to the link length";
   c.keep_out = {Below(0.0)};
-  AddRuns(c, {{kQuick, 1e-3}, {kQuick, 1e-2}}, cases);
+  AddRuns(c, {{kQuick, 1e-3}}, cases);
+  // at 10 ms QuickStep's iterations let the hinges open by 44 % of a link: status "joint open"
+  c.expected = StressVerdict::kFlagged;
+  AddRuns(c, {{kQuick, 1e-2}}, cases);
 }
 
 std::vector<StressCase> MakeCases() {

@@ -48,6 +48,8 @@ nlohmann::json RecordJson(const StressRecord& r) {
       {"instability_corrections", r.corrections},
       {"nonfinite_recoveries", r.nonfinite},
       {"unreliable_steps", r.unreliable},
+      {"joint_open_steps", r.joint_open},
+      {"max_joint_gap", RecordNumber(r.max_joint_gap)},
       {"min_step", r.min_step},
       {"max_penetration", RecordNumber(r.max_penetration)},
       {"cpu_s", r.cpu_seconds},

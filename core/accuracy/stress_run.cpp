@@ -86,6 +86,8 @@ void CopyStatistics(const SimStatistics& statistics, StressRecord* record) {
   record->rollbacks = statistics.rollbacks;
   record->corrections = statistics.instability_corrections;
   record->unreliable = statistics.unreliable_steps;
+  record->joint_open = statistics.joint_open_steps;
+  record->max_joint_gap = statistics.max_joint_gap;
   record->max_penetration = statistics.max_penetration;
   record->status = StepStatusName(statistics.worst_status);
   record->failure = statistics.error;

@@ -28,6 +28,8 @@ struct StressRecord {
   long corrections = 0;          ///< instability corrections (bodies slowed or stopped)
   long nonfinite = 0;            ///< steps that undid a non-finite state
   long unreliable = 0;           ///< steps after which geometries interpenetrated
+  long joint_open = 0;           ///< steps after which a joint was open (StepStatus kJointOpen)
+  double max_joint_gap = 0.0;    ///< widest joint gap in an accepted state, m
   double min_step = 0.0;         ///< the shortest accepted step, s
   double max_penetration = 0.0;  ///< deepest boundary-layer overlap, m
   double cpu_seconds = 0.0;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "core/sim/joint_projection.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lamina::core {
@@ -31,6 +32,12 @@ JointPlacement MakeJointPlacement(const BodyState& parent, const BodyState& chil
     joint.parent_point = to_parent * (point - parent.com_position);
     joint.child_point = child.orientation.conjugate() * (point - child.com_position);
   }
+  return joint;
+}
+
+JointPlacement MakeFixedPlacement(const BodyState& parent, const BodyState& child) {
+  JointPlacement joint = MakeJointPlacement(parent, child, true, Vec3::UnitZ(), Vec3::Zero());
+  joint.axis = Vec3::Zero();
   return joint;
 }
 
@@ -78,6 +85,23 @@ BodyState PlaceOnJoint(const JointPlacement& joint, const BodyState& parent, dou
                           parent.angular_velocity.cross(pivot - parent.com_position) +
                           child.angular_velocity.cross(child.com_position - pivot);
   return child;
+}
+
+double JointGap(const JointPlacement& joint, const BodyState& parent, const BodyState& child) {
+  if (!joint.slider) {
+    const Vec3 carried = child.com_position + child.orientation * joint.child_point;
+    return (carried - ParentPoint(joint, parent)).norm();
+  }
+  const Vec3 axis = WorldAxis(joint, parent);
+  Vec3 off = child.com_position - ParentPoint(joint, parent);
+  off -= off.dot(axis) * axis;
+  return off.norm();
+}
+
+double JointBreakGap(double offset) {
+  constexpr double kFloor = 0.01;    // m
+  constexpr double kFraction = 0.1;  // of the offset
+  return std::max(kFloor, kFraction * offset);
 }
 
 }  // namespace lamina::core

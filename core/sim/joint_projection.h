@@ -15,6 +15,10 @@
 // where the joint was built. Unlike ODE's dJointGetHingeAngle the angle is the child's relative
 // to the parent whichever of the two is the joint's first body (right-handed about the axis).
 //
+// How far a joint is open (JointGap) is what the step guard watches (robot_guard.h for robots'
+// joints, Simulator for the world's): a hinge's two copies of its axis point apart, or a slider's
+// child off its line. A fixed joint is a slider along no axis (axis zero: it has no travel).
+//
 // Units: m, rad, s; centres of mass and velocities in world axes (BodyState), as ODE keeps them.
 #pragma once
 
@@ -27,7 +31,7 @@ namespace lamina::core {
 /// as the parent is a body at the origin with the identity rotation, at rest.
 struct JointPlacement {
   bool slider = false;
-  Vec3 axis = Vec3::UnitZ();  ///< unit, in the parent's axes
+  Vec3 axis = Vec3::UnitZ();  ///< unit, in the parent's axes; zero for a fixed joint (a slider)
   /// hinge: a point of the axis in the parent's axes, from its centre of mass; slider: the
   /// child's centre of mass at travel 0, in the parent's axes from its centre of mass
   Vec3 parent_point = Vec3::Zero();
@@ -41,6 +45,8 @@ struct JointPlacement {
 /// (world, any length) through `point` (world; a hinge's).
 JointPlacement MakeJointPlacement(const BodyState& parent, const BodyState& child, bool slider,
                                   const Vec3& axis, const Vec3& point);
+/// A fixed joint's placement: a slider along no axis (coordinate always 0).
+JointPlacement MakeFixedPlacement(const BodyState& parent, const BodyState& child);
 /// The hinge's angle (rad, in (−π, π]) or the slider's travel (m) of `child` relative to `parent`.
 double JointCoordinate(const JointPlacement& joint, const BodyState& parent,
                        const BodyState& child);
@@ -50,5 +56,17 @@ double JointRate(const JointPlacement& joint, const BodyState& parent, const Bod
 /// The child on the joint at `coordinate`, moving with the parent and at `rate` along the joint.
 BodyState PlaceOnJoint(const JointPlacement& joint, const BodyState& parent, double coordinate,
                        double rate);
+
+/// How far the joint is open (m): for a hinge the distance between its axis point carried by the
+/// parent and by the child, for a slider the distance of the child's centre of mass from the line
+/// the parent carries it along (the whole distance from where it was built, for a fixed joint).
+/// The twist about the axis, and a slider's travel, do not count; nor does a tilt of the axes.
+double JointGap(const JointPlacement& joint, const BodyState& parent, const BodyState& child);
+
+/// How far a joint may be open before a step counts as having broken it or left it open (m):
+/// max(1 cm, 10 % of `offset`, the distance from the parent's centre (or frame) to the child's).
+/// A robot's joint uses its link's offset from its parent (robot_guard.h); a world joint the
+/// distance between its bodies' centres of mass through the hinge's axis point.
+double JointBreakGap(double offset);
 
 }  // namespace lamina::core

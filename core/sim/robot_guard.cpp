@@ -3,14 +3,9 @@
 
 #include <algorithm>
 
+#include "core/sim/joint_projection.h"
+
 namespace lamina::core {
-
-namespace {
-
-constexpr double kBreakGapFloor = 0.01;    // m
-constexpr double kBreakGapFraction = 0.1;  // of the link's offset from its parent
-
-}  // namespace
 
 void RobotJointGaps(const RobotDesc& robot, const std::vector<Pose>& frames,
                     const std::vector<char>& known, std::vector<double>* gaps) {
@@ -21,15 +16,16 @@ void RobotJointGaps(const RobotDesc& robot, const std::vector<Pose>& frames,
     const Pose parent = link.parent >= 0 ? frames[link.parent] : Pose::Identity();
     Vec3 gap = frames[l].translation() - parent * link.parent_transform.translation();
     if (link.axis_type == LinkJointAxis::kPrismatic) {
+      // the travel within the limits is the joint's; beyond them the stop is open
       const Vec3 axis = (frames[l].linear() * link.axis).normalized();
-      gap -= gap.dot(axis) * axis;
+      gap -= std::min(std::max(gap.dot(axis), link.q_min), link.q_max) * axis;
     }
     (*gaps)[l] = gap.norm();
   }
 }
 
 double JointBreakGap(const LinkDesc& link) {
-  return std::max(kBreakGapFloor, kBreakGapFraction * link.parent_transform.translation().norm());
+  return JointBreakGap(link.parent_transform.translation().norm());
 }
 
 bool RobotJointsBroke(const RobotDesc& robot, const std::vector<double>& before,
@@ -38,6 +34,15 @@ bool RobotJointsBroke(const RobotDesc& robot, const std::vector<double>& before,
     if (after[l] - before[l] > JointBreakGap(robot.links[l])) return true;
   }
   return false;
+}
+
+bool RobotJointsOpen(const RobotDesc& robot, const std::vector<double>& gaps, double* largest) {
+  bool open = false;
+  for (int l = 0; l < robot.dof(); ++l) {
+    open = open || gaps[l] > JointBreakGap(robot.links[l]);
+    if (largest) *largest = std::max(*largest, gaps[l]);
+  }
+  return open;
 }
 
 }  // namespace lamina::core

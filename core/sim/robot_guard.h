@@ -9,18 +9,26 @@
 // step (a quaternion it cannot normalize), which still stops the run with an error.
 //
 // The rules:
-//   - A step that opened a joint of a robot (a link's frame origin away from where its parent's
-//     frame and its parent_transform put it; the slide along a prismatic axis does not count) by
-//     more than max(1 cm, 10 % of the link's offset from its parent) beyond what it was at the
-//     start of the step has broken the robot: the robot is put back where it was at the start of
-//     the step, at rest (every link stopped), and the step is flagged corrected (status
-//     "unstable"). Its other bodies keep their step.
+//   - A joint's gap is its link's frame origin's distance from where its parent's frame and its
+//     parent_transform put it. A prismatic joint's travel along its axis does not count while it
+//     is within the joint's limits; beyond them it does (the stop is open).
+//   - A step that opened a joint of a robot by more than max(1 cm, 10 % of the link's offset
+//     from its parent) (JointBreakGap) beyond what it was at the start of the step has broken the
+//     robot: the robot is put back where it was at the start of the step, at rest (every link
+//     stopped), and the step is flagged corrected (status "unstable"). Its other bodies keep their
+//     step.
+//   - A step after which a joint's gap exceeds JointBreakGap, however slowly it opened, is flagged
+//     "joint open" (step_observer.h); nothing is corrected (there is no state to go back to), so
+//     the run goes on and says so at every such step. The world's joints are watched the same way
+//     (joint_projection.h's JointGap).
 //   - A step that left a robot link non-finite is undone (as for objects) with every link of that
 //     robot stopped, and retaken once (flagged recovered).
 // So a robot given an absurd input stays where it was, finite, with every step saying so, for as
 // long as the input lasts; a robot moving within what a step can follow never opens a joint that
 // far in one step (the 40-link chain of worlds/stress/chain_robot.xml whipping at 1 ms opens at
-// most 0.75 mm in a whole run).
+// most 0.75 mm in a whole run). A PD servo too stiff for QuickStep's explicit law at the step
+// (worlds/accuracy/gripper_pad.xml at 10 ms: servoP·h²/m = 5, servoD·h/m = 5) drives its slider
+// out through its stops; the stop's gap flags it.
 //
 // Differences from Klamp't: Klamp't has no check on a robot's joints; an energy check cannot tell
 // an absurd input from a real one (the input supplies the energy, and the work bound allows it).
@@ -49,5 +57,10 @@ double JointBreakGap(const LinkDesc& link);
 /// True when some joint of `robot` opened from `before` to `after` by more than JointBreakGap.
 bool RobotJointsBroke(const RobotDesc& robot, const std::vector<double>& before,
                       const std::vector<double>& after);
+
+/// True when some joint of `robot` is open by more than JointBreakGap at `gaps`; `largest` (when
+/// given) is raised to the largest gap.
+bool RobotJointsOpen(const RobotDesc& robot, const std::vector<double>& gaps,
+                     double* largest = nullptr);
 
 }  // namespace lamina::core

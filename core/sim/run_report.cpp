@@ -82,6 +82,8 @@ std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
       {"instability_corrections", stats.instability_corrections},
       {"unreliable_steps", stats.unreliable_steps},
       {"max_penetration", stats.max_penetration},
+      {"joint_open_steps", stats.joint_open_steps},
+      {"max_joint_gap", stats.max_joint_gap},
       {"max_contacts", stats.max_contacts_in_step},
       {"mean_contacts",
        stats.steps > 0 ? static_cast<double>(stats.contact_joints) / stats.steps : 0.0},
@@ -145,8 +147,10 @@ std::string RunReportText(const Simulator& simulator, const RunTiming& timing) {
                 StepStatusName(stats.worst_status));
   out << line;
   std::snprintf(line, sizeof(line),
-                "rollbacks %ld, instability corrections %ld, max penetration %.6g m\n",
-                stats.rollbacks, stats.instability_corrections, stats.max_penetration);
+                "rollbacks %ld, instability corrections %ld, max penetration %.6g m, widest joint "
+                "gap %.6g m\n",
+                stats.rollbacks, stats.instability_corrections, stats.max_penetration,
+                stats.max_joint_gap);
   out << line;
   std::snprintf(line, sizeof(line), "contacts: max %d per step, mean %.3g per step\n",
                 stats.max_contacts_in_step,

@@ -404,6 +404,7 @@ Simulator::SubStep Simulator::TrySubStep(double* h, StepProgress* progress, bool
     progress->flags |= kStepCorrected;
     progress->corrections += corrected;
   }
+  if (JointsOpen(&progress->joint_gap)) progress->flags |= kStepJointOpen;
   return SubStep::kAccepted;
 }
 
@@ -578,7 +579,8 @@ StepStatus Simulator::AcceptStep(double step, StepProgress* progress) {
                         progress->corrections,
                         progress->corrected_bodies,
                         contacts_.pairs(),
-                        feedback_};
+                        feedback_,
+                        progress->joint_gap};
   AccumulateStep(event, &statistics_);
   if (!observers_.empty() && !probing_) DispatchStep(event);
   *progress = StepProgress{};

@@ -399,6 +399,7 @@ class Simulator {
     int rollbacks = 0;
     int corrections = 0;
     std::vector<int> corrected_bodies;  ///< world ids of the bodies slowed or stopped
+    double joint_gap = 0.0;             ///< m, the widest joint gap after the accepted sub-step
   };
   enum class IntegrateResult { kOk, kOdeError, kNonFinite };
   enum class SubStep { kAccepted, kRetake, kError };
@@ -479,6 +480,7 @@ class Simulator {
   void MeasureJointGaps(int robot, std::vector<double>* gaps);
   void MeasureRobotJointGapsBefore();
   int StopBrokenRobots(std::vector<int>* ids);
+  bool JointsOpen(double* largest) const;
   void ProjectReducedRobots();
   void RestoreControllers(const SimState& state);
   void RobotLinksChanged(int robot, unsigned changes);

@@ -303,6 +303,7 @@ int Simulator::StopBrokenRobots(std::vector<int>* ids) {
     MeasureJointGaps(r, &scratch.gaps);
     if (!RobotJointsBroke(world_.robots[r], scratch.gaps_before, scratch.gaps)) continue;
     RestoreOneRobot(r, guard_.rollback_state().robots[r]);
+    scratch.gaps = scratch.gaps_before;
     robots_[r]->SetVelocity(VecX::Zero(robots_[r]->dof()));
     RobotLinksChanged(r, kPoseChanged | kVelocityChanged);
     const int first = world_.RobotLinkId(r, 0);
@@ -313,6 +314,16 @@ int Simulator::StopBrokenRobots(std::vector<int>* ids) {
     }
   }
   return stopped;
+}
+
+// after a step (StopBrokenRobots measured the robots' gaps): whether a robot's or the world's
+// joint is open beyond its break gap; `largest` is raised to the widest gap
+bool Simulator::JointsOpen(double* largest) const {
+  bool open = world_joints_.AnyOpen(largest);
+  for (int r = 0; r < robot_count(); ++r) {
+    open = RobotJointsOpen(world_.robots[r], robot_scratch_[r].gaps, largest) || open;
+  }
+  return open;
 }
 
 void Simulator::RestoreControllers(const SimState& state) {

@@ -19,15 +19,27 @@ namespace lamina::core {
 class Simulator;
 class FeedbackRecorder;
 
+/// From the best to the worst; a Simulate call reports the worst of its steps. Klamp't has the
+/// same statuses but "joint open" (its numbers: KlamptStatusCode).
 enum class StepStatus {
   kNormal = 0,
   kAdaptiveStep = 1,       ///< a step was rolled back and retaken with a smaller step
   kContactUnreliable = 2,  ///< underlying geometries interpenetrated (beyond the padding)
-  kUnstable = 3,           ///< energy blew up (or a state became non-finite) and was corrected
-  kError = 4,              ///< ODE failed or a state stayed non-finite; the simulation stopped
+  /// a robot's or the world's joint is open beyond JointBreakGap (robot_guard.h): the solver did
+  /// not hold it at this step (e.g. QuickStep's iterations on a long taut chain, or a slider
+  /// pushed slowly past its stops; one that opens that far within a step is "unstable")
+  kJointOpen = 3,
+  kUnstable = 4,  ///< energy blew up (or a state became non-finite) and was corrected
+  kError = 5,     ///< ODE failed or a state stayed non-finite; the simulation stopped
 };
-/// "normal", "adaptive step", ...
+/// "normal", "adaptive step", "contact unreliable", "joint open", "unstable", "error".
 const char* StepStatusName(StepStatus status);
+/// Klamp't's number of a status (SimStatus: 0 normal, 1 adaptive time stepping, 2 contact
+/// unreliable, 3 unstable, 4 error): "joint open", which Klamp't does not have, is its 2 (the
+/// simulation goes on, its constraints unreliable), the worse ones one lower than here.
+int KlamptStatusCode(StepStatus status);
+/// The status of Klamp't's number `code` (0…4; 2 is "contact unreliable").
+StepStatus StatusOfKlamptCode(int code);
 
 /// What happened in one accepted step (bits; several at once).
 enum StepFlag : unsigned {
@@ -36,6 +48,7 @@ enum StepFlag : unsigned {
   kStepCorrected = 1u << 2,     ///< the instability check slowed bodies down
   kStepRecovered = 1u << 3,     ///< a non-finite state was undone with the culprits stopped
   kStepOverflowStop = 1u << 4,  ///< bodies with overflowing energy were stopped before it
+  kStepJointOpen = 1u << 5,     ///< a joint is open beyond its break gap after it
 };
 
 /// Counters since construction or the last Reset.
@@ -47,6 +60,9 @@ struct SimStatistics {
   int max_contacts_in_step = 0;      ///< most contact joints in one sub-step
   long contact_joints = 0;           ///< contact joints over all accepted sub-steps
   double max_penetration = 0.0;      ///< deepest boundary-layer overlap in an accepted state, m
+  /// the widest joint gap (robot_guard.h, joint_projection.h) in an accepted state, m
+  double max_joint_gap = 0.0;
+  long joint_open_steps = 0;  ///< accepted steps after which a joint was open (kStepJointOpen)
   /// solver "newton" (object_islands.h), over every sub-step tried (retaken ones too)
   long newton_islands = 0;     ///< object islands the Newton solver took
   long newton_fallbacks = 0;   ///< of those, handed back to ODE's solver (no convergence)
@@ -78,6 +94,7 @@ struct StepEvent {
   const std::vector<int>& corrected_bodies;  ///< their world ids (a body may appear twice)
   const std::vector<ContactPair>& contacts;  ///< touching pairs after the step
   const FeedbackRecorder& feedback;          ///< recorded pairs, this step's forces
+  double joint_gap = 0.0;  ///< the widest gap of a robot's or the world's joint after it, m
 };
 
 using StepObserver = std::function<void(const StepEvent&)>;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "core/sim/world_joints.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -49,6 +50,14 @@ dJointID MakeJoint(dWorldID world, const WorldJointDesc& desc, dBodyID a, dBodyI
   return nullptr;
 }
 
+// the distance from the parent's centre of mass to the child's as built, through a hinge's axis
+// point; from the world (no parent body), the child's distance from the hinge's point (0 for a
+// slider or a fixed joint)
+double BuiltOffset(const JointPlacement& child_of_second, bool second_moves) {
+  const double from_parent = second_moves ? child_of_second.parent_point.norm() : 0.0;
+  return child_of_second.slider ? from_parent : from_parent + child_of_second.child_point.norm();
+}
+
 }  // namespace
 
 void OdeWorldJoints::Build(dxWorld* ode_world, const WorldDesc& world, const BodyOf& body_of,
@@ -68,6 +77,7 @@ void OdeWorldJoints::Build(dxWorld* ode_world, const WorldDesc& world, const Bod
       joints_.push_back(nullptr);
       frames_.emplace_back();
       placements_.emplace_back();
+      break_gaps_.push_back(kInf);
       continue;
     }
     joints_.push_back(MakeJoint(ode_world, desc, a, b));
@@ -80,16 +90,22 @@ void OdeWorldJoints::Build(dxWorld* ode_world, const WorldDesc& world, const Bod
 void OdeWorldJoints::Record(dJointID joint, const WorldJointDesc& desc) {
   frames_.emplace_back();
   placements_.emplace_back();
+  break_gaps_.push_back(kInf);
   const bool slider = desc.type == WorldJointType::kSlider;
   dBodyID first = dJointGetBody(joint, 0), second = dJointGetBody(joint, 1);
-  if ((desc.type != WorldJointType::kHinge && !slider) || first == nullptr) return;
-  frames_.back() =
-      slider ? OdeSliderFrame(first, second, desc.axis) : OdeHingeFrame(second, desc.axis);
+  if (first == nullptr) return;
   const BodyState a = ReadBodyState(first);
   const BodyState b = second != nullptr ? ReadBodyState(second) : BodyState{};
   Placements& both = placements_.back();
-  both.first_child = MakeJointPlacement(b, a, slider, desc.axis, desc.point);
-  both.second_child = MakeJointPlacement(a, b, slider, desc.axis, desc.point);
+  if (desc.type == WorldJointType::kFixed) {
+    both.first_child = MakeFixedPlacement(b, a);
+  } else {
+    frames_.back() =
+        slider ? OdeSliderFrame(first, second, desc.axis) : OdeHingeFrame(second, desc.axis);
+    both.first_child = MakeJointPlacement(b, a, slider, desc.axis, desc.point);
+    both.second_child = MakeJointPlacement(a, b, slider, desc.axis, desc.point);
+  }
+  break_gaps_.back() = JointBreakGap(BuiltOffset(both.first_child, second != nullptr));
 }
 
 int OdeWorldJoints::IndexOf(const dxJoint* joint) const {
@@ -107,6 +123,7 @@ void OdeWorldJoints::Clear() {
   types_.clear();
   frames_.clear();
   placements_.clear();
+  break_gaps_.clear();
 }
 
 double OdeWorldJoints::Position(int joint) const {
@@ -115,6 +132,25 @@ double OdeWorldJoints::Position(int joint) const {
   if (types_[joint] == WorldJointType::kHinge) return dJointGetHingeAngle(j);
   if (types_[joint] == WorldJointType::kSlider) return dJointGetSliderPosition(j);
   return 0.0;
+}
+
+double OdeWorldJoints::Gap(int joint) const {
+  dJointID j = joints_.at(static_cast<size_t>(joint));
+  if (j == nullptr || dJointGetBody(j, 0) == nullptr) return 0.0;
+  dBodyID second = dJointGetBody(j, 1);
+  return JointGap(placements_[joint].first_child,
+                  second != nullptr ? ReadBodyState(second) : BodyState{},
+                  ReadBodyState(dJointGetBody(j, 0)));
+}
+
+bool OdeWorldJoints::AnyOpen(double* largest) const {
+  bool open = false;
+  for (int j = 0; j < size(); ++j) {
+    const double gap = Gap(j);
+    open = open || gap > break_gaps_[j];
+    if (largest) *largest = std::max(*largest, gap);
+  }
+  return open;
 }
 
 double OdeWorldJoints::Rate(int joint) const {

@@ -39,6 +39,13 @@ class OdeWorldJoints {
   /// pose, and its rate (rad/s or m/s); 0 for a fixed or skipped joint.
   double Position(int joint) const;
   double Rate(int joint) const;
+  /// How far joint `joint` is open (m; JointGap, joint_projection.h), and how far it may be
+  /// (JointBreakGap of its bodies' distance as built); 0 and infinite for a skipped joint.
+  double Gap(int joint) const;
+  double BreakGap(int joint) const { return break_gaps_.at(static_cast<size_t>(joint)); }
+  /// Whether a joint is open beyond its BreakGap; `largest` (when given) is raised to the widest
+  /// gap.
+  bool AnyOpen(double* largest = nullptr) const;
 
   /// Joint `joint`'s ODE joint (null when skipped), and what JointRows needs of it
   /// (ode_joint_rows.h: the Newton solver's rows of a hinge or slider whose first body moves).
@@ -46,7 +53,8 @@ class OdeWorldJoints {
   const JointFrame& frame(int joint) const { return frames_.at(static_cast<size_t>(joint)); }
   /// The world joint whose ODE joint is `joint`, or -1.
   int IndexOf(const dxJoint* joint) const;
-  /// A hinge's or slider's placement (joint_projection.h), as built: with its first body the
+  /// A hinge's or slider's placement (joint_projection.h), as built (a fixed joint's: only
+  /// first_is_child): with its first body the
   /// child of its second (or of the world), or with its second body the child of its first.
   const JointPlacement& placement(int joint, bool first_is_child) const {
     const Placements& both = placements_.at(static_cast<size_t>(joint));
@@ -63,6 +71,7 @@ class OdeWorldJoints {
   std::vector<WorldJointType> types_;
   std::vector<JointFrame> frames_;
   std::vector<Placements> placements_;
+  std::vector<double> break_gaps_;  ///< m, per joint
 };
 
 }  // namespace lamina::core

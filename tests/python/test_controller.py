@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 # SimRobotController: Klamp't's commands on the 1R robot of worlds/klampt/control/world1.xml and
-# ATHLETE's leg lift on fractal terrain.
+# ATHLETE's leg lift on fractal terrain; a step's status in Klamp't's numbers.
 import pytest
 
 import lamina
@@ -72,3 +72,22 @@ def test_athlete_leg_lift_on_fractal_terrain():
     # ground and pushes the base back)
     for _, base in samples[:back + 1]:
         assert max(abs(base[k] - base0[k]) for k in range(3)) < 0.005
+
+
+def test_a_joint_the_solver_does_not_hold_is_klampts_unreliable_status():
+    # the taut bridge under QuickStep at 10 ms opens its hinges by up to 0.44 m (docs/stress.md):
+    # Lamina's "joint open", which Klamp't's numbers give as 2 (STATUS_CONTACT_UNRELIABLE)
+    world = lamina.WorldModel(str(WORLDS / "accuracy" / "bridge_160.xml"))
+    sim = lamina.Simulator(world)
+    sim.setSetting("solver", "quick")
+    sim.setSimStep(0.01)
+    codes, names = set(), set()
+    for _ in range(200):
+        sim.simulate(0.01)
+        codes.add(sim.getStatus())
+        names.add(sim.getStatusString())
+    assert "joint open" in names
+    assert max(codes) == 2
+    assert sim.getStatusString(2) == "contact unreliable"
+    assert sim.getStatusString(3) == "unstable"
+    assert sim.getStatusString(4) == "error"

@@ -2,8 +2,8 @@
 // World-level joints (`<simulation><joint>`, Klamp't's ODEJoint) read from world files and
 // simulated: a door on a hinge spins up by tau / I about its hinge and stops at its limit, a
 // drawer slides to its stop (or, with friction, stops where the friction says), a cabinet held
-// to the world by a fixed joint stays in the air while its drawer slides in it; the files round
-// trip and bad joints are refused with their file:line.
+// to the world by a fixed joint stays in the air while its drawer slides in it; a joint pulled
+// apart reads "joint open"; the files round trip and bad joints are refused with their file:line.
 #include <cmath>
 #include <string>
 
@@ -139,23 +139,96 @@ TEST(WorldJointTest, SliderFrictionStopsTheDrawerWhereTheFrictionSays) {
   EXPECT_NEAR(simulator.GetObjectVelocity(0).linear.x(), 0.0, 1e-3);
 }
 
+// a 20 kg cabinet held to the world by a fixed joint 1 m up, and a 2 kg drawer in it on a slider
+// along x (`slider`: the slider's extra attributes; `drawer`: the drawer's <object> settings)
+std::string CabinetWorld(const std::string& slider, const std::string& drawer) {
+  return "<world>\n" + Box("cabinet", Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 1), 20.0, false) +
+         Box("drawer", Vec3(0.4, 0.4, 0.1), Vec3(0, 0, 1.1), 2.0, false) +
+         "  <simulation>\n    <globals rigidObjectCollisions=\"0\"/>\n" + drawer +
+         "    <joint type=\"fixed\"><rigidObject name=\"cabinet\"/></joint>\n"
+         "    <joint type=\"slider\" axis=\"1 0 0\"" +
+         slider +
+         ">\n"
+         "      <rigidObject name=\"drawer\"/><rigidObject name=\"cabinet\"/>\n    </joint>\n"
+         "  </simulation>\n</world>\n";
+}
+
 TEST(WorldJointTest, AFixedJointHoldsACabinetWhoseDrawerSlidesInIt) {
-  const std::string xml =
-      "<world>\n" + Box("cabinet", Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 1), 20.0, false) +
-      Box("drawer", Vec3(0.4, 0.4, 0.1), Vec3(0, 0, 1.1), 2.0, false) +
-      "  <simulation>\n    <globals rigidObjectCollisions=\"0\"/>\n"
-      "    <object index=\"1\"><velocity linear=\"0.5 0 0\"/></object>\n"
-      "    <joint type=\"fixed\"><rigidObject name=\"cabinet\"/></joint>\n"
-      "    <joint type=\"slider\" axis=\"1 0 0\" max=\"0.25\">\n"
-      "      <rigidObject name=\"drawer\"/><rigidObject name=\"cabinet\"/>\n    </joint>\n"
-      "  </simulation>\n</world>\n";
-  core::Simulator simulator(Load("cabinet.xml", xml));
+  core::Simulator simulator(
+      Load("cabinet.xml",
+           CabinetWorld(" max=\"0.25\"",
+                        "    <object index=\"1\"><velocity linear=\"0.5 0 0\"/></object>\n")));
   ASSERT_EQ(simulator.world_joint_count(), 2);
   simulator.Simulate(1.5);
   EXPECT_TRUE(simulator.GetObjectPose(0).translation().isApprox(Vec3(0, 0, 1), 1e-4));
   EXPECT_NEAR(simulator.GetObjectPose(1).translation().x(), 0.25, 0.002);
   EXPECT_NEAR(simulator.GetObjectPose(1).translation().z(), 1.1, 1e-4);
   EXPECT_NEAR(simulator.WorldJointPosition(1), 0.25, 0.002);  // the drawer in the cabinet
+}
+
+// the step guard's watch on the world's joints (robot_guard.h, joint_projection.h's JointGap): the
+// door stays closed to ERP's drift, and a joint pulled apart reads "joint open" for the steps its
+// gap stays over its break gap: for the door 10 % of the 1.17 m from its hinge's point to its
+// centre of mass
+TEST(WorldJointTest, AHingedDoorStaysClosed) {
+  core::Simulator simulator(Load("door_open.xml", DoorWorld("")));
+  core::SimBody door = simulator.body(simulator.world().ObjectId(0));
+  for (int k = 0; k < 50; ++k) {
+    door.ApplyWrench(Vec3::Zero(), Vec3(0, 0, 2.0));
+    EXPECT_EQ(simulator.Simulate(0.01), core::StepStatus::kNormal);
+  }
+  EXPECT_EQ(simulator.statistics().joint_open_steps, 0);
+  EXPECT_LT(simulator.statistics().max_joint_gap, 1e-4);
+}
+
+// a world whose joints close slowly: 0.2 % of a gap per step (ERP), so that closing a gap of
+// 0.3 m gives the door 0.6 m/s, not the 6 m/s the energy check would stop at ERP 0.02
+std::string SlowlyClosing(std::string xml) {
+  const std::string simulation = "<simulation>\n";
+  return xml.replace(xml.find(simulation), simulation.size(),
+                     simulation + "    <globals ERP=\"0.002\"/>\n");
+}
+
+TEST(WorldJointTest, ADoorPulledOffItsHingeReadsJointOpenUntilTheHingeClosesIt) {
+  core::Simulator simulator(Load("door_open.xml", SlowlyClosing(DoorWorld(""))));
+  ASSERT_EQ(simulator.world().settings.erp, 0.002);
+  // a teleport 0.3 m off the hinge (as a script or a bad edit might): the hinge pulls it back
+  // over many steps, and those steps say so
+  core::Pose pulled = simulator.GetObjectPose(0);
+  const Vec3 hinge_point = pulled * Vec3::Zero();  // the door's origin is on its hinge
+  pulled.translation() += Vec3(0.3, 0, 0);
+  simulator.SetObjectPose(0, pulled);
+  EXPECT_EQ(simulator.Simulate(0.001), core::StepStatus::kJointOpen);
+  EXPECT_GT(simulator.statistics().max_joint_gap, 0.117);
+  EXPECT_EQ(simulator.statistics().joint_open_steps, 1);
+  simulator.Simulate(3.0);
+  // open while 0.3 m·0.998^n > 0.117 m: for about 470 steps of 1 ms
+  EXPECT_NEAR(simulator.statistics().joint_open_steps, 470, 30);
+  EXPECT_LT((simulator.GetObjectPose(0) * Vec3::Zero() - hinge_point).norm(), 1e-3);
+  EXPECT_EQ(simulator.Simulate(0.01), core::StepStatus::kNormal);  // closed again
+}
+
+TEST(WorldJointTest, AFixedJointAndASliderPulledApartReadJointOpen) {
+  core::Simulator simulator(
+      Load("cabinet_open.xml", SlowlyClosing(CabinetWorld(" min=\"-1\" max=\"1\"", ""))));
+  EXPECT_EQ(simulator.Simulate(0.5), core::StepStatus::kNormal);
+  EXPECT_LT(simulator.statistics().max_joint_gap, 1e-4);
+  // the drawer along its slider: travel, not a gap
+  core::Pose drawer = simulator.GetObjectPose(1);
+  drawer.translation() += Vec3(0.5, 0, 0);
+  simulator.SetObjectPose(1, drawer);
+  EXPECT_EQ(simulator.Simulate(0.001), core::StepStatus::kNormal);
+  // across it, 5 cm: beyond the 1 cm floor of a slider's break gap
+  drawer.translation() += Vec3(0, 0.05, 0);
+  simulator.SetObjectPose(1, drawer);
+  EXPECT_EQ(simulator.Simulate(0.001), core::StepStatus::kJointOpen);
+  simulator.Simulate(1.0);
+  core::Pose cabinet = simulator.GetObjectPose(0);
+  ASSERT_EQ(simulator.Simulate(0.01), core::StepStatus::kNormal);
+  // the cabinet off its fixed joint to the world
+  cabinet.translation() += Vec3(0, 0, 0.05);
+  simulator.SetObjectPose(0, cabinet);
+  EXPECT_EQ(simulator.Simulate(0.001), core::StepStatus::kJointOpen);
 }
 
 // ---- in joint coordinates (the Newton solver with jointCoordinates: object_islands.h) --------

@@ -135,5 +135,41 @@ TEST(JointProjectionTest, APendulumOnTheWorldReadsItsSwing) {
   EXPECT_NEAR(JointCoordinate(joint, world, swung), angle, kOnJointTolerance);
 }
 
+TEST(JointProjectionTest, AHingesGapIsHowFarItsTwoAxisPointsAre) {
+  const HingeScene c;
+  EXPECT_NEAR(JointGap(c.joint, c.parent, c.child), 0.0, kOnJointTolerance);
+  EXPECT_NEAR(JointGap(c.joint, c.parent, c.Turned(1.3)), 0.0, kOnJointTolerance);  // a swing
+  BodyState pulled = c.Turned(1.3);
+  const Vec3 apart(0.03, -0.04, 0.0);  // 5 cm
+  pulled.com_position += apart;
+  EXPECT_NEAR(JointGap(c.joint, c.parent, pulled), apart.norm(), kOnJointTolerance);
+  // the parent carries its copy of the point along
+  BodyState carried = c.parent;
+  carried.com_position += apart;
+  EXPECT_NEAR(JointGap(c.joint, carried, pulled), 0.0, kOnJointTolerance);
+}
+
+TEST(JointProjectionTest, ASlidersGapIsWhatIsAcrossItsLine) {
+  const BodyState parent = PosedBody(AxisTurn(0.4, Vec3(0, 1, 1)), Vec3(1, 2, 3));
+  const BodyState child = PosedBody(AxisTurn(1.1, Vec3(1, -1, 0)), Vec3(1.5, 2.2, 2.4));
+  const Vec3 axis = Vec3(1, 1, 0).normalized();
+  const JointPlacement joint = MakeJointPlacement(parent, child, true, axis, Vec3::Zero());
+  BodyState moved = child;
+  moved.com_position += 0.7 * axis + Vec3(0, 0, 0.02);  // travel does not count; across does
+  EXPECT_NEAR(JointGap(joint, parent, moved), 0.02, kOnJointTolerance);
+  // a fixed joint: a slider along no axis, every offset counts and its coordinate stays 0
+  const JointPlacement fixed = MakeFixedPlacement(parent, child);
+  EXPECT_NEAR(JointGap(fixed, parent, child), 0.0, kOnJointTolerance);
+  EXPECT_NEAR(JointGap(fixed, parent, moved), (0.7 * axis + Vec3(0, 0, 0.02)).norm(),
+              kOnJointTolerance);
+  EXPECT_EQ(JointCoordinate(fixed, parent, moved), 0.0);
+}
+
+TEST(JointProjectionTest, AJointMayOpenByTenPercentOfItsOffsetOrOneCentimetre) {
+  EXPECT_DOUBLE_EQ(JointBreakGap(1.0), 0.1);
+  EXPECT_DOUBLE_EQ(JointBreakGap(0.05), 0.01);
+  EXPECT_DOUBLE_EQ(JointBreakGap(0.0), 0.01);
+}
+
 }  // namespace
 }  // namespace lamina::core

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The robot joint check of the step guard (core/sim/robot_guard.h): the gap of a joint is how far
-// a link's origin is from where its parent puts it (a prismatic joint's slide not counted), and a
-// step breaks a robot when some gap grows by more than max(1 cm, 10 % of the link's offset).
+// a link's origin is from where its parent puts it (a prismatic joint's slide within its limits
+// not counted), a step breaks a robot when some gap grows by more than max(1 cm, 10 % of the
+// link's offset), and a joint whose gap is beyond that is open.
 #include "core/sim/robot_guard.h"
+
+#include <cmath>
 
 #include <gtest/gtest.h>
 
@@ -43,6 +46,30 @@ TEST(RobotGuardTest, APrismaticSlideIsNotAGap) {
   std::vector<double> gaps;
   RobotJointGaps(robot, Frames(Vec3(0, 0, 1), Vec3(0.9, 0.002, 1)), {1, 1}, &gaps);
   EXPECT_NEAR(gaps[1], 0.002, 1e-12);
+}
+
+TEST(RobotGuardTest, APrismaticSlidePastItsLimitsOpensItsStop) {
+  RobotDesc robot = TwoLinks(LinkJointAxis::kPrismatic);
+  robot.links[1].q_min = -0.1;
+  robot.links[1].q_max = 0.3;
+  std::vector<double> gaps;
+  // slid 0.4 m along x from where its parent puts it: 0.1 m past q_max, and 3 mm across
+  RobotJointGaps(robot, Frames(Vec3(0, 0, 1), Vec3(0.9, 0.003, 1)), {1, 1}, &gaps);
+  EXPECT_NEAR(gaps[1], std::hypot(0.1, 0.003), 1e-12);
+  RobotJointGaps(robot, Frames(Vec3(0, 0, 1), Vec3(0.25, 0, 1)), {1, 1}, &gaps);
+  EXPECT_NEAR(gaps[1], 0.15, 1e-12);  // at x = 0.25 m, short of q_min's 0.4 m
+  RobotJointGaps(robot, Frames(Vec3(0, 0, 1), Vec3(0.8, 0, 1)), {1, 1}, &gaps);
+  EXPECT_NEAR(gaps[1], 0.0, 1e-12);  // at q_max
+}
+
+TEST(RobotGuardTest, AJointOpenBeyondItsBreakGapIsOpenHoweverSlowlyItOpened) {
+  const RobotDesc robot = TwoLinks(LinkJointAxis::kRevolute);
+  double largest = 0.0;
+  EXPECT_FALSE(RobotJointsOpen(robot, {0.09, 0.049}, &largest));
+  EXPECT_DOUBLE_EQ(largest, 0.09);
+  EXPECT_TRUE(RobotJointsOpen(robot, {0.0, 0.051}, &largest));
+  EXPECT_DOUBLE_EQ(largest, 0.09);
+  EXPECT_TRUE(RobotJointsOpen(robot, {0.11, 0.0}));
 }
 
 TEST(RobotGuardTest, AStepBreaksARobotWhenAGapGrowsPastItsLimit) {

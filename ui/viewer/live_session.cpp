@@ -63,13 +63,30 @@ RobotFrame RobotFrameOf(const core::Simulator& simulator, int robot) {
   return frame;
 }
 
+// whether a body of `ids` is a robot's link (robot links are stopped only when their robot
+// blew up: robot_guard.h, step_guard.h)
+bool AnyRobotLink(const core::WorldDesc& world, const std::vector<int>& ids) {
+  return std::any_of(ids.begin(), ids.end(), [&](int id) {
+    return world.Resolve(id).kind == core::WorldId::Kind::kRobotLink;
+  });
+}
+
 // what to try when the simulation stopped or had to be corrected
 std::string ProblemText(const core::Simulator& simulator, core::StepStatus status,
                         const std::vector<int>& corrected) {
-  const std::string at = " at t = " + std::to_string(simulator.time()) + " s";
+  char time[32];
+  std::snprintf(time, sizeof(time), " at t = %.3f s", simulator.time());
+  const std::string at = time;
   if (simulator.halted()) {
     return "The simulation stopped" + at + ": " + simulator.statistics().error +
            ". Undo the last edit, Reset, or lower kStiffness / raise padding or damping.";
+  }
+  if (status == core::StepStatus::kUnstable && AnyRobotLink(simulator.world(), corrected)) {
+    // (its joints came apart, or its energy overflowed: robot_guard.h, step_guard.h)
+    return "Energy blew up in " + core::BodiesText(simulator.world(), corrected) + at +
+           " and the robot was stopped (paused). Try the exact or Newton solver, a smaller "
+           "timestep, softer servo gains or a smaller command; Space resumes, Ctrl+Z undoes the "
+           "last edit.";
   }
   if (status == core::StepStatus::kUnstable) {
     const std::string in =
@@ -77,6 +94,15 @@ std::string ProblemText(const core::Simulator& simulator, core::StepStatus statu
     return "Energy blew up" + in + at +
            " and was corrected (paused). Try lower kStiffness, more kDamping or padding, or a "
            "smaller timestep; Space resumes, Ctrl+Z undoes the last edit.";
+  }
+  if (status == core::StepStatus::kJointOpen) {
+    char gap[32];
+    std::snprintf(gap, sizeof(gap), "%.3g", simulator.statistics().max_joint_gap);
+    const char* gains = simulator.robot_count() > 0 ? ", or softer servo gains" : "";
+    return std::string("A joint came open (up to ") + gap + " m)" + at +
+           ": the solver does not hold it at this step. Try the exact or Newton solver or a "
+           "smaller timestep" +
+           gains + ".";
   }
   return "";
 }
