@@ -137,6 +137,14 @@ double OdeWorldJoints::Position(int joint) const {
 double OdeWorldJoints::Gap(int joint) const {
   dJointID j = joints_.at(static_cast<size_t>(joint));
   if (j == nullptr || dJointGetBody(j, 0) == nullptr) return 0.0;
+  if (types_[joint] == WorldJointType::kHinge) {
+    // the axis point as each body carries it (ODE keeps both): JointGap's hinge gap, from the
+    // rotation matrices ODE already has
+    dVector3 first, second;
+    dJointGetHingeAnchor(j, first);
+    dJointGetHingeAnchor2(j, second);
+    return dCalcPointsDistance3(first, second);
+  }
   dBodyID second = dJointGetBody(j, 1);
   return JointGap(placements_[joint].first_child,
                   second != nullptr ? ReadBodyState(second) : BodyState{},
