@@ -245,8 +245,9 @@ TEST(LiveSessionTest, ChoosingASolverInTheSettingsEndsTheChoice) {
   EXPECT_FALSE(frame->solver_chosen);
 }
 
-// An instability the step guard corrects pauses the simulation and names the body; the text
-// stays while paused (the status line gets it once) and goes when the simulation plays again.
+// An instability the step guard corrects pauses the simulation and names the body; the text and
+// the status stay while paused (the status line gets it once) and go when the simulation plays
+// again.
 TEST(LiveSessionTest, AnInstabilityPausesAndNamesTheBody) {
   LiveSession session(false);
   ASSERT_TRUE(Load(&session, kArm));
@@ -262,14 +263,17 @@ TEST(LiveSessionTest, AnInstabilityPausesAndNamesTheBody) {
             std::string::npos)
       << frame->problem;
   EXPECT_NE(frame->problem.find("kStiffness"), std::string::npos) << frame->problem;
-  session.Advance(kFrame);  // paused: still said
+  EXPECT_EQ(frame->status, core::StepStatus::kUnstable);
+  session.Advance(kFrame);  // paused: still said, and the status with it
   EXPECT_EQ(session.frame()->problem, frame->problem);
+  EXPECT_EQ(session.frame()->status, core::StepStatus::kUnstable);
   const std::vector<std::string> messages = session.TakeMessages();
   ASSERT_EQ(messages.size(), 1u);
   EXPECT_EQ(messages[0], frame->problem);
   session.SetPlaying(true);
   session.Advance(kFrame);
   EXPECT_TRUE(session.frame()->problem.empty()) << session.frame()->problem;
+  EXPECT_EQ(session.frame()->status, core::StepStatus::kNormal);
 }
 
 // An absurd robot velocity (energy beyond a double) is stopped by the step guard before the

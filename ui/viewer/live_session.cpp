@@ -340,7 +340,8 @@ void LiveSession::RunCommands() {
       continue;
     }
     std::string message = world_ ? entry.second(*world_) : "no world is open";
-    problem_.clear();  // an edit, an undo, a reset: what went wrong may no longer hold
+    problem_.clear();   // an edit, an undo, a reset: what went wrong may no longer hold
+    shown_steps_ = -1;  // and the status is the next steps'
     std::lock_guard<std::mutex> lock(mutex_);
     done_count_ = entry.first;
     if (!message.empty()) messages_.push_back(std::move(message));
@@ -508,7 +509,12 @@ void LiveSession::FillFrame(int sampled, SessionFrame* frame) {
   frame->exact_factor = choice_.reachable_factor();
   frame->smallest_step = std::exchange(smallest_step_, 0.0);
   frame->steps = simulator.statistics().steps;
-  frame->status = worst_;
+  // (a reset or a new world counts from 0 again: a different count)
+  if (simulator.statistics().steps != shown_steps_ || simulator.halted()) {
+    shown_status_ = worst_;
+    shown_steps_ = simulator.statistics().steps;
+  }
+  frame->status = shown_status_;
   frame->halted = simulator.halted();
   // an error shows while the simulation is halted; a corrected instability until it plays again
   std::string problem = ProblemText(simulator, worst_, corrected_);

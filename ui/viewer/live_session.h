@@ -75,7 +75,9 @@ struct SessionFrame {
   /// the shortest accepted sub-step since the previous frame (adaptive stepping halves it), s
   double smallest_step = 0.0;
   long steps = 0;
-  core::StepStatus status = core::StepStatus::kNormal;  ///< worst since the previous frame
+  /// the worst of the steps taken since the previous frame; when none was taken (paused), the
+  /// status of the last steps taken, so that a pause after an instability still says it
+  core::StepStatus status = core::StepStatus::kNormal;
   bool halted = false;  ///< an error stopped the simulation (undo, reset or an edit revives it)
   std::string problem;  ///< what went wrong and what to try; "" when all is well
   bool playing = false;
@@ -216,6 +218,8 @@ class LiveSession {
   // physics thread only
   double owed_ = 0.0;
   core::StepStatus worst_ = core::StepStatus::kNormal;
+  core::StepStatus shown_status_ = core::StepStatus::kNormal;  ///< of the last frame that stepped
+  long shown_steps_ = -1;                         ///< the simulator's step count at that frame
   double smallest_step_ = 0.0;                    ///< since the previous frame (0: no step)
   core::Vec3 drag_impulse_ = core::Vec3::Zero();  ///< since the previous frame
   std::vector<int> corrected_;  ///< bodies the stability checks corrected since the previous frame
