@@ -34,11 +34,10 @@
 // too). Measured: at rest to 7e-15 m/s at 1 ms and 8e-16 m/s at 10 ms on 8 steady contacts (4 under
 // the cube, 4 under the pad) under the exact solver, 2e-13 m/s under the Newton solver (bars met).
 // QuickStep(20) does not hold it: the pressed cube rocks at 4.1 mm/s RMS at 1 ms with the contact
-// count varying by 7 (the stress suite's gripper_pad cases); at 10 ms its pad's explicit PID
-// diverges (servoD·h/m = 5 on the 0.2 kg pad) and swings the pad out through its stops, which the
-// step guard catches at every such step: the robot is put back at rest, status "unstable"
-// (robot_guard.h, docs/stress.md; before 2026-11-29 the joint read -4e125 m with the status
-// saying only "adaptive step").
+// count varying by 7 (the stress suite's gripper_pad cases); at 10 ms the pad's explicit PID
+// would diverge (servoD·h/m = 5 on the 0.2 kg pad) and its actuator has no torque limit, so
+// QuickStep solves that servo implicitly (explicit_pd.h): the cube rocks at 2 cm/s RMS (before
+// 2026-11-29 the joint read -4e125 m with the status saying only "adaptive step").
 #include <cmath>
 #include <string>
 

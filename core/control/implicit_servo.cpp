@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/control/explicit_pd.h"
 #include "core/control/robot_controller.h"
 
 namespace lamina::core {
@@ -17,9 +18,34 @@ bool RobotController::ServoDriver(int d) const {
          driver.torque_min <= 0.0 && driver.torque_max >= 0.0;
 }
 
+bool RobotController::UnlimitedServo(int d) const {
+  const DriverDesc& driver = robot_->drivers[d];
+  return ServoDriver(d) && std::isinf(driver.torque_max) && std::isinf(driver.torque_min);
+}
+
+bool RobotController::HasUnlimitedServo() const {
+  for (int d = 0; d < driver_count(); ++d) {
+    if (UnlimitedServo(d)) return true;
+  }
+  return false;
+}
+
+void RobotController::DivergingServos(const VecX& link_inertias, double h,
+                                      std::vector<char>* diverging) const {
+  diverging->assign(driver_count(), 0);
+  for (int d = 0; d < driver_count(); ++d) {
+    if (!UnlimitedServo(d)) continue;
+    const DriverDesc& driver = robot_->drivers[d];
+    const int link = driver.links[0];
+    if (link < 0 || link >= link_inertias.size()) continue;
+    (*diverging)[d] = !ExplicitPdStable(driver.servo_p, driver.servo_d, link_inertias[link], h);
+  }
+}
+
 void RobotController::ComputeImplicitServo(const VecX& q, const VecX& dq, double h,
                                            VecX* link_forces,
-                                           std::vector<ServoMotorCommand>* motors) const {
+                                           std::vector<ServoMotorCommand>* motors,
+                                           const std::vector<char>* only) const {
   motors->clear();
   if (!(h > 0.0)) {
     ComputeLinkForces(q, dq, link_forces);
@@ -27,10 +53,14 @@ void RobotController::ComputeImplicitServo(const VecX& q, const VecX& dq, double
   }
   // the servo drivers' whole law goes to their motors, so that the bound clamps the sum as the
   // explicit law does
-  AddDriverForces(q, dq, true, link_forces);
+  implicit_.assign(driver_count(), 0);
+  for (int d = 0; d < driver_count(); ++d) {
+    implicit_[d] = ServoDriver(d) && (only == nullptr || (*only)[d]);
+  }
+  AddDriverForces(q, dq, &implicit_, link_forces);
   if (q.size() != dof() || dq.size() != dof()) return;
   for (int d = 0; d < driver_count(); ++d) {
-    if (!ServoDriver(d)) continue;
+    if (!implicit_[d]) continue;
     const DriverDesc& driver = robot_->drivers[d];
     const ActuatorState& state = actuators_[d];
     // with unlimited torque, viscous joint friction is one more damper of the same row (solved

@@ -261,15 +261,15 @@ VecX RobotController::DriverEfforts(const VecX& q, const VecX& dq) const {
 }
 
 void RobotController::ComputeLinkForces(const VecX& q, const VecX& dq, VecX* link_forces) const {
-  AddDriverForces(q, dq, false, link_forces);
+  AddDriverForces(q, dq, nullptr, link_forces);
 }
 
-void RobotController::AddDriverForces(const VecX& q, const VecX& dq, bool skip_servos,
+void RobotController::AddDriverForces(const VecX& q, const VecX& dq, const std::vector<char>* skip,
                                       VecX* link_forces) const {
   link_forces->setZero(dof());
   if (q.size() != dof() || dq.size() != dof()) return;
   for (int d = 0; d < driver_count(); ++d) {
-    if (!UsableDriver(d) || (skip_servos && ServoDriver(d))) continue;
+    if (!UsableDriver(d) || (skip && (*skip)[d])) continue;
     const DriverDesc& driver = robot_->drivers[d];
     const double effort =
         ActuatorEffort(actuators_[d], driver, DriverValue(d, q), DriverVelocity(d, dq));

@@ -111,8 +111,18 @@ class RobotController {
   /// inertia; the explicit law is not once kD·h exceeds about twice the joint's inertia). A motor
   /// is bounded by ±fmax: the smaller of the driver's two torque limits (limits that do not
   /// straddle zero keep the explicit law).
+  /// With `only` (per driver), only the drivers it marks go to motors; the others keep the
+  /// explicit law.
   void ComputeImplicitServo(const VecX& q, const VecX& dq, double h, VecX* link_forces,
-                            std::vector<ServoMotorCommand>* motors) const;
+                            std::vector<ServoMotorCommand>* motors,
+                            const std::vector<char>* only = nullptr) const;
+  /// Whether some normal PID driver has no torque limit (what DivergingServos looks at).
+  bool HasUnlimitedServo() const;
+  /// Marks (per driver) each normal PID driver without a torque limit whose explicit law
+  /// diverges at step `h` on its joint's inertia (`link_inertias`, per link: dynamics.h's
+  /// JointInertias): explicit_pd.h. Such a law would take the joint to infinity; a limited one
+  /// chatters at its limit instead, as in Klamp't.
+  void DivergingServos(const VecX& link_inertias, double h, std::vector<char>* diverging) const;
   /// The clamped driver efforts at (q, dq) (driver-sized; Klamp't getActualTorque).
   VecX DriverEfforts(const VecX& q, const VecX& dq) const;
   /// After an accepted physics step of h s ending at q: PID integrals, locked-velocity targets.
@@ -212,10 +222,12 @@ class RobotController {
   template <typename Command>
   bool QueueCommand(const char* command, Command&& run);
   void AddAffineCorrection(int d, const VecX& q, const VecX& dq, VecX* link_forces) const;
-  // link forces of the drivers' explicit law; with `skip_servos` without the ServoDriver ones
-  void AddDriverForces(const VecX& q, const VecX& dq, bool skip_servos, VecX* link_forces) const;
+  // link forces of the drivers' explicit law, without the drivers `skip` marks (when given)
+  void AddDriverForces(const VecX& q, const VecX& dq, const std::vector<char>* skip,
+                       VecX* link_forces) const;
   // a normal PID driver whose law ComputeImplicitServo turns into a joint motor
   bool ServoDriver(int d) const;
+  bool UnlimitedServo(int d) const;
   void SetTargetsFromQueue();
   // `q` with the links no driver moves (a floating base) held at the queue's end value, or with
   // `velocity`, at rest: ramps cannot plan motion the robot cannot make
@@ -236,6 +248,8 @@ class RobotController {
   bool gravity_compensation_ = false;
   bool floating_base_ = false;
   std::vector<bool> driven_;  ///< per link: some driver moves it
+  /// ComputeImplicitServo's scratch: per driver, its law goes to a motor this step
+  mutable std::vector<char> implicit_;
   Vec3 gravity_ = Vec3(0, 0, -9.8);
   std::string last_error_;
 };

@@ -124,6 +124,21 @@ double ThreeOverTrace(const RobotDesc& robot, const VecX& q, const std::vector<b
 
 }  // namespace
 
+VecX JointInertias(const RobotDesc& robot, const VecX& q, const std::vector<bool>& free) {
+  const int n = robot.dof();
+  VecX inertias = VecX::Constant(n, kInf);
+  MatX mass = MassMatrix(robot, q, free);
+  // (the armature of ThreeOverTrace: joints that move no mass keep M invertible)
+  const double armature = 1e-9 * std::max(1.0, mass.diagonal().cwiseAbs().maxCoeff());
+  mass.diagonal().array() += armature;
+  const MatX inverse = mass.ldlt().solve(MatX::Identity(n, n));
+  for (int i = 0; i < n; ++i) {
+    const double moved = 1.0 / inverse(i, i) - armature;
+    if (free[i] && moved > armature) inertias[i] = moved;
+  }
+  return inertias;
+}
+
 double EffectiveMassAt(const RobotDesc& robot, const VecX& q, const std::vector<bool>& free,
                        int link, const Vec3& point) {
   return ThreeOverTrace(robot, q, free,

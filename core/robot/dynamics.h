@@ -41,4 +41,10 @@ double EffectiveMassAt(const RobotDesc& robot, const VecX& q, const std::vector<
 double EffectiveInertiaOf(const RobotDesc& robot, const VecX& q, const std::vector<bool>& free,
                           int link);
 
+/// The inertia each free joint moves when every other free joint moves freely too: 1 / (M⁻¹)_ii
+/// over the free joints (kg·m² for revolute, kg for prismatic links; the smallest inertia the
+/// joint can meet, so the one a joint's explicit PD law must be stable for: explicit_pd.h);
+/// infinite for a joint that is not free or moves no mass. One entry per link.
+VecX JointInertias(const RobotDesc& robot, const VecX& q, const std::vector<bool>& free);
+
 }  // namespace lamina::core

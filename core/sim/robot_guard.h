@@ -26,9 +26,9 @@
 // So a robot given an absurd input stays where it was, finite, with every step saying so, for as
 // long as the input lasts; a robot moving within what a step can follow never opens a joint that
 // far in one step (the 40-link chain of worlds/stress/chain_robot.xml whipping at 1 ms opens at
-// most 0.75 mm in a whole run). A PD servo too stiff for QuickStep's explicit law at the step
-// (worlds/accuracy/gripper_pad.xml at 10 ms: servoP·h²/m = 5, servoD·h/m = 5) drives its slider
-// out through its stops; the stop's gap flags it.
+// most 0.75 mm in a whole run). A torque-limited PD servo too stiff for QuickStep's explicit law
+// at the step (worlds/accuracy/gripper_pad.xml at 10 ms with a limit: servoD·h/m = 5,
+// explicit_pd.h) swings its slider through its stops; the stop's gap flags it.
 //
 // Differences from Klamp't: Klamp't has no check on a robot's joints; an energy check cannot tell
 // an absurd input from a real one (the input supplies the energy, and the work bound allows it).

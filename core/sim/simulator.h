@@ -389,6 +389,7 @@ class Simulator {
     std::vector<Pose> frames;               ///< link frames, for the gaps
     std::vector<char> known;                ///< links with a frame (not virtual)
     std::vector<int> joint_count;           ///< per owning link: the robot's joints on its body
+    std::vector<char> diverging;  ///< per driver: QuickStep solves its servo implicitly this step
   };
   struct RobotPlacement {  ///< where a robot is, to place it again after a rebuild
     VecX q, dq;
@@ -470,6 +471,7 @@ class Simulator {
   void RunControllers(double step);
   void PrepareRobotsForStep(double step);
   void MarkUnboundedServos(RobotScratch* scratch);
+  void QuickStepServos(int robot, double step);
   bool BoundOverrunServos();
   bool FrictionGuessesFailed();
   void AcceptRobotStep(double step);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/geometry/shrink.h"
+#include "core/robot/dynamics.h"
 #include "core/sim/body_change.h"
 #include "core/sim/ode_conversions.h"
 #include "core/sim/ode_robot.h"
@@ -148,9 +149,9 @@ void Simulator::PrepareRobotsForStep(double step) {
       MarkUnboundedServos(&scratch);
     } else {
       // QuickStep's iterations converge stiff servo rows on light chains too slowly (ATHLETE
-      // creeps 60 mm in 2 s with implicit servos, 16 mm with the explicit law): explicit there
-      controllers_[r].ComputeLinkForces(scratch.q, scratch.dq, &scratch.forces);
-      scratch.motors.clear();
+      // creeps 60 mm in 2 s with implicit servos, 16 mm with the explicit law): explicit there,
+      // but for an unlimited actuator whose explicit law would diverge (explicit_pd.h)
+      QuickStepServos(r, step);
     }
     // (dWorldStep's pivoting is what the guesses save; the Newton solver takes bounds at no
     // extra cost, and QuickStep keeps its rows bounded)
@@ -166,6 +167,25 @@ void Simulator::PrepareRobotsForStep(double step) {
     robot.MergeHoldingFriction(scratch.motors, scratch.friction);
     robot.ApplyLinkForces(scratch.forces);
   }
+}
+
+// under QuickStep: the explicit law, or a motor for the servos without a torque limit whose
+// explicit law diverges at this step on the inertia their joint moves (1 / (M⁻¹)_ii, dynamics.h)
+void Simulator::QuickStepServos(int robot, double step) {
+  RobotScratch& scratch = robot_scratch_[robot];
+  RobotController& controller = controllers_[robot];
+  scratch.diverging.clear();
+  if (controller.HasUnlimitedServo()) {
+    const VecX inertias = JointInertias(world_.robots[robot], scratch.q, FreeJoints(robot));
+    controller.DivergingServos(inertias, step, &scratch.diverging);
+  }
+  if (std::find(scratch.diverging.begin(), scratch.diverging.end(), 1) == scratch.diverging.end()) {
+    controller.ComputeLinkForces(scratch.q, scratch.dq, &scratch.forces);
+    scratch.motors.clear();
+    return;
+  }
+  controller.ComputeImplicitServo(scratch.q, scratch.dq, step, &scratch.forces, &scratch.motors,
+                                  &scratch.diverging);
 }
 
 // true when robot r's island goes to the exact solver's direct solve this step (object_islands.h)

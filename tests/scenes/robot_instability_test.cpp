@@ -2,7 +2,10 @@
 // Robot links in the step guard (core/sim/robot_guard.h): the three-link arm of
 // worlds/stress/absurd_torque.xml given 1e12 N·m on its middle joint, through the controller or as
 // a held torque on the link. The run goes on with the step flagged (status "unstable"), every
-// state stays finite, and the arm stays where it was instead of the run ending with an error.
+// state stays finite, and the arm stays where it was instead of the run ending with an error. And
+// a servo too stiff for QuickStep's explicit law at its step: solved implicitly, or flagged.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "core/sim/simulator.h"
@@ -78,6 +81,39 @@ TEST(RobotInstabilityTest, AbsurdHeldTorqueOnALinkIsFlaggedAndTheRunGoesOn) {
   EXPECT_EQ(simulator.statistics().worst_status, StepStatus::kUnstable);
   EXPECT_TRUE(simulator.GetRobotVelocity(0).allFinite());
   EXPECT_LT(LargestMove(&simulator, start), 0.01);
+}
+
+// worlds/accuracy/gripper_pad.xml under QuickStep at 10 ms: the pad's PID (servoP 1e4 N/m, servoD
+// 100 N·s/m on 0.2 kg) is too stiff for the explicit law there (kD·h/m = 5: explicit_pd.h). With
+// no torque limit the servo is solved implicitly and the pad holds, within its stops; with a
+// limit the explicit law stays (Klamp't's), swings the pad through its stops, and every step that
+// does so by more than 1 cm is flagged and the robot put back (robot_guard.h)
+WorldDesc PadAtTenMilliseconds(double torque_limit) {
+  test::LoadedWorld loaded;
+  test::LoadWorld(test::WorldsPath("accuracy/gripper_pad.xml"), &loaded);
+  EXPECT_TRUE(loaded.ok) << loaded.diagnostics.FormatAll();
+  loaded.world.settings.solver = SolverType::kQuickStep;
+  loaded.world.settings.timestep = 0.01;
+  loaded.world.robots[0].drivers[0].torque_max = torque_limit;
+  loaded.world.robots[0].drivers[0].torque_min = -torque_limit;
+  return loaded.world;
+}
+
+TEST(RobotInstabilityTest, AnUnlimitedServoTooStiffForQuickStepIsSolvedImplicitly) {
+  Simulator simulator(PadAtTenMilliseconds(kInf));
+  EXPECT_LE(simulator.Simulate(1.5), StepStatus::kAdaptiveStep);
+  EXPECT_EQ(simulator.statistics().instability_corrections, 0);
+  // held about its 1 mm target (the contact pushes back): measured 2.6e-4 m
+  EXPECT_NEAR(simulator.GetRobotConfig(0)[0], 0.0, 0.002);
+}
+
+TEST(RobotInstabilityTest, ALimitedServoTooStiffForQuickStepIsFlaggedAtItsStops) {
+  Simulator simulator(PadAtTenMilliseconds(1e4));
+  EXPECT_EQ(simulator.Simulate(1.5), StepStatus::kUnstable);
+  EXPECT_GT(simulator.statistics().instability_corrections, 10);
+  const double q = simulator.GetRobotConfig(0)[0];
+  EXPECT_TRUE(std::isfinite(q));
+  EXPECT_LT(std::abs(q), 0.1 + 0.01);  // never left more than 1 cm past a stop
 }
 
 }  // namespace

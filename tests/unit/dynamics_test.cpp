@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Gravity torques against central differences of the potential energy, on a 3-link arm with a
-// prismatic joint, tilted axes and offset COMs, and on a branching tree.
+// prismatic joint, tilted axes and offset COMs, and on a branching tree; the inertia each joint
+// moves.
 #include "core/robot/dynamics.h"
 
+#include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -91,6 +93,24 @@ TEST(DynamicsTest, HorizontalPendulumTorque) {
 TEST(DynamicsTest, WrongSizeThrows) {
   EXPECT_THROW(GravityTorques(ThreeLinkArm(), VecX::Zero(2), Vec3(0, 0, -9.8)),
                std::invalid_argument);
+}
+
+// two sliders along the same axis, m1 then m2 on it: with the other joint free, the first joint
+// moves m1 alone (the second lets m2 stay) and the second the reduced mass m1·m2 / (m1 + m2)
+// (it pushes m2 against m1)
+TEST(DynamicsTest, JointInertiasAreWhatEachJointMovesWithTheOthersFree) {
+  RobotDesc robot;
+  const auto p = LinkJointAxis::kPrismatic;
+  robot.links.push_back(Link(-1, p, Vec3::UnitX(), Vec3::Zero(), 3.0, Vec3::Zero()));
+  robot.links.push_back(Link(0, p, Vec3::UnitX(), Vec3::Zero(), 2.0, Vec3::Zero()));
+  for (LinkDesc& link : robot.links) link.parent_transform = Pose::Identity();
+  const VecX inertias = JointInertias(robot, VecX::Zero(2), {true, true});
+  EXPECT_NEAR(inertias[0], 3.0, 1e-6);
+  EXPECT_NEAR(inertias[1], 3.0 * 2.0 / 5.0, 1e-6);
+  // the first joint welded: the second pushes m2 alone
+  const VecX welded = JointInertias(robot, VecX::Zero(2), {false, true});
+  EXPECT_TRUE(std::isinf(welded[0]));
+  EXPECT_NEAR(welded[1], 2.0, 1e-6);
 }
 
 }  // namespace
