@@ -22,15 +22,21 @@ void AddImpulse(const NewtonRow& row, double impulse, Eigen::VectorXd* momentum)
   if (row.b >= 0) momentum->segment<6>(6 * row.b) += impulse * row.jb;
 }
 
+// block += u vᵀ, column by column (as fast as Eigen's outer product of an expression is slow)
+void AddOuter(const Vec6& u, const Vec6& v, ProfileCholesky::Block* block) {
+  for (int c = 0; c < 6; ++c) block->col(c) += u * v(c);
+}
+
 // w J_iᵀ J_i into the lower triangle of the blocks of bodies a and b
 void AddRow(const NewtonRow& row, double w, ProfileCholesky* k) {
-  if (row.a >= 0) k->block(row.a, row.a).noalias() += w * row.ja * row.ja.transpose();
-  if (row.b >= 0) k->block(row.b, row.b).noalias() += w * row.jb * row.jb.transpose();
+  const Vec6 wa = w * row.ja, wb = w * row.jb;
+  if (row.a >= 0) AddOuter(wa, row.ja, &k->block(row.a, row.a));
+  if (row.b >= 0) AddOuter(wb, row.jb, &k->block(row.b, row.b));
   if (row.a >= 0 && row.b >= 0) {
     if (row.b > row.a) {
-      k->block(row.b, row.a).noalias() += w * row.jb * row.ja.transpose();
+      AddOuter(wb, row.ja, &k->block(row.b, row.a));
     } else {
-      k->block(row.a, row.b).noalias() += w * row.ja * row.jb.transpose();
+      AddOuter(wa, row.jb, &k->block(row.a, row.b));
     }
   }
 }

@@ -5,6 +5,10 @@
 // outside the profile, so a chain of bodies (a stack: each touches the next) costs about
 // n · 2 · 6³ multiply-adds instead of (6n)³/3, and a robot's tree with every link before its
 // parent stays as narrow (object_islands.h); the work is done in fixed-size 6 × 6 products.
+// Blocks inside the profile that stay zero in the factor are skipped: a tree ordered children
+// first has no fill at all, and its root's block row, whose profile reaches back to its first
+// child's subtree, costs a product per child instead of one per body (ATHLETE: 6 legs of 6
+// links).
 // Used by the Newton solver (newton_solver.h).
 #pragma once
 
@@ -28,8 +32,10 @@ class ProfileCholesky {
   Block& block(int i, int j) { return values_[offset_[i] + j]; }
   const Block& block(int i, int j) const { return values_[offset_[i] + j]; }
   /// Factors the matrix as L Lᵀ in place. False when it is not positive definite (a pivot <= 0
-  /// or not finite).
+  /// or not finite). The solves below then skip the blocks of L that are zero.
   bool Factor();
+  /// After Factor: the number of blocks of L (diagonal included) that are not zero.
+  int nonzero_blocks() const;
   /// Solves L Lᵀ x = b in place with the factor (b: 6 entries per block).
   void Solve(Eigen::VectorXd* b) const;
   /// The two halves of Solve: L y = b, then Lᵀ x = y, in place. ForwardSolve takes b's blocks
@@ -40,9 +46,14 @@ class ProfileCholesky {
   void BackSolve(Eigen::VectorXd* b) const;
 
  private:
+  bool nonzero(int i, int j) const { return nonzero_[static_cast<size_t>(offset_[i] + j)] != 0; }
+  bool FactorBlock(int i, int j, const std::vector<int>& row);
+
   std::vector<int> first_;
   std::vector<int> offset_;  ///< block (i, j) is values_[offset_[i] + j]
   std::vector<Block, Eigen::aligned_allocator<Block>> values_;
+  std::vector<char> nonzero_;  ///< per block of values_: nonzero in the factor
+  std::vector<int> row_;       ///< Factor's nonzero block columns of the row it is at
 };
 
 }  // namespace lamina::core

@@ -65,6 +65,53 @@ TEST(ProfileCholeskyTest, SolvesAsEigensDenseCholeskyOnChainsBlocksAndTrees) {
   }
 }
 
+// A robot's tree ordered children first (three legs of three links, leaf first, then the root)
+// has blocks inside its profile that stay zero: the root's row reaches back to the first leg's
+// top link, but it only touches the three top links. The factor has no fill (one nonzero block
+// per body and per edge), those blocks stay exactly zero, and it still equals Eigen's.
+TEST(ProfileCholeskyTest, LeavesATreesBlocksZeroWithoutFill) {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const int bodies = 10, root = 9;
+  std::vector<int> parent(bodies, root), first(bodies);
+  for (int body = 0; body < root; ++body) {
+    if (body % 3 != 2) parent[body] = body + 1;  // 0 → 1 → 2 → root, 3 → 4 → 5 → root, ...
+  }
+  Eigen::MatrixXd dense = Eigen::MatrixXd::Identity(6 * bodies, 6 * bodies);
+  for (int body = 0; body < root; ++body) {  // an edge: E Eᵀ on the two bodies' rows
+    Eigen::MatrixXd e = Eigen::MatrixXd::Zero(6 * bodies, 6);
+    for (int i = 0; i < 6; ++i) {
+      for (int j = 0; j < 6; ++j) {
+        e(6 * body + i, j) = unit(random);
+        e(6 * parent[body] + i, j) = unit(random);
+      }
+    }
+    dense += e * e.transpose();
+  }
+  for (int body = 0; body < bodies; ++body) first[body] = body;
+  for (int body = 0; body < root; ++body) first[parent[body]] = std::min(first[parent[body]], body);
+  ASSERT_EQ(first[root], 2);  // the profile reaches back over legs two and three's lower links
+  ProfileCholesky a;
+  Load(dense, first, &a);
+  ASSERT_TRUE(a.Factor());
+  EXPECT_EQ(a.nonzero_blocks(), bodies + root);  // the diagonal and the nine edges
+  const Eigen::MatrixXd l = dense.llt().matrixL();
+  for (int i = 0; i < bodies; ++i) {
+    for (int j = first[i]; j < i; ++j) {
+      if (parent[j] == i) {
+        EXPECT_LE((a.block(i, j) - l.block<6, 6>(6 * i, 6 * j)).norm(), 1e-10) << i << ", " << j;
+      } else {
+        EXPECT_TRUE(a.block(i, j).isZero(0.0)) << i << ", " << j;
+        EXPECT_LE((l.block<6, 6>(6 * i, 6 * j)).norm(), 1e-12) << i << ", " << j;
+      }
+    }
+  }
+  Eigen::VectorXd x = Eigen::VectorXd::Random(dense.rows());
+  const Eigen::VectorXd expected = dense.llt().solve(x);
+  a.Solve(&x);
+  EXPECT_LE((x - expected).norm(), 1e-10 * (1.0 + expected.norm()));
+}
+
 TEST(ProfileCholeskyTest, RefusesAMatrixThatIsNotPositiveDefinite) {
   ProfileCholesky a;
   Eigen::MatrixXd dense = Eigen::MatrixXd::Identity(12, 12);
