@@ -279,9 +279,9 @@ void DirectSolver::Refine(const std::vector<NewtonBody>& bodies, const std::vect
   v += push;
 }
 
-// Rounds whose friction bounds follow the normal forces at once; later rounds move the bounds
-// halfway, which damps the back-and-forth of contacts whose normal force and friction feed each
-// other (a wheel on rough ground) without moving the fixed point the rounds settle on.
+// Rounds whose friction bounds follow the normal forces at once; later rounds take the secant step
+// of bound_secant.h, which settles the back-and-forth of contacts whose normal force and friction
+// feed each other (a wheel on rough ground) without moving the fixed point the rounds settle on.
 constexpr int kUndampedRounds = 10;
 
 // the bounded rows (bounded_, position_) and their normal rows' places (normal_at_); false for a
@@ -304,6 +304,18 @@ bool DirectSolver::Classify(const std::vector<NewtonRow>& rows) {
   return true;
 }
 
+// a friction row's bounds a fraction of the way from the last round's (`used_lo`, `used_hi`) to
+// the ones its normal force gives now: the secant step of bound_secant.h, from the upper bound
+// (the lower one is −μ/μ of it and moves with it)
+void DirectSolver::DampBounds(const Eigen::VectorXd& used_lo, const Eigen::VectorXd& used_hi) {
+  for (Eigen::Index k = 0; k < hi_.size(); ++k) {
+    if (normal_at_[static_cast<size_t>(k)] < 0) continue;  // (a fixed bound; may be infinite)
+    const double w = BoundStep(used_hi(k), hi_(k), &secants_[static_cast<size_t>(k)]);
+    lo_(k) = used_lo(k) + w * (lo_(k) - used_lo(k));
+    hi_(k) = used_hi(k) + w * (hi_(k) - used_hi(k));
+  }
+}
+
 // the box LCP of G and r in rounds of friction bounds (into lambda_); true when they settled
 bool DirectSolver::Rounds(const std::vector<NewtonRow>& rows, const DirectOptions& options,
                           NewtonResult* result) {
@@ -315,13 +327,11 @@ bool DirectSolver::Rounds(const std::vector<NewtonRow>& rows, const DirectOption
   int budget = options.max_pivots;
   bool settled = n == 0;
   Eigen::VectorXd used_lo, used_hi;  // the bounds of the last round
+  secants_.assign(static_cast<size_t>(n), {});
   while (!settled && result->rounds < options.max_rounds) {
     ++result->rounds;
     SetBounds(rows);
-    if (result->rounds > kUndampedRounds) {  // halfway from the last round's bounds
-      lo_ = 0.5 * (lo_ + used_lo);
-      hi_ = 0.5 * (hi_ + used_hi);
-    }
+    if (result->rounds > kUndampedRounds) DampBounds(used_lo, used_hi);
     used_lo = lo_;
     used_hi = hi_;
     for (Eigen::Index k = 0; k < n; ++k) {  // λ into the bounds; the rows at a bound stay there

@@ -21,10 +21,11 @@
 // part of G: 20 to 60 rows on a humanoid); friction bounds follow the normal forces in rounds as
 // in the Newton solver (newton_solver.h: where friction saturates this is the consistent answer,
 // where Dantzig fixes a bound from the normal force of the moment it pivots the row in; with
-// friction the law may have more than one answer); after ten rounds the bounds move halfway,
-// which damps rounds that swing back and forth. A solve that does not settle within its
-// budget reports no convergence and the caller hands the island back to dWorldStep
-// (object_islands.h).
+// friction the law may have more than one answer); after ten rounds each bound takes the secant
+// step towards its fixed point (bound_secant.h), which settles rounds that swing back and forth
+// (a wheel's friction and normal force feeding each other on rough ground). A solve that does not
+// settle within its budget reports no convergence and the caller hands the island back to
+// dWorldStep (object_islands.h).
 //
 // Units: those of newton_solver.h (m, kg, s, N; rows linear then angular, world axes).
 #pragma once
@@ -32,6 +33,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/sim/bound_secant.h"
 #include "core/sim/newton_solver.h"
 #include "core/sim/profile_cholesky.h"
 
@@ -74,6 +76,7 @@ class DirectSolver {
   void FreeVelocity(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows);
   void BoundedSystem(const std::vector<NewtonRow>& rows);
   void SetBounds(const std::vector<NewtonRow>& rows);
+  void DampBounds(const Eigen::VectorXd& used_lo, const Eigen::VectorXd& used_hi);
   bool BoxSolve(int* budget);
   bool Optimal(const Eigen::VectorXd& gradient, int* released);
   bool SolveFree(Eigen::VectorXd* target);
@@ -94,8 +97,9 @@ class DirectSolver {
   std::vector<std::vector<int>> filled_;  ///< per column of z_, the blocks it fills
   Eigen::MatrixXd g_;
   Eigen::VectorXd r_, lambda_, lo_, hi_;
-  std::vector<signed char> state_;  ///< per bounded row: -1 at lo, 0 free, 1 at hi
-  Eigen::MatrixXd free_block_;      ///< G_FF, then its factor (SolveFreeBlock's storage)
+  std::vector<BoundSecant> secants_;  ///< per bounded row: DampBounds' last round
+  std::vector<signed char> state_;    ///< per bounded row: -1 at lo, 0 free, 1 at hi
+  Eigen::MatrixXd free_block_;        ///< G_FF, then its factor (SolveFreeBlock's storage)
   std::unique_ptr<Reduced> reduced_;
 };
 

@@ -73,8 +73,9 @@ struct NewtonOptions {
                                       ///< √(dᵀ M d / m) per body) ends
   double bound_tolerance = 1e-9;      ///< relative change of a friction force that needs a round
   /// rounds whose friction bounds follow the normal forces at once; later rounds move them
-  /// halfway from the last round's (as direct_solver.h does), which damps the back-and-forth of
-  /// contacts whose normal force and friction feed each other without moving the fixed point
+  /// halfway from the last round's, which damps the back-and-forth of contacts whose normal force
+  /// and friction feed each other without moving the fixed point (direct_solver.h takes the
+  /// secant steps of bound_secant.h instead, which also settle steeper swings)
   int undamped_rounds = 1 << 30;
 };
 
