@@ -108,16 +108,24 @@ MatX MassMatrix(const RobotDesc& robot, const VecX& q, const std::vector<bool>& 
 
 namespace {
 
+// M with a tiny armature on its diagonal (returned in `armature`): joints that move nothing with
+// mass (or are not free) would make M singular; the armature keeps it invertible without changing
+// what the masses say
+MatX InvertibleMassMatrix(const RobotDesc& robot, const VecX& q, const std::vector<bool>& free,
+                          double* armature) {
+  MatX mass = MassMatrix(robot, q, free);
+  *armature = 1e-9 * std::max(1.0, mass.diagonal().cwiseAbs().maxCoeff());
+  mass.diagonal().array() += *armature;
+  return mass;
+}
+
 // 3 / trace(J M⁻¹ Jᵀ) for a 3 x n Jacobian; inf when J moves nothing
 double ThreeOverTrace(const RobotDesc& robot, const VecX& q, const std::vector<bool>& free,
                       const MatX& jacobian) {
   if (jacobian.isZero(0.0)) return kInf;
-  MatX mass = MassMatrix(robot, q, free);
-  // joints that move nothing with mass (or are not free) would make M singular: a tiny
-  // armature keeps it invertible without changing what the masses say
-  const double armature = 1e-9 * std::max(1.0, mass.diagonal().cwiseAbs().maxCoeff());
-  mass.diagonal().array() += armature;
-  const MatX solved = mass.ldlt().solve(jacobian.transpose());
+  double armature = 0.0;
+  const MatX solved =
+      InvertibleMassMatrix(robot, q, free, &armature).ldlt().solve(jacobian.transpose());
   const double trace = (jacobian * solved).trace();
   return trace > 0.0 ? 3.0 / trace : kInf;
 }
@@ -127,11 +135,9 @@ double ThreeOverTrace(const RobotDesc& robot, const VecX& q, const std::vector<b
 VecX JointInertias(const RobotDesc& robot, const VecX& q, const std::vector<bool>& free) {
   const int n = robot.dof();
   VecX inertias = VecX::Constant(n, kInf);
-  MatX mass = MassMatrix(robot, q, free);
-  // (the armature of ThreeOverTrace: joints that move no mass keep M invertible)
-  const double armature = 1e-9 * std::max(1.0, mass.diagonal().cwiseAbs().maxCoeff());
-  mass.diagonal().array() += armature;
-  const MatX inverse = mass.ldlt().solve(MatX::Identity(n, n));
+  double armature = 0.0;
+  const MatX inverse =
+      InvertibleMassMatrix(robot, q, free, &armature).ldlt().solve(MatX::Identity(n, n));
   for (int i = 0; i < n; ++i) {
     const double moved = 1.0 / inverse(i, i) - armature;
     if (free[i] && moved > armature) inertias[i] = moved;
