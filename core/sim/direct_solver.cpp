@@ -305,11 +305,12 @@ bool DirectSolver::Classify(const std::vector<NewtonRow>& rows) {
 }
 
 // a friction row's bounds a fraction of the way from the last round's (`used_lo`, `used_hi`) to
-// the ones its normal force gives now: the secant step of bound_secant.h, from the upper bound
-// (the lower one is −μ/μ of it and moves with it)
+// the ones its normal force gives now: the secant step of bound_secant.h, taken from the upper
+// bound (the lower one is a fixed multiple of it, row.lo/row.hi, and moves with it)
 void DirectSolver::DampBounds(const Eigen::VectorXd& used_lo, const Eigen::VectorXd& used_hi) {
   for (Eigen::Index k = 0; k < hi_.size(); ++k) {
     if (normal_at_[static_cast<size_t>(k)] < 0) continue;  // (a fixed bound; may be infinite)
+    if (!std::isfinite(hi_(k)) || !std::isfinite(used_hi(k))) continue;  // (infinite friction)
     const double w = BoundStep(used_hi(k), hi_(k), &secants_[static_cast<size_t>(k)]);
     lo_(k) = used_lo(k) + w * (lo_(k) - used_lo(k));
     hi_(k) = used_hi(k) + w * (hi_(k) - used_hi(k));
