@@ -134,9 +134,14 @@ void DirectSolver::SetBounds(const std::vector<NewtonRow>& rows) {
   for (size_t k = 0; k < bounded_.size(); ++k) {
     const NewtonRow& row = rows[bounded_[k]];
     // (a friction row's normal row is a contact's: bounded below by 0, so among bounded_)
-    const double scale = row.normal < 0 ? 1.0 : std::abs(lambda_(normal_at_[k]));
-    lo_(k) = row.lo * scale;
-    hi_(k) = row.hi * scale;
+    if (row.normal < 0) {
+      lo_(k) = row.lo;
+      hi_(k) = row.hi;
+      continue;
+    }
+    const double normal = std::abs(lambda_(normal_at_[k]));
+    lo_(k) = FrictionBound(row.lo, normal);
+    hi_(k) = FrictionBound(row.hi, normal);
   }
 }
 
@@ -343,8 +348,9 @@ bool DirectSolver::Rounds(const std::vector<NewtonRow>& rows, const DirectOption
     SetBounds(rows);
     settled = true;
     for (Eigen::Index k = 0; k < n && settled; ++k) {
-      // (only a friction row's bounds move; a stop row's infinite one would make ∞ − ∞ here)
-      if (normal_at_[static_cast<size_t>(k)] < 0) continue;
+      // (only a friction row's finite bounds move; a stop row's or an infinite friction row's
+      // infinite one would make ∞ − ∞ here)
+      if (normal_at_[static_cast<size_t>(k)] < 0 || !std::isfinite(hi_(k))) continue;
       const double change = std::max(std::abs(lo_(k) - used_lo(k)), std::abs(hi_(k) - used_hi(k)));
       settled = change <= options.bound_tolerance * std::max(hi_(k) - lo_(k), 1e-12);
     }

@@ -15,6 +15,10 @@ double RowVelocity(const NewtonRow& row, const VecX& v) {
   return velocity;
 }
 
+double FrictionBound(double coefficient, double normal_force) {
+  return std::isinf(coefficient) ? coefficient : coefficient * normal_force;
+}
+
 Vec6 MassTimes(const NewtonBody& body, const Vec6& v) {
   Vec6 out;
   out.head<3>() = body.mass * v.head<3>();
@@ -326,8 +330,8 @@ void NewtonSolver::SetBounds(const std::vector<NewtonRow>& rows) {
     const int n = rows[i].normal;
     if (n < 0) continue;
     const double normal = std::abs(RowForce(n, x_[n]));
-    lo_[i] = rows[i].lo * normal;
-    hi_[i] = rows[i].hi * normal;
+    lo_[i] = FrictionBound(rows[i].lo, normal);
+    hi_[i] = FrictionBound(rows[i].hi, normal);
   }
 }
 

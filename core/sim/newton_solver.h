@@ -91,6 +91,11 @@ struct NewtonResult {
 double RowVelocity(const NewtonRow& row, const VecX& v);
 /// The body's mass matrix times a velocity (linear, angular): its momentum.
 Vec6 MassTimes(const NewtonBody& body, const Vec6& v);
+/// A friction row's bound: its coefficient (row.lo or row.hi) times its normal row's |λ| (N). An
+/// infinite coefficient (kFriction inf: no sliding) gives an infinite bound, also at no normal
+/// force, where the product would be NaN (and every solve of such an island went back to
+/// dWorldStep).
+double FrictionBound(double coefficient, double normal_force);
 
 /// The solver keeps its matrices between calls (no allocation once they have grown).
 class NewtonSolver {

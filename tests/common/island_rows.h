@@ -4,6 +4,7 @@
 // with their friction rows, a face of four contacts.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include <Eigen/LU>
@@ -107,6 +108,35 @@ core::NewtonResult ExpectAThousandToOneStackHolds(Solver* solver) {
   EXPECT_NEAR(NormalSum(rows, result, 0, -1), 4.0 * lambda(0), 1e-9 * lambda(0));
   EXPECT_NEAR(NormalSum(rows, result, 1, 0), 4.0 * lambda(1), 1e-9 * lambda(1));
   EXPECT_NEAR(result.velocity[1](2), -cfm * (lambda(0) + lambda(1)), 1e-12);
+  return result;
+}
+
+/// A 2 kg box sliding at 1 m/s along x on four contacts whose friction coefficient is infinite
+/// (kFriction inf: no sliding), h = 10 ms: the solve settles and every contact point stops, to
+/// the friction rows' give (cfm 1e-6 (m/s)/N times their force, at most m v / h = 200 N: 2e-4
+/// m/s). The friction tips the box onto its front edge, so the back contacts carry no normal
+/// force, where an infinite coefficient times 0 gave NaN bounds. Returns the result.
+template <typename Solver>
+core::NewtonResult ExpectASlidingBoxStopsOnInfiniteFriction(Solver* solver) {
+  const double h = 0.01, m = 2.0;
+  core::Vec6 start = core::Vec6::Zero();
+  start(0) = 1.0;
+  const std::vector<core::NewtonBody> bodies = {IslandBody(m, start, h)};
+  std::vector<core::NewtonRow> rows;
+  AddFace(&rows, 0, -1, std::numeric_limits<double>::infinity());
+  core::NewtonResult result;
+  EXPECT_TRUE(solver->Solve(bodies, rows, h, {}, &result));
+  if (!result.converged) return result;
+  EXPECT_TRUE(result.velocity[0].allFinite());
+  for (double x : {-0.05, 0.05}) {
+    for (double y : {-0.05, 0.05}) {
+      const core::Vec3 arm(x, y, -0.05);
+      const core::Vec3 point =
+          result.velocity[0].head<3>() + result.velocity[0].tail<3>().cross(arm);
+      EXPECT_LE(point.head<2>().norm(), 2e-4) << x << ", " << y;
+    }
+  }
+  EXPECT_GT(result.velocity[0](4), 0.0);  // turning about +y: tipping forwards, onto x = +5 cm
   return result;
 }
 

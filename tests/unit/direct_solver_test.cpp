@@ -62,6 +62,11 @@ TEST(DirectSolverTest, AThousandToOneStackHolds) {
   EXPECT_TRUE(test::ExpectAThousandToOneStackHolds(&solver).converged);
 }
 
+TEST(DirectSolverTest, ASlidingBoxStopsOnInfiniteFriction) {
+  DirectSolver solver;
+  EXPECT_TRUE(test::ExpectASlidingBoxStopsOnInfiniteFriction(&solver).converged);
+}
+
 // a stop row bounded on one side only (a hinge at its upper stop: lo = −∞, hi = 0) settles in one
 // round; its infinite bound once made the rounds' test ∞ − ∞ and the solve never settled
 TEST(DirectSolverTest, AStopRowWithAnInfiniteBoundSettles) {

@@ -46,6 +46,11 @@ TEST(NewtonSolverTest, AThousandToOneStackHoldsInOneStepFromRest) {
   EXPECT_LE(test::ExpectAThousandToOneStackHolds(&solver).iterations, 2);
 }
 
+TEST(NewtonSolverTest, ASlidingBoxStopsOnInfiniteFriction) {
+  NewtonSolver solver;
+  EXPECT_TRUE(test::ExpectASlidingBoxStopsOnInfiniteFriction(&solver).converged);
+}
+
 // every row obeys ODE's law at the answer, and the velocities are what the forces make them
 TEST(NewtonSolverTest, RandomIslandsObeyTheRowLawRowByRow) {
   std::mt19937 random(7);
