@@ -133,12 +133,12 @@ void DirectSolver::BoundedSystem(const std::vector<NewtonRow>& rows) {
 void DirectSolver::SetBounds(const std::vector<NewtonRow>& rows) {
   for (size_t k = 0; k < bounded_.size(); ++k) {
     const NewtonRow& row = rows[bounded_[k]];
-    // (a friction row's normal row is a contact's: bounded below by 0, so among bounded_)
     if (row.normal < 0) {
       lo_(k) = row.lo;
       hi_(k) = row.hi;
       continue;
     }
+    // (a friction row's normal row is a contact's: bounded below by 0, so among bounded_)
     const double normal = std::abs(lambda_(normal_at_[k]));
     lo_(k) = FrictionBound(row.lo, normal);
     hi_(k) = FrictionBound(row.hi, normal);

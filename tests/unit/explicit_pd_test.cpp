@@ -45,6 +45,7 @@ TEST(ExplicitPdTest, TheGripperPadDivergesAtTenMillisecondsOnly) {
   EXPECT_FALSE(ExplicitPdStable(1e4, 100.0, 0.2, 0.01));  // a = b = 5
   EXPECT_TRUE(ExplicitPdStable(1e4, 100.0, std::numeric_limits<double>::infinity(), 0.01));
   EXPECT_FALSE(ExplicitPdStable(1e4, 0.0, 0.0, 0.01));
+  EXPECT_FALSE(ExplicitPdStable(1e4, 0.0, -std::numeric_limits<double>::infinity(), 0.01));
   EXPECT_TRUE(ExplicitPdStable(0.0, 0.0, 0.0, 0.01));  // no law at all
 }
 
