@@ -515,9 +515,23 @@ class NearPairSearch {
     return true;
   }
 
-  // The given pairs only (sorted: the hits come in their order).
-  void Pairs(const std::vector<std::pair<int, int>>& pairs) const {
-    for (const auto& [ta, tb] : pairs) Test(ta, tb);
+  // The given pairs only (sorted: the hits come in their order). With `directly`, a pair whose
+  // boxes meet is measured without Test's plane tests: they only spare Measure pairs beyond reach,
+  // which it would not report either (Reference measures every pair), so the hits are the same
+  // to the last bit. Returns how many pairs were measured or tested past their boxes.
+  size_t Pairs(const std::vector<std::pair<int, int>>& pairs, bool directly) const {
+    size_t near = 0;
+    for (const auto& [ta, tb] : pairs) {
+      const PlacedTriangle& placed = PlacedOfB(tb);
+      if (Apart(a_.triangle_bounds[ta], placed.bounds, reach_)) continue;
+      ++near;
+      if (directly) {
+        Measure(ta, tb, placed);
+      } else {
+        TestPlanes(ta, tb, placed);
+      }
+    }
+    return near;
   }
 
   // A traversal of both hierarchies, pairs of nodes pruned by the distance between their
@@ -559,7 +573,11 @@ class NearPairSearch {
 
   void Test(int ta, int tb) const {
     const PlacedTriangle& placed = PlacedOfB(tb);
-    if (Apart(a_.triangle_bounds[ta], placed.bounds, reach_)) return;
+    if (!Apart(a_.triangle_bounds[ta], placed.bounds, reach_)) TestPlanes(ta, tb, placed);
+  }
+
+  // Test past the boxes: the planes and edge planes, then the distance or the candidate list.
+  void TestPlanes(int ta, int tb, const PlacedTriangle& placed) const {
     const std::array<Vec3, 3>& corners = a_.triangle_corners[ta];
     if (Beyond(a_.triangle_planes[ta], placed.corners, reach_) ||
         Beyond(placed.plane, corners, reach_) || BeyondAnEdge(placed.edges, corners, reach_) ||
@@ -730,7 +748,11 @@ void NearTrianglePairs(const MeshBvh& a, const MeshBvh& b, const Pose& X_ab, dou
   } else {
     CollectCandidates(a, b, X_ab, tolerance, cache);
   }
-  NearPairSearch(a, b, X_ab, tolerance, hits).Pairs(cache->candidates);
+  const size_t first = hits->size();
+  const size_t near =
+      NearPairSearch(a, b, X_ab, tolerance, hits).Pairs(cache->candidates, cache->measure_directly);
+  cache->measure_directly =
+      static_cast<double>(hits->size() - first) >= kDirectMeasureHits * static_cast<double>(near);
 }
 
 void TrianglesNearBox(const MeshBvh& bvh, const Pose& X_mesh_box, const Vec3& half_extents,

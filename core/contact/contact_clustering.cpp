@@ -438,7 +438,15 @@ class SurvivorGrid {
   };
 
   Cell CellOf(const Vec3& position) const {
-    return (position * inverse_edge_).array().floor().cast<std::int64_t>();
+    const Vec3 scaled = position * inverse_edge_;
+    return Cell(FloorIndex(scaled.x()), FloorIndex(scaled.y()), FloorIndex(scaled.z()));
+  }
+
+  // floor(x) for |x| < 2^52 (GridFits), by truncation: std::floor without SSE4.1 is a longer
+  // sequence, and a cell is found three times for each contact
+  static std::int64_t FloorIndex(double x) {
+    const auto truncated = static_cast<std::int64_t>(x);
+    return truncated - (x < static_cast<double>(truncated) ? 1 : 0);
   }
 
   void Enter(int survivor, const Cell& cell) {

@@ -461,9 +461,12 @@ TEST(NearTrianglePairsTest, FarMeshesGiveNoPairs) {
 
 // b walks from `start` by random steps of up to `step` (m, and rad about each axis), with a jump
 // of up to 20 steps now and then: at every pose the search from the kept candidates reports
-// bitwise what a fresh search reports, the candidates are reused and collected again.
+// bitwise what a fresh search reports, whether the cache measures its candidates directly or
+// after the plane tests, and the candidates are reused and collected again. `direct` counts the
+// queries after which the cache chose to measure directly (most pairs near enough were hits).
 struct WalkCounts {
   int with_hits = 0;
+  int direct = 0;
   long long collections = 0, reuses = 0;
 };
 WalkCounts CompareWithKeptCandidates(const CollisionGeometry& a, const CollisionGeometry& b,
@@ -480,12 +483,18 @@ WalkCounts CompareWithKeptCandidates(const CollisionGeometry& a, const Collision
         core::RotationFromRollPitchYaw(size * u(random), size * u(random), size * u(random));
     move.translation() = size * Vec3(u(random), u(random), u(random));
     X_ab = X_ab * move;
-    std::vector<TrianglePairHit> kept;
-    core::mesh_detail::NearTrianglePairs(a.bvh(), b.bvh(), X_ab, tolerance, &kept,
-                                         PairSearch::kAuto, &cache);
-    ExpectSameHits(NearPairs(a, b, X_ab, tolerance, PairSearch::kAuto), kept,
-                   "pose " + std::to_string(i));
-    counts.with_hits += !kept.empty();
+    const std::vector<TrianglePairHit> fresh = NearPairs(a, b, X_ab, tolerance, PairSearch::kAuto);
+    const bool chosen = cache.measure_directly;
+    for (const bool directly : {chosen, !chosen}) {
+      cache.measure_directly = directly;
+      std::vector<TrianglePairHit> kept;
+      core::mesh_detail::NearTrianglePairs(a.bvh(), b.bvh(), X_ab, tolerance, &kept,
+                                           PairSearch::kAuto, &cache);
+      ExpectSameHits(fresh, kept,
+                     "pose " + std::to_string(i) + (directly ? " measured directly" : " planes"));
+      if (directly == chosen) counts.direct += cache.measure_directly;
+    }
+    counts.with_hits += !fresh.empty();
   }
   counts.collections = cache.collections;
   counts.reuses = cache.reuses;
@@ -504,6 +513,10 @@ TEST(NearTrianglePairsTest, KeptCandidatesGiveTheSamePairsAsAFreshSearch) {
   EXPECT_GT(ball_on_slab.with_hits, 100);
   EXPECT_GT(ball_on_slab.reuses, 75);
   EXPECT_GT(ball_on_slab.collections, 3);
+  // the ball's pairs near enough are hits about half the time: the cache changes its way both
+  // ways (78 of the 150 queries chose to measure directly)
+  EXPECT_GT(ball_on_slab.direct, 25);
+  EXPECT_LT(ball_on_slab.direct, 125);
   // a cube over a 2048-triangle bumpy grid (both hierarchies), walking by up to 0.2 mm a step
   const auto cube = MeshGeometry(LoadMesh("klampt/objects/cube.off"), Vec3::Constant(0.1));
   const auto grid = MeshGeometry(BumpyGrid(32));
@@ -513,6 +526,7 @@ TEST(NearTrianglePairsTest, KeptCandidatesGiveTheSamePairsAsAFreshSearch) {
   EXPECT_GT(on_grid.with_hits, 100);
   EXPECT_GT(on_grid.reuses, 75);
   EXPECT_GT(on_grid.collections, 3);
+  EXPECT_GT(on_grid.direct, 75);  // (128 of 150)
 }
 
 TEST(NearTrianglePairsTest, KeptCandidatesFollowAChangeOfMeshOrTolerance) {
