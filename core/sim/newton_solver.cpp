@@ -335,11 +335,13 @@ void NewtonSolver::SetBounds(const std::vector<NewtonRow>& rows) {
   }
 }
 
-// x = c − J v for every row
+// x = c − J v_ for every row, unless x_ already holds it (v_ unchanged since, x_ untouched): a
+// new round of friction bounds and the step's end ask again for the x of the same v_
 template <class Space>
-void NewtonSolver::RowOffsets(const Space& space, const std::vector<NewtonRow>& rows,
-                              const VecX& v) {
-  for (size_t i = 0; i < rows.size(); ++i) x_[i] = rows[i].rhs - space.RowVelocity(i, v);
+void NewtonSolver::RowOffsets(const Space& space, const std::vector<NewtonRow>& rows) {
+  if (offsets_current_) return;
+  for (size_t i = 0; i < rows.size(); ++i) x_[i] = rows[i].rhs - space.RowVelocity(i, v_);
+  offsets_current_ = true;
 }
 
 // the gradient M (v − v_free) − h Σ J_iᵀ λ_i, with x_ already that of v
@@ -416,6 +418,7 @@ bool NewtonSolver::FullStepDescends(const Space& space, double slope) {
 // inside their bounds stop changing)
 template <class Space>
 double NewtonSolver::LineSearch(const Space& space, size_t rows) {
+  offsets_current_ = false;  // FullStepDescends moves x_ and back, which may round it
   for (size_t i = 0; i < rows; ++i) q_[i] = space.RowVelocity(i, direction_);
   const double start = Slope(0.0, nullptr);
   if (start >= 0.0) return 0.0;
@@ -440,7 +443,7 @@ template <class Space>
 bool NewtonSolver::NewtonSteps(Space& space, const std::vector<NewtonRow>& rows,
                                const NewtonOptions& options, int* budget) {
   while (*budget > 0) {
-    RowOffsets(space, rows, v_);
+    RowOffsets(space, rows);
     Gradient(space, rows.size(), v_);
     if (!Factor(space, rows.size())) return false;
     direction_ = -gradient_;
@@ -453,6 +456,7 @@ bool NewtonSolver::NewtonSteps(Space& space, const std::vector<NewtonRow>& rows,
     --*budget;
     if (alpha == 0.0) return true;  // no descent left: the minimum within rounding
     v_ += alpha * direction_;
+    offsets_current_ = false;
     // with every row where it was, f is one quadratic between here and the full step, and the
     // next Newton step would be (1 − α) d
     bool same = true;
@@ -468,7 +472,7 @@ bool NewtonSolver::NewtonSteps(Space& space, const std::vector<NewtonRow>& rows,
 template <class Space>
 bool NewtonSolver::BoundsSettled(const Space& space, const std::vector<NewtonRow>& rows,
                                  double tolerance, bool damped) {
-  RowOffsets(space, rows, v_);
+  RowOffsets(space, rows);
   for (size_t i = 0; i < rows.size(); ++i) q_[i] = RowForce(i, x_[i]);  // (q_ as scratch)
   if (damped) {
     used_lo_ = lo_;
@@ -515,11 +519,12 @@ bool NewtonSolver::SolveIn(Space* space, size_t bodies, const std::vector<Newton
   regime_.assign(m, 0);
   for (size_t i = 0; i < m; ++i) cfm_[i] = rows[i].cfm;
   factored_ = false;
+  offsets_current_ = false;
   // the first round's friction bounds from the normal forces at the free velocity (with gravity
   // on every contact it loads), the start where the step began
   for (size_t i = 0; i < m; ++i) x_[i] = rows[i].rhs - space->FreeRowVelocity(i);
   SetBounds(rows);
-  RowOffsets(*space, rows, v_);
+  RowOffsets(*space, rows);
   int budget = options.max_iterations;
   result->converged = false;
   result->rounds = 0;
@@ -536,9 +541,8 @@ bool NewtonSolver::SolveIn(Space* space, size_t bodies, const std::vector<Newton
   result->velocity.resize(bodies);
   for (size_t k = 0; k < bodies; ++k) result->velocity[k] = space->BodyVelocity(k, v_);
   result->force.resize(m);
-  for (size_t i = 0; i < m; ++i) {
-    result->force[i] = RowForce(i, rows[i].rhs - space->RowVelocity(i, v_));
-  }
+  RowOffsets(*space, rows);
+  for (size_t i = 0; i < m; ++i) result->force[i] = RowForce(i, x_[i]);
   return result->converged;
 }
 

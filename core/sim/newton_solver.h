@@ -130,7 +130,7 @@ class NewtonSolver {
   signed char Regime(size_t i, double x) const;
   void SetBounds(const std::vector<NewtonRow>& rows);
   template <class Space>
-  void RowOffsets(const Space& space, const std::vector<NewtonRow>& rows, const VecX& v);
+  void RowOffsets(const Space& space, const std::vector<NewtonRow>& rows);
   template <class Space>
   void Gradient(const Space& space, size_t rows, const VecX& v);
   template <class Space>
@@ -159,6 +159,7 @@ class NewtonSolver {
   std::vector<signed char> regime_;            ///< per row: the part of its law in the Hessian
   double d_m_d_ = 0.0, d_m_offset_ = 0.0;
   bool factored_ = false;             ///< the factorization in hand is that of regime_
+  bool offsets_current_ = false;      ///< x_ is c − J v_ as RowOffsets computes it
   std::unique_ptr<Reduced> reduced_;  ///< the reduced space's
 };
 
