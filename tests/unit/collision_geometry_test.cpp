@@ -484,20 +484,24 @@ WalkCounts CompareWithKeptCandidates(const CollisionGeometry& a, const Collision
     move.translation() = size * Vec3(u(random), u(random), u(random));
     X_ab = X_ab * move;
     const std::vector<TrianglePairHit> fresh = NearPairs(a, b, X_ab, tolerance, PairSearch::kAuto);
+    // the walk's own query (the cache's choice), then the other way at the same pose: a reuse
+    // that the counts leave out, so that they say what the walk alone reused and collected
     const bool chosen = cache.measure_directly;
     for (const bool directly : {chosen, !chosen}) {
+      const long long collections = cache.collections, reuses = cache.reuses;
       cache.measure_directly = directly;
       std::vector<TrianglePairHit> kept;
       core::mesh_detail::NearTrianglePairs(a.bvh(), b.bvh(), X_ab, tolerance, &kept,
                                            PairSearch::kAuto, &cache);
       ExpectSameHits(fresh, kept,
                      "pose " + std::to_string(i) + (directly ? " measured directly" : " planes"));
-      if (directly == chosen) counts.direct += cache.measure_directly;
+      if (directly != chosen) continue;
+      counts.direct += cache.measure_directly;
+      counts.collections += cache.collections - collections;
+      counts.reuses += cache.reuses - reuses;
     }
     counts.with_hits += !fresh.empty();
   }
-  counts.collections = cache.collections;
-  counts.reuses = cache.reuses;
   return counts;
 }
 
