@@ -42,10 +42,13 @@ namespace lamina::core {
 class ObjectIslands {
  public:
   struct Statistics {
-    long long islands = 0;            ///< islands taken (by either solver)
-    long long fallbacks = 0;          ///< islands handed back to ODE's solver (no convergence)
-    long long newton_islands = 0;     ///< islands the Newton solver was given first
-    long long newton_fallbacks = 0;   ///< of those, handed back to ODE's solver
+    long long islands = 0;           ///< islands taken (by either solver)
+    long long fallbacks = 0;         ///< islands handed back to ODE's solver (no convergence)
+    long long newton_islands = 0;    ///< islands the Newton solver was given first
+    long long newton_fallbacks = 0;  ///< of those, handed back to ODE's solver
+    /// of those, not converged but too large to hand back (kMostHandBackRows): relaxed instead
+    /// (kRelaxSweeps)
+    long long unconverged = 0;
     long long iterations = 0;         ///< Newton steps in all
     long long direct_islands = 0;     ///< islands the direct solve was given
     long long direct_fallbacks = 0;   ///< of those, not settled (then ODE's)
@@ -71,6 +74,18 @@ class ObjectIslands {
   static constexpr int kUndampedReducedRounds = 10;
   /// Newton steps a reduced step takes before the direct solve (SolveReduced).
   static constexpr int kReducedNewtonSteps = 4;
+  /// Rows above which an island of free objects that the Newton solver has not settled is not
+  /// handed to dWorldStep: ODE's pivoting LCP is dense, its time grows as the cube of the rows
+  /// and its memory as their square (measured on pyramids of boxes, one dWorldStep a step: 430
+  /// rows 21 ms, 1190 rows 0.33 s, 2330 rows 3.1 s; the 30,000 rows of a 1,275-box pyramid
+  /// asked for 7 GB). Such an island gets more Newton steps first (NewtonBudget); when they do
+  /// not settle it either, kRelaxSweeps Gauss–Seidel sweeps solve it from no force
+  /// (row_relaxation.h: forces inside their bounds, the velocities they make), it is counted in
+  /// Statistics::unconverged, and its step is flagged (Simulator: "contact unreliable").
+  static constexpr size_t kMostHandBackRows = 1000;
+  /// QuickStep's default is 20; the 210-box pyramid given one Newton step a time step and 50
+  /// sweeps stands (tests/scenes/newton_islands_test.cpp).
+  static constexpr int kRelaxSweeps = 50;
 
   ObjectIslands();
   ~ObjectIslands();
@@ -98,6 +113,9 @@ class ObjectIslands {
   /// OdeRobot::ProjectOntoJoints). An island whose joints do not form a tree, or whose reduced
   /// step does not settle, is solved over every body as without.
   void SetReducedRobots(bool reduced) { reduced_ = reduced; }
+  /// Newton steps every island of free objects gets at most (0: NewtonBudget's own choice): for
+  /// tests and comparisons.
+  void SetNewtonBudget(int steps) { newton_budget_ = steps; }
   /// After Solve: whether `joint` (a kept robot joint) was in an island given the reduced step.
   bool SolvedReduced(const dxJoint* joint) const;
   /// A hinge or slider of an island given the reduced step, and which of its bodies is the child
@@ -125,7 +143,8 @@ class ObjectIslands {
   void KeepJoint(dxJoint* joint, int a, int b, const JointFrame& frame);
   /// Solves every island of the kept contacts and joints, adds the forces to the bodies and
   /// disables the kept joints of the solved islands; an island that does not converge gets its
-  /// contact joints in `group` (and keeps its joints).
+  /// contact joints in `group` (and keeps its joints), unless it has more than
+  /// kMostHandBackRows rows (then Gauss–Seidel sweeps solve it: row_relaxation.h).
   void Solve(dxWorld* world, dxJointGroup* group, double step);
   /// After ODE's step (or a failure before it): the joints Solve disabled are enabled again.
   void Restore();
@@ -140,6 +159,7 @@ class ObjectIslands {
   void SolveIsland(dxWorld* world, dxJointGroup* group, double step);
   bool SolveDirectly(double step);
   bool SolveNewton(int max_iterations, double step);
+  int NewtonBudget() const;
   bool SolveLargeRobot(double step);
   /// The count of steps to go straight to the direct solve, and of failed Newton steps in a
   /// row, of a large robot (keyed by its first kept joint).
@@ -170,6 +190,7 @@ class ObjectIslands {
   int newton_contacts_ = 0;                     ///< Begin
   bool robot_newton_ = true;                    ///< SetRobotNewtonStep
   bool reduced_ = false;                        ///< SetReducedRobots
+  int newton_budget_ = 0;                       ///< SetNewtonBudget
   std::vector<const dxJoint*> reduced_joints_;  ///< SolvedReduced
   std::vector<TreeJoint> reduced_tree_;         ///< reduced_tree
   std::vector<RobotBackoff> backoff_;

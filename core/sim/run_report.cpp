@@ -91,6 +91,7 @@ std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
       {"newton",
        {{"islands", stats.newton_islands},
         {"fallbacks", stats.newton_fallbacks},
+        {"unconverged", stats.newton_unconverged},
         {"iterations", stats.newton_iterations}}},
       {"direct", {{"islands", stats.direct_islands}, {"fallbacks", stats.direct_fallbacks}}},
       {"reduced", {{"islands", stats.reduced_islands}, {"fallbacks", stats.reduced_fallbacks}}},

@@ -395,7 +395,7 @@ Simulator::SubStep Simulator::TrySubStep(double* h, StepProgress* progress, bool
     progress->flags |= kStepRetaken;
     return SubStep::kRetake;
   }
-  if (unreliable) progress->flags |= kStepUnreliable;
+  if (unreliable || islands_unconverged_) progress->flags |= kStepUnreliable;
   const int corrected = guard_.CorrectInstabilities(
       &bodies_, contacts_.before(),
       [this](const ContactPair& pair) { return PairSurface(pair.a, pair.b).stiffness; },
@@ -502,6 +502,7 @@ void Simulator::ProjectReducedWorldJoints() {
 // everything ODE solves in the step: kinematic motion, contact rows (with the friction anchors),
 // forces, the mouse spring, the robots' motors, stops and friction
 void Simulator::BuildConstraints(double step) {
+  islands_unconverged_ = false;
   MoveKinematicTargets(step);
   size_t recorded = 0;
   if (!feedback_.empty()) {
@@ -550,6 +551,8 @@ void Simulator::BuildConstraints(double step) {
     statistics_.direct_fallbacks += after.direct_fallbacks - before.direct_fallbacks;
     statistics_.newton_islands += after.newton_islands - before.newton_islands;
     statistics_.newton_fallbacks += after.newton_fallbacks - before.newton_fallbacks;
+    statistics_.newton_unconverged += after.unconverged - before.unconverged;
+    islands_unconverged_ = after.unconverged > before.unconverged;
     statistics_.newton_iterations += after.iterations - before.iterations;
     statistics_.reduced_islands += after.reduced_islands - before.reduced_islands;
     statistics_.reduced_fallbacks += after.reduced_fallbacks - before.reduced_fallbacks;

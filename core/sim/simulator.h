@@ -329,6 +329,11 @@ class Simulator {
   /// dWorldStep's solver time, stiffness_test.xml's balls on a mesh (up to 20) a quarter; a block
   /// sliding on 4 contacts twice as long (docs/simulator.md).
   static constexpr int kNewtonObjectContacts = 8;
+  /// The most Newton steps an island of free objects gets (0: the solver's own choice,
+  /// ObjectIslands::NewtonBudget). For tests: an island that does not converge goes to
+  /// dWorldStep, or, beyond ObjectIslands::kMostHandBackRows rows, is relaxed by
+  /// Gauss–Seidel sweeps (row_relaxation.h) and flags its step "contact unreliable".
+  void SetNewtonBudget(int steps) { islands_.SetNewtonBudget(steps); }
   /// Hierarchy searches of mesh–mesh pairs, and queries answered from kept candidates.
   long long ContactPairSearches() const { return contacts_.PairCollections(); }
   long long ContactPairReuses() const { return contacts_.PairReuses(); }
@@ -556,8 +561,10 @@ class Simulator {
   FeedbackRecorder feedback_;
   ObjectIslands islands_;  ///< this step's islands for Lamina's own solvers (object_islands.h)
   bool islands_active_ = false;  ///< islands_ takes part in this step
-  bool direct_robots_ = true;    ///< SetDirectRobotSolve
-  bool newton_objects_ = true;   ///< SetNewtonObjectIslands
+  /// an island too large to hand back kept an unconverged answer in this sub-step
+  bool islands_unconverged_ = false;
+  bool direct_robots_ = true;   ///< SetDirectRobotSolve
+  bool newton_objects_ = true;  ///< SetNewtonObjectIslands
   int direct_min_bodies_ = kDirectRobotBodies;
   SleepTracker sleep_;
   DragState drag_;

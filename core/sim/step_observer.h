@@ -23,8 +23,10 @@ class FeedbackRecorder;
 /// same statuses but "joint open" (its numbers: KlamptStatusCode).
 enum class StepStatus {
   kNormal = 0,
-  kAdaptiveStep = 1,       ///< a step was rolled back and retaken with a smaller step
-  kContactUnreliable = 2,  ///< underlying geometries interpenetrated (beyond the padding)
+  kAdaptiveStep = 1,  ///< a step was rolled back and retaken with a smaller step
+  /// underlying geometries interpenetrated (beyond the padding), or an island of contacts too
+  /// large for dWorldStep was not solved to the Newton solver's tolerance (object_islands.h)
+  kContactUnreliable = 2,
   /// a robot's or the world's joint is open beyond JointBreakGap (robot_guard.h): the solver did
   /// not hold it at this step (e.g. QuickStep's iterations on a long taut chain, or a slider
   /// pushed slowly past its stops; one that opens that far within a step is "unstable")
@@ -44,7 +46,7 @@ StepStatus StatusOfKlamptCode(int code);
 /// What happened in one accepted step (bits; several at once).
 enum StepFlag : unsigned {
   kStepRetaken = 1u << 0,       ///< it was rolled back and retaken smaller before
-  kStepUnreliable = 1u << 1,    ///< some pair's geometries interpenetrate after it
+  kStepUnreliable = 1u << 1,    ///< geometries interpenetrate after it, or an island unsolved
   kStepCorrected = 1u << 2,     ///< the instability check slowed bodies down
   kStepRecovered = 1u << 3,     ///< a non-finite state was undone with the culprits stopped
   kStepOverflowStop = 1u << 4,  ///< bodies with overflowing energy were stopped before it
@@ -56,16 +58,22 @@ struct SimStatistics {
   long steps = 0;                    ///< physics sub-steps taken (accepted)
   long rollbacks = 0;                ///< sub-steps undone and retaken at half the step
   long instability_corrections = 0;  ///< bodies whose energy blow-up was corrected
-  long unreliable_steps = 0;         ///< accepted steps after which geometries interpenetrated
-  int max_contacts_in_step = 0;      ///< most contact joints in one sub-step
-  long contact_joints = 0;           ///< contact joints over all accepted sub-steps
-  double max_penetration = 0.0;      ///< deepest boundary-layer overlap in an accepted state, m
+  /// accepted steps after which geometries interpenetrated, or in which an island too large for
+  /// dWorldStep kept an unconverged answer (newton_unconverged)
+  long unreliable_steps = 0;
+  int max_contacts_in_step = 0;  ///< most contact joints in one sub-step
+  long contact_joints = 0;       ///< contact joints over all accepted sub-steps
+  double max_penetration = 0.0;  ///< deepest boundary-layer overlap in an accepted state, m
   /// the widest joint gap (robot_guard.h, joint_projection.h) in an accepted state, m
   double max_joint_gap = 0.0;
   long joint_open_steps = 0;  ///< accepted steps after which a joint was open (kStepJointOpen)
   /// solver "newton" (object_islands.h), over every sub-step tried (retaken ones too)
-  long newton_islands = 0;     ///< object islands the Newton solver took
-  long newton_fallbacks = 0;   ///< of those, handed back to ODE's solver (no convergence)
+  long newton_islands = 0;    ///< object islands the Newton solver took
+  long newton_fallbacks = 0;  ///< of those, handed back to ODE's solver (no convergence)
+  /// of those, not converged and too large to hand back (ObjectIslands::kMostHandBackRows): the
+  /// island was relaxed by Gauss–Seidel sweeps (row_relaxation.h) and its step is "contact
+  /// unreliable"
+  long newton_unconverged = 0;
   long newton_iterations = 0;  ///< Newton steps in all
   /// robot islands solved directly (direct_solver.h): the exact solver's robots, and under the
   /// Newton solver the islands with a robot of at least Simulator::kDirectRobotBodies bodies
