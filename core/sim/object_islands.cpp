@@ -344,10 +344,11 @@ bool ObjectIslands::SolveNewton(int max_iterations, double step) {
   return converged;
 }
 
-// The Newton steps an island of free objects gets: the solver's own budget (0), and for an island
-// too large to hand back (kMostHandBackRows) one more for every four bodies, since the other
-// answer is an unconverged one. A pile's transient needs them: a pyramid of 1,275 boxes (base 50,
-// 30,000 rows) took 8, 114, 50 and 6 Newton steps in its first four steps, then one a step.
+// The Newton steps an island gets (not a large robot's: SolveLargeRobot): the solver's own budget
+// (0), and for an island too large to hand back (kMostHandBackRows) one more for every four bodies,
+// since the other answer is an unconverged one. A pile's transient needs them: a pyramid of 1,275
+// boxes (base 50, 30,000 rows) took 8, 114, 50 and 6 Newton steps in its first four steps, then one
+// a step.
 int ObjectIslands::NewtonBudget() const {
   if (newton_budget_ > 0) return newton_budget_;
   const Island& island = *island_;

@@ -77,7 +77,7 @@ class ObjectIslands {
   /// Rows above which an island of free objects that the Newton solver has not settled is not
   /// handed to dWorldStep: ODE's pivoting LCP is dense, its time grows as the cube of the rows
   /// and its memory as their square (measured on pyramids of boxes, one dWorldStep a step: 430
-  /// rows 21 ms, 1190 rows 0.33 s, 2330 rows 3.1 s; the 30,000 rows of a 1,275-box pyramid
+  /// rows 12 ms, 1190 rows 0.33 s, 2330 rows 3.1 s; the 30,000 rows of a 1,275-box pyramid
   /// asked for 7 GB). Such an island gets more Newton steps first (NewtonBudget); when they do
   /// not settle it either, kRelaxSweeps Gauss–Seidel sweeps solve it from no force
   /// (row_relaxation.h: forces inside their bounds, the velocities they make), it is counted in
@@ -113,8 +113,8 @@ class ObjectIslands {
   /// OdeRobot::ProjectOntoJoints). An island whose joints do not form a tree, or whose reduced
   /// step does not settle, is solved over every body as without.
   void SetReducedRobots(bool reduced) { reduced_ = reduced; }
-  /// Newton steps every island of free objects gets at most (0: NewtonBudget's own choice): for
-  /// tests and comparisons.
+  /// Newton steps every island but a large robot's gets at most (0: NewtonBudget's own choice):
+  /// for tests and comparisons.
   void SetNewtonBudget(int steps) { newton_budget_ = steps; }
   /// After Solve: whether `joint` (a kept robot joint) was in an island given the reduced step.
   bool SolvedReduced(const dxJoint* joint) const;

@@ -329,7 +329,7 @@ class Simulator {
   /// dWorldStep's solver time, stiffness_test.xml's balls on a mesh (up to 20) a quarter; a block
   /// sliding on 4 contacts twice as long (docs/simulator.md).
   static constexpr int kNewtonObjectContacts = 8;
-  /// The most Newton steps an island of free objects gets (0: the solver's own choice,
+  /// The most Newton steps an island (but a large robot's) gets (0: the solver's own choice,
   /// ObjectIslands::NewtonBudget). For tests: an island that does not converge goes to
   /// dWorldStep, or, beyond ObjectIslands::kMostHandBackRows rows, is relaxed by
   /// Gauss–Seidel sweeps (row_relaxation.h) and flags its step "contact unreliable".
