@@ -204,11 +204,8 @@ void ObjectIslands::SolveIsland(dWorldID world, dJointGroupID group, double step
   const bool converged =
       built && (large_robot ? SolveLargeRobot(step) : SolveNewton(NewtonBudget(), step));
   if (!converged && built && !large_robot && island.rows.size() > kMostHandBackRows) {
-    // too many rows for dWorldStep: Gauss–Seidel sweeps (row_relaxation.h), from no force (the
-    // forces of an early iterate, clamp(x/cfm) on rows of cfm 1e-9, can be far off: from those,
-    // a 210-box pyramid given one Newton step a time step flew apart)
+    // too many rows for dWorldStep: Gauss–Seidel sweeps (row_relaxation.h)
     ++statistics_.unconverged;
-    island.result.force.clear();
     RelaxRows(island.bodies, island.rows, step, kRelaxSweeps, &island.result);
     Finish(step, false);
     return;

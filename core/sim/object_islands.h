@@ -74,8 +74,8 @@ class ObjectIslands {
   static constexpr int kUndampedReducedRounds = 10;
   /// Newton steps a reduced step takes before the direct solve (SolveReduced).
   static constexpr int kReducedNewtonSteps = 4;
-  /// Rows above which an island of free objects that the Newton solver has not settled is not
-  /// handed to dWorldStep: ODE's pivoting LCP is dense, its time grows as the cube of the rows
+  /// Rows above which an island (but a large robot's) that the Newton solver has not settled is
+  /// not handed to dWorldStep: ODE's pivoting LCP is dense, its time grows as the cube of the rows
   /// and its memory as their square (measured on pyramids of boxes, one dWorldStep a step: 430
   /// rows 12 ms, 1190 rows 0.33 s, 2330 rows 3.1 s; the 30,000 rows of a 1,275-box pyramid
   /// asked for 7 GB). Such an island gets more Newton steps first (NewtonBudget); when they do

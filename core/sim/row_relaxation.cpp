@@ -61,15 +61,9 @@ void RelaxRows(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRo
     v.segment<6>(6 * static_cast<Eigen::Index>(k)) = bodies[k].free_velocity;
   }
   std::vector<double>& force = result->force;
-  force.resize(rows.size(), 0.0);
+  force.assign(rows.size(), 0.0);
   std::vector<double> stiffness(rows.size());
-  for (size_t i = 0; i < rows.size(); ++i) {
-    double lo = 0.0, hi = 0.0;
-    RowBounds(rows, force, i, &lo, &hi);
-    force[i] = std::isfinite(force[i]) ? std::clamp(force[i], lo, hi) : 0.0;
-    AddRowImpulse(rows[i], inverse, step * force[i], &v);
-    stiffness[i] = RowStiffness(rows[i], inverse, step);
-  }
+  for (size_t i = 0; i < rows.size(); ++i) stiffness[i] = RowStiffness(rows[i], inverse, step);
   for (int sweep = 0; sweep < sweeps; ++sweep) {
     for (size_t i = 0; i < rows.size(); ++i) {
       if (!(stiffness[i] > 0.0)) continue;

@@ -27,11 +27,12 @@
 namespace lamina::core {
 
 /// Sweeps `sweeps` times over `rows` (newton_solver.h's NewtonRow: bounds, friction rows after
-/// their normal's index or before it) from the forces in result->force (one per row, N; empty: 0),
-/// each first put inside its bounds. Writes result->force and result->velocity (v_free + h M⁻¹ Jᵀ
-/// λ per body); result->converged is false and result->iterations the sweeps taken (the caller's
-/// answer is approximate). A row whose Jacobian is zero on both bodies and whose cfm is 0 is left
-/// at its clamped start.
+/// their normal's index or before it) from no force: not from an unconverged Newton iterate's,
+/// clamp(x/cfm) on rows of cfm 1e-9, which can be far off (from those, a 210-box pyramid given
+/// one Newton step a time step flew apart). Writes result->force (N per row) and
+/// result->velocity (v_free + h M⁻¹ Jᵀ λ per body); result->converged is false and
+/// result->iterations the sweeps taken (the answer is approximate). A row whose Jacobian is zero
+/// on both bodies and whose cfm is 0 keeps no force.
 void RelaxRows(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
                double step, int sweeps, NewtonResult* result);
 
