@@ -39,8 +39,18 @@ double MassProduct(const std::vector<NewtonBody>& bodies, const VecX& u, const V
 
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 
+// m += wj jᵀ in the lower triangle, columns C to 5 (unrolled: fixed-size segments vectorize)
+template <int C>
+void AddLowerColumns(Mat6* m, const Vec6& wj, const Vec6& j) {
+  m->col(C).tail<6 - C>() += wj.tail<6 - C>() * j(C);
+  if constexpr (C < 5) AddLowerColumns<C + 1>(m, wj, j);
+}
+
 // the Hessian terms of consecutive rows between the same two bodies, summed in fixed-size
-// blocks and added to the matrix once (a pair's contacts come together: 12 rows for 4 contacts)
+// blocks and added to the matrix once (a pair's contacts come together: 12 rows for 4 contacts).
+// The diagonal blocks aa and bb only in their lower triangle: ProfileCholesky::Factor reads no
+// more of a diagonal block (the factor is the same to the last bit; on a 10-box stack Add takes
+// 11 % fewer instructions, the step 1.2 %)
 struct PairBlocks {
   int a = -1, b = -1;
   Mat6 aa = Mat6::Zero(), bb = Mat6::Zero(), ba = Mat6::Zero();  ///< ba: row b, column a
@@ -48,14 +58,14 @@ struct PairBlocks {
 
   void Add(const NewtonRow& row, double w) {
     const Vec6 wa = w * row.ja, wb = w * row.jb;
-    for (int c = 0; c < 6; ++c) {  // (column by column: Eigen's outer product is slower here)
-      if (row.a >= 0) aa.col(c) += wa * row.ja(c);
-      if (row.b >= 0) bb.col(c) += wb * row.jb(c);
-      if (row.a >= 0 && row.b >= 0) ba.col(c) += wb * row.ja(c);
+    if (row.a >= 0) AddLowerColumns<0>(&aa, wa, row.ja);
+    if (row.b >= 0) AddLowerColumns<0>(&bb, wb, row.jb);
+    if (row.a >= 0 && row.b >= 0) {
+      for (int c = 0; c < 6; ++c) ba.col(c) += wb * row.ja(c);  // (Eigen's outer product is slower)
     }
     any = true;
   }
-  // into the lower triangle of h
+  // into the lower triangle of h (aa's and bb's upper triangles are zero)
   void Flush(ProfileCholesky* h) {
     if (!any) return;
     if (a >= 0) h->block(a, a) += aa;
