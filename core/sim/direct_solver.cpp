@@ -27,11 +27,12 @@ void AddOuter(const Vec6& u, const Vec6& v, ProfileCholesky::Block* block) {
   for (int c = 0; c < 6; ++c) block->col(c) += u * v(c);
 }
 
-// w J_iᵀ J_i into the lower triangle of the blocks of bodies a and b
+// w J_iᵀ J_i into the lower triangle of the blocks of bodies a and b (of a diagonal block only
+// its lower triangle: the factor is the same to the last bit)
 void AddRow(const NewtonRow& row, double w, ProfileCholesky* k) {
   const Vec6 wa = w * row.ja, wb = w * row.jb;
-  if (row.a >= 0) AddOuter(wa, row.ja, &k->block(row.a, row.a));
-  if (row.b >= 0) AddOuter(wb, row.jb, &k->block(row.b, row.b));
+  if (row.a >= 0) ProfileCholesky::AddLowerOuter(wa, row.ja, &k->block(row.a, row.a));
+  if (row.b >= 0) ProfileCholesky::AddLowerOuter(wb, row.jb, &k->block(row.b, row.b));
   if (row.a >= 0 && row.b >= 0) {
     if (row.b > row.a) {
       AddOuter(wb, row.ja, &k->block(row.b, row.a));

@@ -39,13 +39,6 @@ double MassProduct(const std::vector<NewtonBody>& bodies, const VecX& u, const V
 
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 
-// m += wj jᵀ in the lower triangle, columns C to 5 (unrolled: fixed-size segments vectorize)
-template <int C>
-void AddLowerColumns(Mat6* m, const Vec6& wj, const Vec6& j) {
-  m->col(C).tail<6 - C>() += wj.tail<6 - C>() * j(C);
-  if constexpr (C < 5) AddLowerColumns<C + 1>(m, wj, j);
-}
-
 // the Hessian terms of consecutive rows between the same two bodies, summed in fixed-size
 // blocks and added to the matrix once (a pair's contacts come together: 12 rows for 4 contacts).
 // The diagonal blocks aa and bb only in their lower triangle: ProfileCholesky::Factor reads no
@@ -58,8 +51,8 @@ struct PairBlocks {
 
   void Add(const NewtonRow& row, double w) {
     const Vec6 wa = w * row.ja, wb = w * row.jb;
-    if (row.a >= 0) AddLowerColumns<0>(&aa, wa, row.ja);
-    if (row.b >= 0) AddLowerColumns<0>(&bb, wb, row.jb);
+    if (row.a >= 0) ProfileCholesky::AddLowerOuter(wa, row.ja, &aa);
+    if (row.b >= 0) ProfileCholesky::AddLowerOuter(wb, row.jb, &bb);
     if (row.a >= 0 && row.b >= 0) {
       for (int c = 0; c < 6; ++c) ba.col(c) += wb * row.ja(c);  // (Eigen's outer product is slower)
     }

@@ -9,7 +9,7 @@
 // first has no fill at all, and its root's block row, whose profile reaches back to its first
 // child's subtree, costs a product per child instead of one per body (ATHLETE: 6 legs of 6
 // links).
-// Used by the Newton solver (newton_solver.h).
+// Used by the Newton and direct solvers (newton_solver.h, direct_solver.h).
 #pragma once
 
 #include <vector>
@@ -22,6 +22,16 @@ namespace lamina::core {
 class ProfileCholesky {
  public:
   using Block = Eigen::Matrix<double, 6, 6>;
+  using Column = Eigen::Matrix<double, 6, 1>;
+
+  /// block += u vᵀ in its lower triangle, columns C to 5: a row's term w JᵀJ in a diagonal block
+  /// (u = w J, v = J), of which Factor reads no more (unrolled, in fixed-size segments: as fast
+  /// as Eigen's outer product of an expression is slow)
+  template <int C = 0>
+  static void AddLowerOuter(const Column& u, const Column& v, Block* block) {
+    block->col(C).template tail<6 - C>() += u.template tail<6 - C>() * v(C);
+    if constexpr (C < 5) AddLowerOuter<C + 1>(u, v, block);
+  }
 
   /// Takes the block profile (first[i] <= i for every block row i) and sets the matrix to zero.
   /// Storage is kept from call to call (no allocation once it has grown).
