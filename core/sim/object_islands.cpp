@@ -168,7 +168,8 @@ void ObjectIslands::Island::AddBody(int id, dBodyID body, dWorldID world, double
   NewtonBody b;
   b.mass = mass.mass;
   b.inertia = rotation * ToMat3(mass.I) * rotation.transpose();
-  b.start << ToVec3(dBodyGetLinearVel(body)), ToVec3(dBodyGetAngularVel(body));
+  b.start.head<3>() = ToVec3(dBodyGetLinearVel(body));
+  b.start.tail<3>() = ToVec3(dBodyGetAngularVel(body));
   Vec3 force = ToVec3(dBodyGetForce(body));
   if (dBodyGetGravityMode(body) != 0) {
     dVector3 gravity;
