@@ -45,9 +45,13 @@ function(lamina_configure_target target)
     # the wrong way, so the test files take the instrumented files' choice
     set(sanitize_compile -fno-omit-frame-pointer -DEIGEN_MALLOC_ALREADY_ALIGNED=0)
   endif()
+  # -fno-semantic-interposition: with the Python module on, the core is compiled as position-
+  # independent code, and GCC then treats every function with external linkage as one a shared
+  # object loaded first could replace, so it inlines none into another, not even within a unity
+  # batch. Nothing in Lamina is meant to be interposed.
   target_compile_options(${target} PRIVATE ${LAMINA_WARNING_FLAGS} -ffp-contract=off
-                         ${sanitize_compile} ${LAMINA_SANITIZE_COMPILE_FLAGS}
-                         ${LAMINA_DEBUG_INFO_FLAGS})
+                         -fno-semantic-interposition ${sanitize_compile}
+                         ${LAMINA_SANITIZE_COMPILE_FLAGS} ${LAMINA_DEBUG_INFO_FLAGS})
   if(LAMINA_WARNINGS_AS_ERRORS)
     target_compile_options(${target} PRIVATE -Werror)
   endif()

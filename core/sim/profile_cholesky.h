@@ -24,13 +24,16 @@ class ProfileCholesky {
   using Block = Eigen::Matrix<double, 6, 6>;
   using Column = Eigen::Matrix<double, 6, 1>;
 
-  /// block += u vᵀ in its lower triangle, columns C to 5: a row's term w JᵀJ in a diagonal block
-  /// (u = w J, v = J), of which Factor reads no more (unrolled, in fixed-size segments: as fast
-  /// as Eigen's outer product of an expression is slow)
-  template <int C = 0>
+  /// block += u vᵀ in its lower triangle: a row's term w JᵀJ in a diagonal block (u = w J,
+  /// v = J), of which Factor reads no more (written out column by column in fixed-size
+  /// segments: as fast as Eigen's outer product of an expression is slow)
   static void AddLowerOuter(const Column& u, const Column& v, Block* block) {
-    block->col(C).template tail<6 - C>() += u.template tail<6 - C>() * v(C);
-    if constexpr (C < 5) AddLowerOuter<C + 1>(u, v, block);
+    block->col(0) += u * v(0);
+    block->col(1).tail<5>() += u.tail<5>() * v(1);
+    block->col(2).tail<4>() += u.tail<4>() * v(2);
+    block->col(3).tail<3>() += u.tail<3>() * v(3);
+    block->col(4).tail<2>() += u.tail<2>() * v(4);
+    (*block)(5, 5) += u(5) * v(5);
   }
 
   /// Takes the block profile (first[i] <= i for every block row i) and sets the matrix to zero.
