@@ -75,9 +75,10 @@ bool ProfileCholesky::Factor() {
     }
     Block sum = block(i, i);
     for (int k : row) sum.noalias() -= block(i, k) * block(i, k).transpose();
-    Eigen::LLT<Block> llt(sum);
-    if (llt.info() != Eigen::Success || !llt.matrixLLT().allFinite()) return false;
+    Eigen::LLT<Block> llt(sum);  // (reads the lower triangle only)
+    if (llt.info() != Eigen::Success) return false;
     block(i, i) = llt.matrixL();
+    if (!block(i, i).allFinite()) return false;  // (L alone: the upper triangle may hold anything)
     nonzero_[static_cast<size_t>(offset_[i] + i)] = 1;
   }
   return true;

@@ -41,8 +41,8 @@ class ProfileCholesky {
   void Reset(const std::vector<int>& first);
   int blocks() const { return static_cast<int>(first_.size()); }
   /// Block (i, j) of the lower triangle, first[i] <= j <= i (the matrix, or after Factor L). A
-  /// diagonal block's lower triangle is read, its upper one never (the Newton solver leaves
-  /// the rows' share of it out).
+  /// diagonal block's lower triangle is read, its upper one never (the Newton and direct
+  /// solvers leave the rows' share of it out: AddLowerOuter).
   Block& block(int i, int j) { return values_[offset_[i] + j]; }
   const Block& block(int i, int j) const { return values_[offset_[i] + j]; }
   /// Factors the matrix as L Lᵀ in place. False when it is not positive definite (a pivot <= 0

@@ -2,6 +2,7 @@
 // The profile Cholesky factorization (core/sim/profile_cholesky.h) against Eigen's dense LLT.
 #include "core/sim/profile_cholesky.h"
 
+#include <cmath>
 #include <random>
 
 #include <Eigen/Cholesky>
@@ -122,6 +123,42 @@ TEST(ProfileCholeskyTest, RefusesAMatrixThatIsNotPositiveDefinite) {
   dense(11, 11) = std::nan("");
   Load(dense, {0, 1}, &a);
   EXPECT_FALSE(a.Factor());
+}
+
+// The solvers fill a diagonal block's lower triangle only (AddLowerOuter): the factor must not
+// read the upper one. NaN there gives the same factor to the last bit as the symmetric block.
+TEST(ProfileCholeskyTest, NeverReadsTheUpperTriangleOfADiagonalBlock) {
+  std::mt19937 random(5);
+  const std::vector<int> first = {0, 0, 1, 0};
+  const Eigen::MatrixXd dense = RandomSpd(first, &random);
+  ProfileCholesky full, lower;
+  Load(dense, first, &full);
+  Load(dense, first, &lower);
+  for (int i = 0; i < lower.blocks(); ++i) {
+    ProfileCholesky::Block& block = lower.block(i, i);
+    for (int c = 1; c < 6; ++c) block.col(c).head(c).setConstant(std::nan(""));
+  }
+  ASSERT_TRUE(full.Factor());
+  ASSERT_TRUE(lower.Factor());
+  for (int i = 0; i < full.blocks(); ++i) {
+    for (int j = first[i]; j <= i; ++j) {
+      EXPECT_TRUE(lower.block(i, j) == full.block(i, j)) << i << ", " << j;
+    }
+  }
+}
+
+// u vᵀ into the lower triangle, each entry the product itself; the upper triangle untouched
+TEST(ProfileCholeskyTest, AddLowerOuterFillsTheLowerTriangleOnly) {
+  ProfileCholesky::Column u, v;
+  u << 1.5, -2.0, 0.25, 3.0, -0.5, 7.0;
+  v << 0.1, 2.0, -3.0, 0.5, 4.0, -1.25;
+  ProfileCholesky::Block block = ProfileCholesky::Block::Constant(2.0);
+  ProfileCholesky::AddLowerOuter(u, v, &block);
+  for (int c = 0; c < 6; ++c) {
+    for (int r = 0; r < 6; ++r) {
+      EXPECT_EQ(block(r, c), r >= c ? 2.0 + u(r) * v(c) : 2.0) << r << ", " << c;
+    }
+  }
 }
 
 }  // namespace
