@@ -22,11 +22,6 @@ void AddImpulse(const NewtonRow& row, double impulse, Eigen::VectorXd* momentum)
   if (row.b >= 0) momentum->segment<6>(6 * row.b) += impulse * row.jb;
 }
 
-// block += u vᵀ, column by column (as fast as Eigen's outer product of an expression is slow)
-void AddOuter(const Vec6& u, const Vec6& v, ProfileCholesky::Block* block) {
-  for (int c = 0; c < 6; ++c) block->col(c) += u * v(c);
-}
-
 // w J_iᵀ J_i into the lower triangle of the blocks of bodies a and b (of a diagonal block only
 // its lower triangle: the factor is the same to the last bit)
 void AddRow(const NewtonRow& row, double w, ProfileCholesky* k) {
@@ -35,9 +30,9 @@ void AddRow(const NewtonRow& row, double w, ProfileCholesky* k) {
   if (row.b >= 0) ProfileCholesky::AddLowerOuter(wb, row.jb, &k->block(row.b, row.b));
   if (row.a >= 0 && row.b >= 0) {
     if (row.b > row.a) {
-      AddOuter(wb, row.ja, &k->block(row.b, row.a));
+      ProfileCholesky::AddOuter(wb, row.ja, &k->block(row.b, row.a));
     } else {
-      AddOuter(wa, row.jb, &k->block(row.a, row.b));
+      ProfileCholesky::AddOuter(wa, row.jb, &k->block(row.a, row.b));
     }
   }
 }

@@ -53,9 +53,7 @@ struct PairBlocks {
     const Vec6 wa = w * row.ja, wb = w * row.jb;
     if (row.a >= 0) ProfileCholesky::AddLowerOuter(wa, row.ja, &aa);
     if (row.b >= 0) ProfileCholesky::AddLowerOuter(wb, row.jb, &bb);
-    if (row.a >= 0 && row.b >= 0) {
-      for (int c = 0; c < 6; ++c) ba.col(c) += wb * row.ja(c);  // (Eigen's outer product is slower)
-    }
+    if (row.a >= 0 && row.b >= 0) ProfileCholesky::AddOuter(wb, row.ja, &ba);
     any = true;
   }
   // into the lower triangle of h (aa's and bb's upper triangles are zero)

@@ -20,7 +20,7 @@ struct JointContext {
 };
 
 // (the halves assigned one by one: Eigen's comma initializer cost about 100 instructions a row,
-// as in ode_contact_rows.cpp; 3.5 % of the instructions of ATHLETE's step)
+// as in ode_contact_rows.cpp; 3.3 % of the instructions of ATHLETE's step)
 Vec6 Stack(const Vec3& linear, const Vec3& angular) {
   Vec6 j;
   j.head<3>() = linear;

@@ -24,9 +24,14 @@ class ProfileCholesky {
   using Block = Eigen::Matrix<double, 6, 6>;
   using Column = Eigen::Matrix<double, 6, 1>;
 
+  /// block += u vᵀ, column by column (as fast as Eigen's outer product of an expression is
+  /// slow): a row's term w J_bᵀ J_a in an off-diagonal block
+  static void AddOuter(const Column& u, const Column& v, Block* block) {
+    for (int c = 0; c < 6; ++c) block->col(c) += u * v(c);
+  }
   /// block += u vᵀ in its lower triangle: a row's term w JᵀJ in a diagonal block (u = w J,
   /// v = J), of which Factor reads no more (written out column by column in fixed-size
-  /// segments: as fast as Eigen's outer product of an expression is slow)
+  /// segments)
   static void AddLowerOuter(const Column& u, const Column& v, Block* block) {
     block->col(0) += u * v(0);
     block->col(1).tail<5>() += u.tail<5>() * v(1);
