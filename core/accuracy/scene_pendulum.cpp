@@ -16,21 +16,25 @@
 // Bars (numerics §6 scene 2): a first-order symplectic integrator has a period error of about
 // (ωh)²/24 and an energy oscillation of about ωh/2 with no secular drift. ODE's step is
 // semi-implicit Euler on the velocities with the hinge solved as a velocity constraint plus a
-// correction of its drift with the world's ERP (0.95), which is not symplectic Euler in the angle.
-// ω₀ = √(m·g·d/I) is the small-amplitude frequency (numerics' "4e-7 for a 1 m pendulum at 1 ms"
-// uses √(g/L)).
-// - Energy: ODE matches symplectic Euler here (the oscillation is 0.00180 of the swing energy at
-//   1 ms, 0.00180 for symplectic Euler on θ, bound ω₀h/2 = 0.00192), and the mean energy of the
-//   last period is 1e-6 of the swing energy below the first's: no secular drift (bar: within 1 %
-//   of ω₀h/2).
-// - Period: second order, as for symplectic Euler, but with a larger constant: 2.5e-6·T at 1 ms,
-//   4× numerics' (ω₀h)²/24 = 6.1e-7 (symplectic Euler on θ: −3.1e-7), and longer rather than
-//   shorter. The excess comes from the maximal coordinates: each step moves the centre of mass
-//   along a straight line, the hinge's anchor drifts off the circle by ½(ωh)²·d and the ERP pulls
-//   it back a step later, so the rod swings on a slightly longer effective radius; lowering ERP
-//   lengthens the period further (2.5e-6 at ERP 0.95, 5.4e-6 at 0.5, 1.4e-5 at 0.2), and at
-//   ERP 1 it would still be about 2.3e-6. Numerics' bar is kept and marked a known failure; the
-//   second-order bar holds what ODE does.
+// correction of its drift with the world's ERP (0.95), which is not symplectic Euler in the angle;
+// Lamina then takes back the drift the step left at the hinge (joint_stabilization.h, the world's
+// jointStabilization, on by default). ω₀ = √(m·g·d/I) is the small-amplitude frequency
+// (numerics' "4e-7 for a 1 m pendulum at 1 ms" uses √(g/L)).
+// - Energy: as symplectic Euler (the oscillation is 0.00180 of the swing energy at 1 ms, 0.00180
+//   for symplectic Euler on θ, bound ω₀h/2 = 0.00192), and the mean energy of the last period is
+//   1.4e-9 of the swing energy below the first's: no secular drift (bar: within 1 % of ω₀h/2).
+//   (Moving the rod back onto its hinge along the rows of the end of the step instead, the
+//   velocities left as they were, lost 3 % of the swing energy in the 10 s.)
+// - Period: second order, as for symplectic Euler, but with a larger constant: 9.7e-7·T at 1 ms,
+//   1.6 times numerics' (ω₀h)²/24 = 6.1e-7 (symplectic Euler on θ: −3.1e-7), so numerics' bar is
+//   kept and marked a known failure; the second-order bar holds what the step does. ODE alone
+//   (jointStabilization off, as Klamp't) gives 2.5e-6·T, longer: each step moves the centre of
+//   mass along a straight line, the hinge's anchor drifts off the circle by ½(ωh)²·d and the ERP
+//   pulls it back a step later, so the rod swings on a slightly longer effective radius (lowering
+//   ERP lengthens it further: 5.4e-6 at ERP 0.5, 1.4e-5 at 0.2). With the drift taken back the
+//   rod swings on its radius; what remains is the step itself: the correction is the impulse at
+//   the start of the step that lands the rod on its hinge (SHAKE), whose velocity is the chord's
+//   of the step rather than the tangent's at its end.
 // - In joint coordinates (the Newton solver with the world's `jointCoordinates`: the rod's
 //   island solved over the hinge's rate, the rod placed back on its hinge after the step,
 //   joint_projection.h) the step is symplectic Euler on θ, and numerics' period bar holds; so

@@ -332,6 +332,13 @@ const ParamSpec kParams[] = {
      "heavy end on light links holds at large steps; slower on long chains",
      kNoChoices, GetSetting<&SimSettings::joint_coordinates>,
      SetSetting<&SimSettings::joint_coordinates>},
+    {"jointStabilization", "close joint gaps", "", kSettings, T::kBool, 0, 1, false, false, false,
+     A::kLive, false,
+     "after each step, the world's hinges and sliders closed by the least mass-weighted motion of "
+     "their bodies (post-stabilization); off: as Klamp't, a gap of about (omega h)^2 r rides "
+     "along and ERP closes it a step later",
+     kNoChoices, GetSetting<&SimSettings::joint_stabilization>,
+     SetSetting<&SimSettings::joint_stabilization>},
     {"sleeping", "sleep idle objects", "", kSettings, T::kBool, 0, 1, false, false, false,
      A::kLive, false,
      "islands of touching objects idle for sleepTime leave the steps until something wakes them",

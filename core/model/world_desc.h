@@ -214,6 +214,8 @@ struct SimSettings {
   int quick_step_iterations = 20;         ///< `quickStepIterations`
   /// `jointCoordinates`: the Newton solver takes robots in their joint coordinates
   bool joint_coordinates = false;
+  /// `jointStabilization`: the world joints' gaps closed after each step in maximal coordinates
+  bool joint_stabilization = true;
   bool sleeping = false;  ///< `sleeping`: idle objects leave the steps
   /// `sleepSpeed`: linear (m/s) and angular (rad/s) speed below which an object is idle
   double sleep_speed = 0.01;

@@ -12,12 +12,11 @@ Vec3 WorldAxis(const JointPlacement& joint, const BodyState& parent) {
   return parent.orientation * joint.axis;
 }
 
-// the world point of the parent's `point` (its axes, from its centre of mass)
-Vec3 ParentPoint(const JointPlacement& joint, const BodyState& parent) {
+}  // namespace
+
+Vec3 JointParentPoint(const JointPlacement& joint, const BodyState& parent) {
   return parent.com_position + parent.orientation * joint.parent_point;
 }
-
-}  // namespace
 
 JointPlacement MakeJointPlacement(const BodyState& parent, const BodyState& child, bool slider,
                                   const Vec3& axis, const Vec3& point) {
@@ -44,7 +43,7 @@ JointPlacement MakeFixedPlacement(const BodyState& parent, const BodyState& chil
 double JointCoordinate(const JointPlacement& joint, const BodyState& parent,
                        const BodyState& child) {
   if (joint.slider) {
-    return (child.com_position - ParentPoint(joint, parent)).dot(WorldAxis(joint, parent));
+    return (child.com_position - JointParentPoint(joint, parent)).dot(WorldAxis(joint, parent));
   }
   // the rotation since the build, in the parent's axes, and its twist about the axis
   const Eigen::Quaterniond turn =
@@ -70,7 +69,7 @@ BodyState PlaceOnJoint(const JointPlacement& joint, const BodyState& parent, dou
   child.angular_velocity = parent.angular_velocity;
   if (joint.slider) {
     child.orientation = parent.orientation * joint.relative;
-    child.com_position = ParentPoint(joint, parent) + coordinate * axis;
+    child.com_position = JointParentPoint(joint, parent) + coordinate * axis;
     child.linear_velocity =
         parent.linear_velocity +
         parent.angular_velocity.cross(child.com_position - parent.com_position) + rate * axis;
@@ -78,7 +77,7 @@ BodyState PlaceOnJoint(const JointPlacement& joint, const BodyState& parent, dou
   }
   const Eigen::Quaterniond twist(Eigen::AngleAxisd(coordinate, joint.axis));
   child.orientation = (parent.orientation * twist * joint.relative).normalized();
-  const Vec3 pivot = ParentPoint(joint, parent);
+  const Vec3 pivot = JointParentPoint(joint, parent);
   child.com_position = pivot - child.orientation * joint.child_point;
   child.angular_velocity += rate * axis;
   child.linear_velocity = parent.linear_velocity +
@@ -90,10 +89,10 @@ BodyState PlaceOnJoint(const JointPlacement& joint, const BodyState& parent, dou
 double JointGap(const JointPlacement& joint, const BodyState& parent, const BodyState& child) {
   if (!joint.slider) {
     const Vec3 carried = child.com_position + child.orientation * joint.child_point;
-    return (carried - ParentPoint(joint, parent)).norm();
+    return (carried - JointParentPoint(joint, parent)).norm();
   }
   const Vec3 axis = WorldAxis(joint, parent);
-  Vec3 off = child.com_position - ParentPoint(joint, parent);
+  Vec3 off = child.com_position - JointParentPoint(joint, parent);
   off -= off.dot(axis) * axis;
   return off.norm();
 }

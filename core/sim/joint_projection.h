@@ -57,6 +57,10 @@ double JointRate(const JointPlacement& joint, const BodyState& parent, const Bod
 BodyState PlaceOnJoint(const JointPlacement& joint, const BodyState& parent, double coordinate,
                        double rate);
 
+/// The world point the parent carries: a hinge's axis point, or where a slider's child's centre of
+/// mass is at travel 0 (a fixed joint's: where it is).
+Vec3 JointParentPoint(const JointPlacement& joint, const BodyState& parent);
+
 /// How far the joint is open (m): for a hinge the distance between its axis point carried by the
 /// parent and by the child, for a slider the distance of the child's centre of mass from the line
 /// the parent carries it along (the whole distance from where it was built, for a fixed joint).

@@ -429,6 +429,7 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     const Vec3 gravity = KickGravity(step);
     dWorldSetGravity(ode_world_.get(), gravity.x(), gravity.y(), gravity.z());
     BuildConstraints(step);
+    PrepareJointStabilization();
     if (world_.settings.solver == SolverType::kQuickStep) {
       dWorldSetQuickStepNumIterations(ode_world_.get(), world_.settings.quick_step_iterations);
       // QuickStep shuffles its rows with ODE's process-wide random generator: seeded from the
@@ -453,6 +454,7 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     ProjectReducedRobots();
     ProjectReducedWorldJoints();
   }
+  if (result == IntegrateResult::kOk) StabilizeWorldJoints(step);
   dJointGroupEmpty(contact_group_.get());
   statistics_.time_split.solver += watch.Lap();
   if (result == IntegrateResult::kOk && !bodies_.StateIsFinite()) {

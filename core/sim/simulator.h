@@ -33,6 +33,7 @@
 #include "core/sim/friction_anchors.h"
 #include "core/sim/friction_rows.h"
 #include "core/sim/interaction.h"
+#include "core/sim/joint_stabilization.h"
 #include "core/sim/object_islands.h"
 #include "core/sim/sim_state.h"
 #include "core/sim/sleep.h"
@@ -465,6 +466,10 @@ class Simulator {
   bool WorldJointIslandBodies(int joint, int* a, int* b) const;
   /// After a step: the bodies of those the reduced step took back on their joints
   void ProjectReducedWorldJoints();
+  /// Before and after a step: the other world joints' drift in it taken back
+  /// (simulator_joints.cpp)
+  void PrepareJointStabilization();
+  void StabilizeWorldJoints(double step);
 
   // the accuracy meter (simulator_meter.cpp)
   void SampleStepError(double step);
@@ -548,6 +553,10 @@ class Simulator {
   BodyTable bodies_;
   std::vector<std::unique_ptr<OdeRobot>> robots_;
   OdeWorldJoints world_joints_;
+  JointStabilizer stabilizer_;  ///< and its inputs, reused every step (StabilizeWorldJoints)
+  std::vector<dxBody*> stabilized_ids_;
+  std::vector<StabilizedBody> stabilized_bodies_;
+  std::vector<StabilizedJoint> stabilized_joints_;
   std::vector<RobotController> controllers_;
   std::vector<RobotSensors> sensors_;  ///< per robot; made once, as the controllers
   CameraRenderer* camera_renderer_ = nullptr;
