@@ -334,9 +334,9 @@ const ParamSpec kParams[] = {
      SetSetting<&SimSettings::joint_coordinates>},
     {"jointStabilization", "close joint gaps", "", kSettings, T::kBool, 0, 1, false, false, false,
      A::kLive, false,
-     "after each step, the world's hinges and sliders closed by the least mass-weighted motion of "
-     "their bodies (post-stabilization); off: as Klamp't, a gap of about (omega h)^2 r rides "
-     "along and ERP closes it a step later",
+     "the drift a step leaves in the world's hinges, sliders and fixed joints taken back in the "
+     "step, along their rows at its start (SHAKE: the energy kept); off: as Klamp't, a gap of "
+     "about (omega h)^2 r rides along and ERP closes it a step later",
      kNoChoices, GetSetting<&SimSettings::joint_stabilization>,
      SetSetting<&SimSettings::joint_stabilization>},
     {"sleeping", "sleep idle objects", "", kSettings, T::kBool, 0, 1, false, false, false,

@@ -214,7 +214,7 @@ struct SimSettings {
   int quick_step_iterations = 20;         ///< `quickStepIterations`
   /// `jointCoordinates`: the Newton solver takes robots in their joint coordinates
   bool joint_coordinates = false;
-  /// `jointStabilization`: the world joints' gaps closed after each step in maximal coordinates
+  /// `jointStabilization`: the drift a step leaves in the world's joints taken back in the step
   bool joint_stabilization = true;
   bool sleeping = false;  ///< `sleeping`: idle objects leave the steps
   /// `sleepSpeed`: linear (m/s) and angular (rad/s) speed below which an object is idle
