@@ -86,15 +86,19 @@ BodyState PlaceOnJoint(const JointPlacement& joint, const BodyState& parent, dou
   return child;
 }
 
-double JointGap(const JointPlacement& joint, const BodyState& parent, const BodyState& child) {
+Vec3 JointGapVector(const JointPlacement& joint, const BodyState& parent, const BodyState& child) {
   if (!joint.slider) {
     const Vec3 carried = child.com_position + child.orientation * joint.child_point;
-    return (carried - JointParentPoint(joint, parent)).norm();
+    return carried - JointParentPoint(joint, parent);
   }
   const Vec3 axis = WorldAxis(joint, parent);
   Vec3 off = child.com_position - JointParentPoint(joint, parent);
   off -= off.dot(axis) * axis;
-  return off.norm();
+  return off;
+}
+
+double JointGap(const JointPlacement& joint, const BodyState& parent, const BodyState& child) {
+  return JointGapVector(joint, parent, child).norm();
 }
 
 double JointBreakGap(double offset) {

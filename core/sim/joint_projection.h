@@ -66,6 +66,9 @@ Vec3 JointParentPoint(const JointPlacement& joint, const BodyState& parent);
 /// the parent carries it along (the whole distance from where it was built, for a fixed joint).
 /// The twist about the axis, and a slider's travel, do not count; nor does a tilt of the axes.
 double JointGap(const JointPlacement& joint, const BodyState& parent, const BodyState& child);
+/// The same gap as a vector (world, m): from the parent's point to the child's, less its part
+/// along a slider's axis.
+Vec3 JointGapVector(const JointPlacement& joint, const BodyState& parent, const BodyState& child);
 
 /// How far a joint may be open before a step counts as having broken it or left it open (m):
 /// max(1 cm, 10 % of `offset`, the distance from the parent's centre (or frame) to the child's).

@@ -36,16 +36,6 @@ Vec3 CarriedChildPoint(const JointPlacement& joint, const BodyState& child) {
   return child.com_position + child.orientation * joint.child_point;
 }
 
-// the joint's gap vector (world): JointGap's, as a vector
-Vec3 GapVector(const JointPlacement& joint, const BodyState& parent, const BodyState& child) {
-  Vec3 gap = CarriedChildPoint(joint, child) - JointParentPoint(joint, parent);
-  if (joint.slider && !joint.axis.isZero(0.0)) {
-    const Vec3 axis = parent.orientation * joint.axis;
-    gap -= gap.dot(axis) * axis;
-  }
-  return gap;
-}
-
 // the rotation by the world vector `turn` (rad) applied to `orientation`
 Eigen::Quaterniond Turned(const Eigen::Quaterniond& orientation, const Vec3& turn) {
   const double angle = turn.norm();
@@ -71,8 +61,8 @@ JointStabilizer::Result JointStabilizer::Stabilize(std::vector<StabilizedBody>* 
   intended_.resize(joints.size());
   for (size_t j = 0; j < joints.size(); ++j) {
     const StabilizedJoint& joint = joints[j];
-    intended_[j] = (1.0 - erp) * GapVector(joint.placement, ParentOf(*bodies, joint, true),
-                                           (*bodies)[static_cast<size_t>(joint.child)].start);
+    intended_[j] = (1.0 - erp) * JointGapVector(joint.placement, ParentOf(*bodies, joint, true),
+                                                (*bodies)[static_cast<size_t>(joint.child)].start);
   }
   double widest = MeasureGaps(*bodies, joints);
   result.gap_before = widest;
@@ -119,8 +109,8 @@ double JointStabilizer::MeasureGaps(const std::vector<StabilizedBody>& bodies,
   double widest = 0.0;
   for (size_t j = 0; j < joints.size(); ++j) {
     const StabilizedJoint& joint = joints[j];
-    const Vec3 gap = GapVector(joint.placement, ParentOf(bodies, joint, false),
-                               bodies[static_cast<size_t>(joint.child)].state) -
+    const Vec3 gap = JointGapVector(joint.placement, ParentOf(bodies, joint, false),
+                                    bodies[static_cast<size_t>(joint.child)].state) -
                      intended_[j];
     widest = std::max(widest, gap.norm());
     Vec3 directions[3];
