@@ -3,12 +3,11 @@
 // HRP-2 humanoid on a plane (hrp2_plane.xml, 30 hinges with joint friction, its servos holding
 // the zero pose) and on rough ground (examples/hrp2_rough.xml: mesh soles on a 32768-triangle
 // terrain, the contact-rich humanoid), each with dWorldStep, the Newton solver and
-// dWorldQuickStep (20 iterations):
-// every iteration
-// simulates 5 s from the start on a fresh simulator; the counters give the real-time factor, the
-// time split and how far the base moved over the last 2 s (the bar: < 1 cm; Klamp't's ATHLETE
-// creeps downhill). An iteration whose base moves more than that fails the benchmark.
-// And a free-moving arm: the TX90L following milestones with nothing to touch
+// dWorldQuickStep (20 iterations), and with dWorldStep at 2 and 4 ms as well as the worlds' 1 ms:
+// every iteration simulates 5 s from the start on a fresh simulator; the counters give the
+// real-time factor, the time split and how far the base moved over the last 2 s (the bar: < 1 cm;
+// Klamp't's ATHLETE creeps downhill). An iteration whose base moves more than that fails the
+// benchmark. And a free-moving arm: the TX90L following milestones with nothing to touch
 // (examples/tx90l_milestones.xml, tx90l_reach.milestones: five reaches and back in about 5 s),
 // where every step is the arm's own rows and the per-step overhead shows (Klamp't: about 15 µs a
 // step); an iteration that does not end within 0.01 rad of the last milestone (0.05 rad with
@@ -16,6 +15,7 @@
 #include "tests/bench/robot_bench.h"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -90,6 +90,32 @@ void RunStanding(benchmark::State& state, const core::WorldDesc& world,
   }
 }
 
+// the exact solver at larger steps than the worlds' 1 ms ("Robot/<world>/step_<ms>ms"): the
+// trade the fast path is about, speed for a step that still holds (the same base-drift
+// bar; adaptive stepping on, as the worlds have it)
+constexpr double kLargerSteps[] = {0.002, 0.004};
+
+void RegisterLargerSteps(const std::string& world_name,
+                         const std::shared_ptr<const core::WorldDesc>& world, bool loaded,
+                         const std::string& errors) {
+  for (const double step : kLargerSteps) {
+    auto larger = std::make_shared<core::WorldDesc>(*world);
+    larger->settings.timestep = step;
+    const std::string name = "Robot/" + world_name + "/step_" +
+                             std::to_string(static_cast<int>(std::lround(1000 * step))) + "ms";
+    benchmark::RegisterBenchmark(name.c_str(),
+                                 [larger, loaded, errors](benchmark::State& state) {
+                                   if (!loaded) {
+                                     Fail(state, "cannot load the world: " + errors);
+                                     return;
+                                   }
+                                   RunStanding(state, *larger, {core::SolverType::kStep, 20});
+                                 })
+        ->Unit(benchmark::kMillisecond)
+        ->Iterations(1);
+  }
+}
+
 // `file`: under worlds/, without ".xml"; the benchmark is named by its last part
 void RegisterStanding(const std::string& file) {
   const std::string world_name = file.substr(file.find_last_of('/') + 1);
@@ -104,6 +130,7 @@ void RegisterStanding(const std::string& file) {
     }
     RunStanding(state, *world, settings);
   });
+  RegisterLargerSteps(world_name, world, loaded, errors);
 }
 
 constexpr double kFollowed = 6.0;  // s: the reaches end after about 5 s
