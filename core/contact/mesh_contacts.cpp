@@ -445,6 +445,9 @@ void CollectVertexHits(const MeshPair& m, double tolerance, bool from_a, MeshMes
   s->tested_face.Clear(own.mesh().vertices.size());
   for (const int face : s->faces) {
     const FaceFrame frame(m, face, from_a);
+    // a face without area has no normal and nothing can be over it (its distance would read 0:
+    // a contact the whole layer deep); its edges still meet the other mesh in the triangle pairs
+    if (frame.outward.isZero(0.0)) continue;
     for (int i = s->first_of_face[face]; i >= 0; i = s->next_of_face[i]) {
       const PairCandidate& c = s->candidates[i];
       const Eigen::Vector3i& corners =

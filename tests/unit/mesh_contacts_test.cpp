@@ -274,6 +274,32 @@ TEST(MeshMeshContactsTest, BallOverASlabTouchesOnceAtEachNearVertex) {
   }
 }
 
+TEST(MeshMeshContactsTest, AFaceWithoutAreaHoldsNoVertexOverIt) {
+  // HRP-2's foot (RLEG_LINK5.off) has 12 triangles of no area; one, 925, lies along the sole's
+  // edge: three collinear corners at y = 0.019, z = -0.105, whose barycentric map is rounding
+  // (its determinant 2e-16 of its scale, not zero). With no normal, the face "held" a ground
+  // vertex near it at distance 0: a contact the whole layer deep where the ground is 4 mm away
+  // (the 18 rollbacks in 5 s of hrp2_rough.xml). A ground triangle 4.14 mm under the sole, with
+  // a corner where that map reads inside the face: no contact is deeper than the 0.86 mm the
+  // layers overlap (the sole's face over the ground's; its edges give shallower ones).
+  const auto foot = MeshGeometry("klampt/robots/hrp2/RLEG_LINK5.off");
+  const Vec3 corner(-0.07353103097149746, 0.01016496340216167, -0.10914277686853904);
+  auto ground = std::make_shared<core::TriangleMesh>();
+  ground->vertices = {corner, corner + Vec3(0.02, 0.02, 0), corner + Vec3(-0.02, 0.02, 0)};
+  ground->triangles = {Eigen::Vector3i(0, 1, 2)};
+  GeometryDesc desc;
+  desc.kind = core::GeometryKind::kMesh;
+  desc.mesh = ground;
+  const auto ground_geometry = CollisionGeometry::Build(desc);
+  const ContactList contacts =
+      MeshMesh(*foot, PoseAt(Vec3::Zero()), *ground_geometry, PoseAt(Vec3::Zero()));
+  ASSERT_FALSE(contacts.empty());
+  for (size_t i = 0; i < contacts.size(); ++i) {
+    EXPECT_LE(contacts[i].depth, kTolerance - (-0.105 - corner.z()) + 1e-9) << "contact " << i;
+    EXPECT_NEAR(contacts[i].normal.norm(), 1.0, kNormalTolerance) << "contact " << i;
+  }
+}
+
 TEST(BarycentricMapTest, MatchesBarycentricCoordinatesBitwise) {
   const core::mesh_detail::Triangle3 triangle = {Vec3(0.1, 0.2, 0.3), Vec3(1.3, -0.2, 0.1),
                                                  Vec3(0.2, 0.9, -0.4)};
