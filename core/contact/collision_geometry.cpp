@@ -55,14 +55,22 @@ using mesh_detail::TrianglePairHit;
 
 using FclModel = fcl::BVHModel<fcl::OBBRSSd>;
 
+// a triangle whose corner angle's sine is below this is flat: its cross product is rounding
+// (HRP-2's arm has a triangle through an edge's midpoint, sine 9.5e-16, whose "normal" pointed
+// anywhere), so it gets no normal, as one of exactly collinear corners does
+constexpr double kFlatSine = 1e-12;
+
+// unit outward normals; zero for a triangle without area (every contact routine skips those)
 std::vector<Vec3> TriangleNormals(const TriangleMesh& mesh) {
   std::vector<Vec3> normals;
   normals.reserve(mesh.triangles.size());
   for (const Eigen::Vector3i& t : mesh.triangles) {
     const Vec3& a = mesh.vertices[t[0]];
-    const Vec3 n = (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a);
+    const Vec3 e0 = mesh.vertices[t[1]] - a, e1 = mesh.vertices[t[2]] - a;
+    const Vec3 n = e0.cross(e1);
     const double length = n.norm();
-    normals.push_back(length > 0.0 ? Vec3(n / length) : Vec3::Zero());
+    const bool flat = !(length > kFlatSine * e0.norm() * e1.norm());
+    normals.push_back(flat ? Vec3::Zero() : Vec3(n / length));
   }
   return normals;
 }

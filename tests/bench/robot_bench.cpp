@@ -95,6 +95,16 @@ void RunStanding(benchmark::State& state, const core::WorldDesc& world,
 // bar; adaptive stepping on, as the worlds have it)
 constexpr double kLargerSteps[] = {0.002, 0.004};
 
+// RunStanding on `world`, or the benchmark failed when it did not load
+void RunStandingIfLoaded(benchmark::State& state, const core::WorldDesc& world, bool loaded,
+                         const std::string& errors, const core::SolverSettings& settings) {
+  if (!loaded) {
+    Fail(state, "cannot load the world: " + errors);
+    return;
+  }
+  RunStanding(state, world, settings);
+}
+
 void RegisterLargerSteps(const std::string& world_name,
                          const std::shared_ptr<const core::WorldDesc>& world, bool loaded,
                          const std::string& errors) {
@@ -103,14 +113,11 @@ void RegisterLargerSteps(const std::string& world_name,
     larger->settings.timestep = step;
     const std::string name = "Robot/" + world_name + "/step_" +
                              std::to_string(static_cast<int>(std::lround(1000 * step))) + "ms";
-    benchmark::RegisterBenchmark(name.c_str(),
-                                 [larger, loaded, errors](benchmark::State& state) {
-                                   if (!loaded) {
-                                     Fail(state, "cannot load the world: " + errors);
-                                     return;
-                                   }
-                                   RunStanding(state, *larger, {core::SolverType::kStep, 20});
-                                 })
+    benchmark::RegisterBenchmark(
+        name.c_str(),
+        [larger, loaded, errors](benchmark::State& state) {
+          RunStandingIfLoaded(state, *larger, loaded, errors, {core::SolverType::kStep, 20});
+        })
         ->Unit(benchmark::kMillisecond)
         ->Iterations(1);
   }
@@ -124,11 +131,7 @@ void RegisterStanding(const std::string& file) {
   const bool loaded = LoadWorld(WorldsPath(file + ".xml"), world.get(), &errors);
   RegisterEachSolver(world_name, [world, loaded, errors](benchmark::State& state,
                                                          const core::SolverSettings& settings) {
-    if (!loaded) {
-      Fail(state, "cannot load the world: " + errors);
-      return;
-    }
-    RunStanding(state, *world, settings);
+    RunStandingIfLoaded(state, *world, loaded, errors, settings);
   });
   RegisterLargerSteps(world_name, world, loaded, errors);
 }

@@ -181,6 +181,25 @@ TEST(CollisionGeometryTest, DuplicatedVerticesAreWelded) {
   EXPECT_EQ(topology.neighbors[0][0], -1);  // a border edge
 }
 
+// a triangle without area has no normal, whether its corners are exactly collinear or only to
+// rounding: HRP-2's right arm (RARM_LINK4.off) has one through an edge's midpoint, whose cross
+// product is 9.5e-16 of its edges' and pointed anywhere
+TEST(CollisionGeometryTest, ATriangleWithoutAreaHasNoNormal) {
+  auto mesh = std::make_shared<core::TriangleMesh>();
+  mesh->vertices = {{-0.027557, 0.037887, 0.037395},
+                    {-0.028611, 0.035777, 0.039791},
+                    {-0.028084, 0.036832, 0.038593},
+                    {0, 0, 0},
+                    {0.1, 0, 0},
+                    {0, 1e-7, 0}};
+  mesh->triangles = {{0, 1, 2}, {3, 4, 4}, {3, 4, 5}};
+  const auto geometry = CollisionGeometry::Build(MeshDesc(mesh));
+  EXPECT_EQ(geometry->triangle_normals()[0], Vec3::Zero());
+  EXPECT_EQ(geometry->triangle_normals()[1], Vec3::Zero());
+  // a thin triangle that has area (sine 1e-6) keeps its normal
+  EXPECT_TRUE(geometry->triangle_normals()[2].isApprox(Vec3::UnitZ(), 1e-12));
+}
+
 TEST(CollisionGeometryTest, BoxQueryFindsTheTrianglesItTouches) {
   const auto geometry = CollisionGeometry::Build(MeshDesc(LoadMesh("klampt/objects/cube.off")));
   std::vector<int> triangles;
