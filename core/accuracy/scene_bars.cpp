@@ -36,7 +36,9 @@ BarCheck Stable(const std::vector<const AccuracyRun*>& runs) {
   if (!RunsUsable(runs, &check)) return check;
   check.pass = true;
   for (const AccuracyRun* run : runs) {
-    check.pass = check.pass && run->corrections == 0 && run->nonfinite == 0;
+    // a joint broken open (beyond JointBreakGap) is a blow-up too, corrected or not
+    check.pass =
+        check.pass && run->corrections == 0 && run->nonfinite == 0 && run->status != "joint open";
     check.measured += (check.measured.empty() ? "" : "; ") + std::to_string(run->corrections) +
                       " corrections, " + std::to_string(run->nonfinite) + " non-finite, " +
                       run->status + " at " + StepText(run->step);

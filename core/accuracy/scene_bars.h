@@ -26,7 +26,8 @@ double BarValue(const AccuracyRun& run, const BarQuantity& quantity);
 BarCheck AtMost(const std::vector<const AccuracyRun*>& runs, const BarQuantity& quantity,
                 double bound);
 
-/// Passes when every run ran without instability corrections, non-finite states or errors.
+/// Passes when every run ran without instability corrections, non-finite states, joints broken
+/// open (status "joint open": beyond JointBreakGap) or errors.
 BarCheck Stable(const std::vector<const AccuracyRun*>& runs);
 
 /// "1 ms" for 1e-3, "0.1 ms" for 1e-4.

@@ -53,10 +53,42 @@ const BodyState& ParentOf(const std::vector<StabilizedBody>& bodies, const Stabi
 
 }  // namespace
 
+Vec3 ArcOffset(const Vec3& arm, const Vec3& angular_velocity, double step, Vec3* velocity_change) {
+  const Vec3 turn = step * angular_velocity;
+  const double angle = turn.norm();
+  if (angle == 0.0) {
+    velocity_change->setZero();
+    return Vec3::Zero();
+  }
+  const Vec3 turned = Eigen::AngleAxisd(angle, turn / angle) * arm - arm;
+  *velocity_change = angular_velocity.cross(turned);
+  return turned - turn.cross(arm);
+}
+
+// each moving body on a hinge to the world carried along its arc (ArcOffset), once (a second
+// world hinge of the same body shares its axis, or holds it still)
+void JointStabilizer::FollowWorldHinges(std::vector<StabilizedBody>* bodies,
+                                        const std::vector<StabilizedJoint>& joints, double step) {
+  followed_.assign(bodies->size(), 0);
+  for (const StabilizedJoint& joint : joints) {
+    const JointPlacement& placement = joint.placement;
+    const size_t child = static_cast<size_t>(joint.child);
+    if (joint.parent >= 0 || placement.slider || !(*bodies)[child].moves || followed_[child])
+      continue;
+    followed_[child] = 1;
+    StabilizedBody& body = (*bodies)[child];
+    const Vec3 arm = -(body.start.orientation * placement.child_point);
+    Vec3 velocity_change;
+    body.state.com_position += ArcOffset(arm, body.state.angular_velocity, step, &velocity_change);
+    body.state.linear_velocity += velocity_change;
+  }
+}
+
 JointStabilizer::Result JointStabilizer::Stabilize(std::vector<StabilizedBody>* bodies,
                                                    const std::vector<StabilizedJoint>& joints,
                                                    double step, double erp, double tolerance) {
   Result result;
+  FollowWorldHinges(bodies, joints, step);
   // the gaps the step's rows aimed at: what the ERP leaves of the gaps at the start
   intended_.resize(joints.size());
   for (size_t j = 0; j < joints.size(); ++j) {

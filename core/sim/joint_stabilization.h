@@ -20,10 +20,21 @@
 // what keeps the energy: measured on the pendulum at 1 ms, moving the bodies onto their joints
 // along the end's rows and leaving the velocities lost 3 % of the swing energy in 10 s (and
 // halved with h: first order); this keeps it (the last period's mean energy 1.4e-9 of the swing
-// energy from the first's at 1 ms, ODE's step alone 9.8e-7). The cost: a profile factorization
+// energy from the first's at 1 ms, ODE's step alone 9.8e-7; measured before the rod followed its
+// arc, below, with which it is 2.1e-9). The cost: a profile factorization
 // and a few solves over the joints' bodies every step, as much as ODE's own dense solve on small
-// systems (docs/simulator.md: 1.14 to 1.75 times the CPU time of ODE alone on the accuracy
+// systems (docs/simulator.md: 1.13 to 1.87 times the CPU time of ODE alone on the accuracy
 // scenes' chains and pendulum).
+//
+// A body on a hinge to the world (the pendulum, a door) is first carried along its arc
+// (ArcOffset): ODE moved its centre of mass along the chord h·v while it turned the body by
+// exp(h·ω̂), and a body turning about a fixed point goes where that turn about the point puts it,
+// its velocity turned with it. That leaves its hinge no drift (to rounding), and the step is then
+// the step in joint coordinates for it, symplectic Euler on its angle. The correction along the
+// rows of the start alone closes the same drift but lands the centre at the chord's length from
+// where it started, so the angle advances by asin(h·ω) rather than h·ω per step: the pendulum's
+// period came out 9.7e-7 of T short at 1 ms (numerics' bar (ω₀h)²/24 = 6.1e-7; now 3.1e-7, as
+// symplectic Euler on the angle). A body hinged to another moving body keeps the correction only.
 //
 // Rows: what JointGap counts (joint_projection.h), a hinge's axis point carried by each body
 // (3 rows), a slider's or fixed joint's child centre of mass off the line or the point the parent
@@ -71,6 +82,18 @@ struct StabilizedJoint {
   JointPlacement placement;
 };
 
+/// What ODE's step leaves of a body turning about a world hinge's fixed axis, taken back: the
+/// step moved its centre of mass along the chord h·v while it turned the body by exp(h·ω̂) (finite
+/// rotation), so the hinge's point the body carries left the axis by about ½(ωh)²·r. A body
+/// turning about a fixed point travels the arc instead: returns the move from the chord's end to
+/// the arc's, (exp(h·ω̂) − I − h·ω̂)·(c₀ − p₀), with `arm` = c₀ − p₀ the centre of mass from the
+/// hinge's point at the start of the step and `angular_velocity` ω the body's after the step
+/// (m). Its velocity turns with it: `velocity_change` (m/s) is ω × (exp(h·ω̂) − I)·(c₀ − p₀), so
+/// the centre's velocity keeps its length and stays the rigid motion's about the point. Both are
+/// zero when ω is. This is the step in joint coordinates for such a body (symplectic Euler on
+/// its angle); for a body hinged to another moving body the drift is left to the correction.
+Vec3 ArcOffset(const Vec3& arm, const Vec3& angular_velocity, double step, Vec3* velocity_change);
+
 class JointStabilizer {
  public:
   static constexpr double kPenalty = 1e6;  ///< w / (largest mass)
@@ -108,6 +131,8 @@ class JointStabilizer {
     int gap = -1;  ///< the gap direction it takes (0..2), or −1: a rotation row, held at 0
     ProfileCholesky::Column parent, child;  ///< J₀: linear then angular (world axes)
   };
+  void FollowWorldHinges(std::vector<StabilizedBody>* bodies,
+                         const std::vector<StabilizedJoint>& joints, double step);
   void BuildRows(const std::vector<StabilizedBody>& bodies,
                  const std::vector<StabilizedJoint>& joints);
   void AddJointRows(int joint, const JointPlacement& placement, const BodyState& parent,
@@ -121,8 +146,9 @@ class JointStabilizer {
   void AddRowBlocks(int block, const ProfileCholesky::Column& jacobian);
   void SolveRound(std::vector<StabilizedBody>* bodies, const std::vector<StabilizedJoint>& joints);
 
-  std::vector<int> block_;  ///< per body: its block, or −1 when it does not move
-  std::vector<int> first_;  ///< per block: first block of its row's profile
+  std::vector<char> followed_;  ///< per body: carried along a world hinge's arc this step
+  std::vector<int> block_;      ///< per body: its block, or −1 when it does not move
+  std::vector<int> first_;      ///< per block: first block of its row's profile
   std::vector<Row> rows_;
   std::vector<Vec3> intended_;  ///< per joint: the gap vector the step aimed at (world)
   std::vector<Vec3> gaps_;      ///< per joint: its drift at the current poses, in J₀'s directions
