@@ -12,6 +12,7 @@
 #include "core/accuracy/accuracy_run.h"
 #include "core/accuracy/probe_support.h"
 #include "core/accuracy/svg_plot.h"
+#include "core/json_values.h"
 
 namespace lamina::core {
 namespace {
@@ -119,17 +120,12 @@ std::string AccuracyCsv(const std::vector<AccuracyRun>& runs) {
 
 namespace {
 
-// JSON numbers cannot be inf or NaN: those become null.
-nlohmann::json JsonNumber(double value) {
-  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-}
-
 nlohmann::json RunJson(const AccuracyRun& r) {
   nlohmann::json metrics = nlohmann::json::object();
-  for (const ProbeMetric& m : r.result.metrics) metrics[m.name] = JsonNumber(m.value);
+  for (const ProbeMetric& m : r.result.metrics) metrics[m.name] = FiniteOrNull(m.value);
   return {{"scene", r.scene},         {"solver", r.solver.Label()},
-          {"step", r.step},           {"error", JsonNumber(r.result.error)},
-          {"cpu_s", r.cpu_seconds},   {"real_time_factor", JsonNumber(r.real_time_factor)},
+          {"step", r.step},           {"error", FiniteOrNull(r.result.error)},
+          {"cpu_s", r.cpu_seconds},   {"real_time_factor", FiniteOrNull(r.real_time_factor)},
           {"steps", r.steps},         {"rollbacks", r.rollbacks},
           {"min_step", r.min_step},   {"corrections", r.corrections},
           {"nonfinite", r.nonfinite}, {"unreliable", r.unreliable},

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/json_values.h"
+
 namespace lamina::core {
 namespace {
 
@@ -26,13 +28,9 @@ std::string MetricText(const StressRecord& r) {
   return r.unit.empty() ? Num3(r.metric) : Num3(r.metric) + " " + r.unit;
 }
 
-nlohmann::json RecordNumber(double value) {
-  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-}
-
 nlohmann::json RecordJson(const StressRecord& r) {
   nlohmann::json metrics = nlohmann::json::object();
-  for (const ProbeMetric& m : r.probe.metrics) metrics[m.name] = RecordNumber(m.value);
+  for (const ProbeMetric& m : r.probe.metrics) metrics[m.name] = FiniteOrNull(m.value);
   return {
       {"name", r.name},
       {"world", r.world},
@@ -49,13 +47,13 @@ nlohmann::json RecordJson(const StressRecord& r) {
       {"nonfinite_recoveries", r.nonfinite},
       {"unreliable_steps", r.unreliable},
       {"joint_open_steps", r.joint_open},
-      {"max_joint_gap", RecordNumber(r.max_joint_gap)},
+      {"max_joint_gap", FiniteOrNull(r.max_joint_gap)},
       {"min_step", r.min_step},
-      {"max_penetration", RecordNumber(r.max_penetration)},
+      {"max_penetration", FiniteOrNull(r.max_penetration)},
       {"cpu_s", r.cpu_seconds},
-      {"metric", {{"text", r.metric_text}, {"unit", r.unit}, {"value", RecordNumber(r.metric)}}},
+      {"metric", {{"text", r.metric_text}, {"unit", r.unit}, {"value", FiniteOrNull(r.metric)}}},
       {"probe",
-       {{"error", RecordNumber(r.probe.error)}, {"note", r.probe.note}, {"metrics", metrics}}},
+       {{"error", FiniteOrNull(r.probe.error)}, {"note", r.probe.note}, {"metrics", metrics}}},
       {"lost", r.lost},
       {"failure", r.failure}};
 }

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/json_values.h"
 #include "core/model/element.h"
 #include "core/model/params.h"
 
@@ -21,10 +22,6 @@ using nlohmann::ordered_json;
 ordered_json JsonLimit(double value) {
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
   return value;
-}
-
-ordered_json SummaryVector(const Vec3& v) {
-  return ordered_json::array({v.x(), v.y(), v.z()});
 }
 
 // a row's value: a bool, a choice's name, an integer, a number or an array of numbers
@@ -83,7 +80,7 @@ ordered_json ObjectJson(const WorldDesc& world, int index) {
                       {"file", object.geometry.path},
                       {"triangles", object.geometry.triangle_count()},
                       {"points", object.geometry.point_count()},
-                      {"position", SummaryVector(object.pose.translation())}};
+                      {"position", JsonVector(object.pose.translation())}};
   out.update(RowsJson(world, element, Rows(ElementKind::kObject, false)));
   out["simulation"] = RowsJson(world, element, Rows(ElementKind::kObject, true));
   return out;
@@ -236,8 +233,8 @@ ordered_json JointJson(const WorldDesc& world, const WorldJointDesc& joint) {
   out["bodies"] = ordered_json::array();
   for (const WorldJointBody& body : joint.bodies)
     out["bodies"].push_back(JointBodyText(world, body));
-  if (joint.type == WorldJointType::kHinge) out["point"] = SummaryVector(joint.point);
-  if (joint.type != WorldJointType::kFixed) out["axis"] = SummaryVector(joint.axis);
+  if (joint.type == WorldJointType::kHinge) out["point"] = JsonVector(joint.point);
+  if (joint.type != WorldJointType::kFixed) out["axis"] = JsonVector(joint.axis);
   out["min"] = JsonLimit(joint.min);
   out["max"] = JsonLimit(joint.max);
   out["friction"] = JsonLimit(joint.friction);

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/json_values.h"
 #include "core/model/world_summary.h"
 
 namespace lamina::core {
@@ -14,10 +15,6 @@ namespace lamina::core {
 namespace {
 
 using nlohmann::ordered_json;
-
-ordered_json ReportVector(const Vec3& v) {
-  return ordered_json::array({v.x(), v.y(), v.z()});
-}
 
 double RealTimeFactor(const Simulator& simulator, const RunTiming& timing) {
   return timing.wall_time > 0.0 ? simulator.time() / timing.wall_time : 0.0;
@@ -108,10 +105,10 @@ std::string RunReportJson(const Simulator& simulator, const RunTiming& timing) {
     const Eigen::Quaterniond q(pose.linear());
     const Twist velocity = simulator.GetObjectVelocity(i);
     objects.push_back({{"name", simulator.world().objects[i].name},
-                       {"position", ReportVector(pose.translation())},
+                       {"position", JsonVector(pose.translation())},
                        {"quaternion", ordered_json::array({q.w(), q.x(), q.y(), q.z()})},
-                       {"velocity", ReportVector(velocity.linear)},
-                       {"angular_velocity", ReportVector(velocity.angular)},
+                       {"velocity", JsonVector(velocity.linear)},
+                       {"angular_velocity", JsonVector(velocity.angular)},
                        {"asleep", simulator.ObjectAsleep(i)}});
   }
   out["objects"] = objects;
