@@ -335,8 +335,9 @@ const ParamSpec kParams[] = {
     {"jointStabilization", "close joint gaps", "", kSettings, T::kBool, 0, 1, false, false, false,
      A::kLive, false,
      "the drift a step leaves in the world's hinges, sliders and fixed joints taken back in the "
-     "step, along their rows at its start (SHAKE: the energy kept); off: as Klamp't, a gap of "
-     "about (omega h)^2 r rides along and ERP closes it a step later",
+     "step: a body on a hinge to the world follows its arc, the rest moves along the joints' rows "
+     "at the step's start (SHAKE: the energy kept); off: as Klamp't, a gap of about (omega h)^2 r "
+     "rides along and ERP closes it a step later",
      kNoChoices, GetSetting<&SimSettings::joint_stabilization>,
      SetSetting<&SimSettings::joint_stabilization>},
     {"sleeping", "sleep idle objects", "", kSettings, T::kBool, 0, 1, false, false, false,
