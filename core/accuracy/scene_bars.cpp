@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/accuracy/probe_support.h"
+#include "core/sim/step_observer.h"
 
 namespace lamina::core {
 
@@ -37,8 +38,8 @@ BarCheck Stable(const std::vector<const AccuracyRun*>& runs) {
   check.pass = true;
   for (const AccuracyRun* run : runs) {
     // a joint broken open (beyond JointBreakGap) is a blow-up too, corrected or not
-    check.pass =
-        check.pass && run->corrections == 0 && run->nonfinite == 0 && run->status != "joint open";
+    check.pass = check.pass && run->corrections == 0 && run->nonfinite == 0 &&
+                 run->status != StepStatusName(StepStatus::kJointOpen);
     check.measured += (check.measured.empty() ? "" : "; ") + std::to_string(run->corrections) +
                       " corrections, " + std::to_string(run->nonfinite) + " non-finite, " +
                       run->status + " at " + StepText(run->step);

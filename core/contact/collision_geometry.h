@@ -40,8 +40,8 @@ class CollisionGeometry {
   /// Mesh in the body frame (kind kMesh).
   const TriangleMesh& mesh() const { return mesh_; }
   const MeshBvh& bvh() const { return *bvh_; }
-  /// Unit outward normal of each triangle, body frame (kind kMesh).
-  /// Unit outward normal per triangle; zero for a triangle without area (flat to rounding).
+  /// Unit outward normal of each triangle, body frame (kind kMesh); zero for a triangle without
+  /// area (flat to rounding).
   const std::vector<Vec3>& triangle_normals() const { return triangle_normals_; }
   /// Primitive in the body frame (its pose includes the geometry placement; kind kPrimitive).
   const Primitive& primitive() const { return primitive_; }

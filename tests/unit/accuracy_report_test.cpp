@@ -13,6 +13,7 @@
 
 #include "core/accuracy/accuracy_run.h"
 #include "core/accuracy/probe_support.h"
+#include "core/accuracy/scene_bars.h"
 #include "core/accuracy/svg_plot.h"
 
 namespace lamina::core {
@@ -109,6 +110,21 @@ TEST(AccuracyReportTest, BarsJudgeTheDefaultSolversRuns) {
   EXPECT_FALSE(JudgeAccuracyBars(runs)[0].check.pass);
   runs[0].failure = "boom";
   EXPECT_EQ(JudgeAccuracyBars(runs)[0].check.measured, "failed: boom");
+}
+
+TEST(AccuracyReportTest, NoBlowUpFailsCorrectionsNonFiniteStatesAndJointsBrokenOpen) {
+  AccuracyRun run = MakeRun("chain", 1e-2, 0.0);
+  EXPECT_TRUE(Stable({&run}).pass);
+  run.status = "joint open";  // the step guard's flag: a joint beyond JointBreakGap, uncorrected
+  const BarCheck open = Stable({&run});
+  EXPECT_FALSE(open.pass);
+  EXPECT_EQ(open.measured, "0 corrections, 0 non-finite, joint open at 10 ms");
+  run.status = "normal";
+  run.corrections = 3;
+  EXPECT_FALSE(Stable({&run}).pass);
+  run.corrections = 0;
+  run.nonfinite = 1;
+  EXPECT_FALSE(Stable({&run}).pass);
 }
 
 TEST(AccuracyReportTest, CsvQuotesAndJsonHasNullForInfinity) {
