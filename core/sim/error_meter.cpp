@@ -17,12 +17,15 @@ StepErrorSample MakeStepErrorSample(double time, double step, const std::vector<
 }
 
 bool ErrorMeter::Due() const {
-  return samples_ == 0 || sampling_ + last_cost_ <= budget_ * stepping_;
+  if (tried_) return sampling_ + last_cost_ <= budget_ * stepping_;
+  if (steps_ == 0) return false;
+  return sampling_ + kSampleSteps * stepping_ / static_cast<double>(steps_) <= budget_ * stepping_;
 }
 
 void ErrorMeter::Add(const StepErrorSample& sample, double seconds) {
   sampling_ += seconds;
   last_cost_ = seconds;
+  tried_ = true;
   ++samples_;
   recent_.push_back(sample);
   if (static_cast<int>(recent_.size()) > window_) recent_.erase(recent_.begin());
@@ -45,7 +48,8 @@ ErrorMeterReading ErrorMeter::Reading() const {
 
 void ErrorMeter::Reset() {
   stepping_ = sampling_ = last_cost_ = 0.0;
-  samples_ = 0;
+  samples_ = steps_ = 0;
+  tried_ = false;
   recent_.clear();
 }
 

@@ -19,18 +19,36 @@ TEST(ErrorMeterTest, SampleDoublesTheLargestDifferenceAndDividesByTheStep) {
   EXPECT_DOUBLE_EQ(sample.time, 2.0);
 }
 
+// the first sample's cost is not known yet: it is counted as three mean steps, so it waits for
+// 3 / budget steps (60 at 5 %), however costly the first steps were
+TEST(ErrorMeterTest, TheFirstSampleWaitsUntilTheBudgetPaysForThreeMeanSteps) {
+  ErrorMeter meter(0.05);
+  EXPECT_FALSE(meter.Due());  // before any step
+  // a costly start: three steps of 0.5 s, then 56 of 1 ms
+  for (int i = 0; i < 59; ++i) meter.AddSteppingTime(i < 3 ? 0.5 : 0.001);
+  EXPECT_FALSE(meter.Due());  // 3 · S / 59 > 0.05 · S
+  meter.AddSteppingTime(0.001);
+  meter.AddSteppingTime(0.001);
+  EXPECT_TRUE(meter.Due());  // 61 steps
+  ErrorMeter generous(0.5);  // 3 / 0.5 = 6 steps
+  for (int i = 0; i < 5; ++i) generous.AddSteppingTime(0.001);
+  EXPECT_FALSE(generous.Due());
+  generous.AddSteppingTime(0.001);
+  generous.AddSteppingTime(0.001);
+  EXPECT_TRUE(generous.Due());
+}
+
 TEST(ErrorMeterTest, SamplesOnlyWithinItsBudgetOfTheSteppingTime) {
   ErrorMeter meter(0.05);
-  EXPECT_TRUE(meter.Due());  // the first step
-  meter.Add({0.0, 0.001, 1e-6, 2e-6, 2e-3}, 0.003);
-  EXPECT_FALSE(meter.Due());
-  meter.AddSteppingTime(0.10);  // 0.003 + 0.003 > 0.05 · 0.10
-  EXPECT_FALSE(meter.Due());
-  meter.AddSteppingTime(0.02);  // 0.006 <= 0.05 · 0.12
+  for (int i = 0; i < 100; ++i) meter.AddSteppingTime(0.001);  // 0.1 s: the first sample is due
   EXPECT_TRUE(meter.Due());
-  meter.AddSamplingTime(0.003);
+  meter.Add({0.1, 0.001, 1e-6, 2e-6, 2e-3}, 0.003);
+  EXPECT_FALSE(meter.Due());    // 0.003 + 0.003 > 0.05 · 0.1
+  meter.AddSteppingTime(0.03);  // 0.006 <= 0.05 · 0.13
+  EXPECT_TRUE(meter.Due());
+  meter.AddSamplingTime(0.003);  // (a sample whose probe step failed counts as well)
   EXPECT_FALSE(meter.Due());
-  EXPECT_NEAR(meter.Reading().overhead, 0.006 / 0.12, 1e-12);
+  EXPECT_NEAR(meter.Reading().overhead, 0.006 / 0.13, 1e-12);
 }
 
 TEST(ErrorMeterTest, ReadsTheLargestRateOfTheRecentSamples) {
@@ -48,7 +66,9 @@ TEST(ErrorMeterTest, ReadsTheLargestRateOfTheRecentSamples) {
   EXPECT_EQ(reading.samples, 3);
   meter.Reset();
   EXPECT_FALSE(meter.Reading().valid);
-  EXPECT_TRUE(meter.Due());
+  EXPECT_FALSE(meter.Due());  // as at the start: no step counted
+  meter.AddSteppingTime(0.001);
+  EXPECT_FALSE(meter.Due());
 }
 
 }  // namespace
