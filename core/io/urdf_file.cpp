@@ -364,7 +364,9 @@ void UrdfConverter::CheckDriver(const DriverDesc& driver, const std::string& lin
                                                       {"dryFriction", driver.dry_friction},
                                                       {"viscousFriction", driver.viscous_friction}};
   for (const auto& [key, value] : rows) {
-    CheckRow(line, "'" + std::string(key) + "'" + of, key, ElementKind::kDriver, {value});
+    std::string what = "'";
+    what.append(key).append("'").append(of);
+    CheckRow(line, what, key, ElementKind::kDriver, {value});
   }
 }
 

@@ -706,7 +706,10 @@ std::string FormatParamValue(const ParamSpec& spec, const ParamValue& value) {
     return std::string(spec.choices[static_cast<size_t>(value[0])]);
   }
   std::string out;
-  for (size_t i = 0; i < value.size(); ++i) out += (i ? "," : "") + FormatDouble(value[i]);
+  for (size_t i = 0; i < value.size(); ++i) {
+    if (i > 0) out += ',';
+    out += FormatDouble(value[i]);
+  }
   return out;
 }
 

@@ -20,7 +20,8 @@ bool* OverlayFlag(const std::string& name, OverlayOptions* options) {
 std::string OverlayNames() {
   std::string names;
   for (const OverlayToggle& toggle : kOverlayToggles) {
-    names += (names.empty() ? "" : ",") + std::string(toggle.name);
+    if (!names.empty()) names += ',';
+    names += toggle.name;
   }
   return names;
 }

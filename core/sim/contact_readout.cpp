@@ -180,7 +180,12 @@ std::string BodiesText(const WorldDesc& world, const std::vector<int>& ids) {
   std::string text;
   for (size_t i = 0; i < ids.size() && i < kNamed; ++i) {
     if (i > 0) text += i + 1 == ids.size() ? " and " : ", ";
-    text += "'" + BodyLabel(world, ids[i]) + "' (id " + std::to_string(ids[i]) + ")";
+    // (appended piece by piece: GCC 12 at -O3 warns falsely on "..." + std::string&&)
+    text += '\'';
+    text += BodyLabel(world, ids[i]);
+    text += "' (id ";
+    text += std::to_string(ids[i]);
+    text += ')';
   }
   if (ids.size() > kNamed) text += " and " + std::to_string(ids.size() - kNamed) + " more";
   return text;
