@@ -192,6 +192,7 @@ std::vector<Job> MakeJobs(const AccuracyGrid& grid) {
       }
     };
     for (const AccuracySolver& solver : grid.solvers) add(solver, true);
+    if (!grid.bar_solvers) continue;
     for (const AccuracySolver& solver : BarOnlySolvers(grid, *scene)) add(solver, false);
   }
   return jobs;

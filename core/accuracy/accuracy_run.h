@@ -24,12 +24,14 @@ AccuracyRun RunAccuracySceneOn(const AccuracyScene& scene, WorldDesc world,
 
 /// What a sweep runs: every scene with every solver at every step (each scene leaves out steps
 /// below its min_step), or with `bars_only` each scene at the steps its bars name. A scene whose
-/// bar is judged with a solver the grid lacks (AccuracyBar::solver) runs with it too.
+/// bar is judged with a solver the grid lacks (AccuracyBar::solver) runs with it too, unless
+/// `bar_solvers` is off (lamina-peers: the bars' solvers are Lamina's, which no peer runs).
 struct AccuracyGrid {
   std::vector<const AccuracyScene*> scenes;
   std::vector<AccuracySolver> solvers;
   std::vector<double> steps;
   bool bars_only = false;
+  bool bar_solvers = true;
 };
 
 /// The sweep the report uses: numerics §6's steps 1e-5 … 1e-2 s; exact and QuickStep at 20, 40

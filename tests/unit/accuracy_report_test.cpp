@@ -4,6 +4,7 @@
 #include "core/accuracy/accuracy_report.h"
 
 #include <cmath>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -152,6 +153,34 @@ TEST(AccuracyReportTest, BarGridRunsEachScenesBarStepsOnly) {
   ASSERT_EQ(grid.solvers.size(), 1u);
   EXPECT_EQ(grid.solvers[0], DefaultAccuracySolver());
   EXPECT_EQ(grid.scenes.size(), AccuracyScenes().size());
+}
+
+// the pendulum's bars are judged with newton-joints as well: a sweep adds it to a grid that
+// lacks it, unless the grid leaves the bars' solvers out (lamina-peers: no peer runs them)
+TEST(AccuracyReportTest, ASweepAddsTheBarsSolversUnlessTheGridLeavesThemOut) {
+  AccuracyGrid grid;
+  grid.scenes = {FindAccuracyScene("pendulum")};
+  ASSERT_NE(grid.scenes[0], nullptr);
+  grid.solvers = {*ParseAccuracySolver("quick20")};
+  grid.steps = {1e-3};
+  const AccuracyRunner label_only = [](const AccuracyScene& scene, const std::string&,
+                                       const AccuracySolver& solver, double step) {
+    AccuracyRun run;
+    run.scene = scene.name;
+    run.solver = solver;
+    run.step = step;
+    return run;
+  };
+  const auto labels = [&] {
+    std::set<std::string> out;
+    for (const AccuracyRun& run : RunAccuracySweep(grid, "", 1, nullptr, label_only)) {
+      out.insert(run.solver.Label());
+    }
+    return out;
+  };
+  EXPECT_EQ(labels().count("newton-joints"), 1u);
+  grid.bar_solvers = false;
+  EXPECT_EQ(labels(), std::set<std::string>{"quick20"});
 }
 
 }  // namespace
