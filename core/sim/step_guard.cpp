@@ -50,18 +50,30 @@ bool NeedsRollback(const std::vector<ContactPair>& before, const std::vector<Con
   return rollback;
 }
 
-double ContactEnergyAllowance(int id, double mass, const std::vector<ContactPair>& pairs,
-                              const PairStiffness& stiffness, double step) {
-  double allowance = 0.0;
+namespace {
+
+void AddPairAllowance(const ContactPair& pair, double mass, double k, double step,
+                      double* allowance) {
+  const double correction_speed = pair.max_depth / step;
+  *allowance += 0.5 * mass * correction_speed * correction_speed;
+  *allowance += 0.5 * mass * pair.anchor_speed * pair.anchor_speed;
+  if (std::isfinite(k)) *allowance += 0.5 * k * pair.max_depth * pair.max_depth;
+}
+
+}  // namespace
+
+// (a body's sum in the pairs' order, as one pass per body had it: the same to the last bit, in
+// time linear in the pairs rather than bodies × pairs, 0.13 M pair visits a step on a 210-box
+// pyramid)
+void ContactEnergyAllowances(const std::vector<ContactPair>& pairs,
+                             const std::vector<double>& masses, const PairStiffness& stiffness,
+                             double step, std::vector<double>* allowances) {
+  allowances->assign(masses.size(), 0.0);
   for (const ContactPair& pair : pairs) {
-    if (pair.a != id && pair.b != id) continue;
-    const double correction_speed = pair.max_depth / step;
-    allowance += 0.5 * mass * correction_speed * correction_speed;
-    allowance += 0.5 * mass * pair.anchor_speed * pair.anchor_speed;
     const double k = stiffness(pair);
-    if (std::isfinite(k)) allowance += 0.5 * k * pair.max_depth * pair.max_depth;
+    AddPairAllowance(pair, masses[pair.a], k, step, &(*allowances)[pair.a]);
+    AddPairAllowance(pair, masses[pair.b], k, step, &(*allowances)[pair.b]);
   }
-  return allowance;
 }
 
 void StepGuard::MeasureUnknownEnergies(BodyTable* bodies) {
@@ -127,6 +139,9 @@ void StepGuard::CollectSamples(BodyTable* bodies, const std::vector<ContactPair>
   MarkPushed(*bodies, before);
   scratch_.samples.clear();
   scratch_.checked.clear();
+  scratch_.masses.resize(bodies->size());
+  for (int id = 0; id < bodies->size(); ++id) scratch_.masses[id] = (*bodies)[id].mass;
+  ContactEnergyAllowances(before, scratch_.masses, stiffness, step, &scratch_.allowances);
   const std::vector<int>& ids = bodies->object_ids();
   for (size_t i = 0; i < ids.size(); ++i) {
     BodyRecord& body = (*bodies)[ids[i]];
@@ -143,8 +158,7 @@ void StepGuard::CollectSamples(BodyTable* bodies, const std::vector<ContactPair>
     const double work = ExternalWorkBound(force, torque, start.linear_velocity.norm(), v.norm(),
                                           start.angular_velocity.norm(), w.norm(), step);
     scratch_.samples.push_back(
-        {body.mass, energy_before, energy,
-         work + ContactEnergyAllowance(ids[i], body.mass, before, stiffness, step)});
+        {body.mass, energy_before, energy, work + scratch_.allowances[ids[i]]});
     scratch_.checked.push_back(ids[i]);
   }
 }

@@ -43,11 +43,13 @@ bool NeedsRollback(const std::vector<ContactPair>& before, const std::vector<Con
 /// The blended layer stiffness of a pair (N/m; inf for a hard contact).
 using PairStiffness = std::function<double(const ContactPair&)>;
 
-/// The energy a body may gain from its contacts of `pairs` within one step without anything
+/// The energy each body may gain from its contacts of `pairs` within one step without anything
 /// being wrong (J): the position correction of each overlap (at most ERP = 1: speed depth/step),
-/// the friction anchors' correction, and the spring energy ½ k depth² of soft layers.
-double ContactEnergyAllowance(int id, double mass, const std::vector<ContactPair>& pairs,
-                              const PairStiffness& stiffness, double step);
+/// the friction anchors' correction, and the spring energy ½ k depth² of soft layers. One pass
+/// over the pairs for every body at once; `masses` (kg) and `allowances` by body id.
+void ContactEnergyAllowances(const std::vector<ContactPair>& pairs,
+                             const std::vector<double>& masses, const PairStiffness& stiffness,
+                             double step, std::vector<double>* allowances);
 
 class StepGuard {
  public:
@@ -84,7 +86,8 @@ class StepGuard {
   struct {
     std::vector<char> pushed;  ///< per body: touched a kinematic body this step
     std::vector<BodyEnergySample> samples;
-    std::vector<int> checked;  ///< body id of each sample
+    std::vector<int> checked;                ///< body id of each sample
+    std::vector<double> masses, allowances;  ///< by body id
   } scratch_;
 };
 

@@ -100,10 +100,17 @@ TEST(ContactEnergyAllowanceTest, CorrectionAnchorAndSpringEnergy) {
   const double h = 0.001, m = 2.0;
   const double expected =
       0.5 * m * (0.002 / h) * (0.002 / h) + 0.5 * m * 0.05 * 0.05 + 0.5 * 1e4 * 0.002 * 0.002;
-  EXPECT_DOUBLE_EQ(ContactEnergyAllowance(4, m, {soft, other}, stiffness, h), expected);
-  EXPECT_DOUBLE_EQ(ContactEnergyAllowance(5, m, {soft, other}, stiffness, h),
-                   0.5 * m * (0.003 / h) * (0.003 / h));
-  EXPECT_EQ(ContactEnergyAllowance(6, m, {soft, other}, stiffness, h), 0.0);
+  std::vector<double> masses(7, m), allowances;
+  ContactEnergyAllowances({soft, other}, masses, stiffness, h, &allowances);
+  ASSERT_EQ(allowances.size(), 7u);
+  EXPECT_DOUBLE_EQ(allowances[4], expected);
+  EXPECT_DOUBLE_EQ(allowances[5], 0.5 * m * (0.003 / h) * (0.003 / h));
+  EXPECT_EQ(allowances[6], 0.0);
+  // the other side of both pairs (id 0) has both, with its own mass
+  masses[0] = 4.0;
+  ContactEnergyAllowances({soft, other}, masses, stiffness, h, &allowances);
+  // 0.5·4·(2² + 0.05²) + 0.5·1e4·0.002² + 0.5·4·3² = 8.005 + 0.02 + 18
+  EXPECT_NEAR(allowances[0], 26.025, 1e-12);
 }
 
 TEST(SleepIslandsTest, AnIslandSleepsOnlyWhenAllItsMembersAreReady) {
