@@ -51,24 +51,46 @@ struct SeparatingAxes {
   Vec3 edge_axis = Vec3::UnitZ();  ///< unit edge_a x edge_b
 };
 
-/// Gap between the projections of the boxes on unit `axis` (negative where they overlap).
-double Separation(const PlacedPrimitive& a, const PlacedPrimitive& b, const Vec3& axis) {
-  const Vec3 half_a = a.HalfSize();
-  const Vec3 half_b = b.HalfSize();
-  double reach = 0.0;
-  for (int i = 0; i < 3; ++i) {
-    reach += half_a[i] * std::abs(axis.dot(a.Axis(i))) + half_b[i] * std::abs(axis.dot(b.Axis(i)));
+/// The boxes' relative placement in the frame of box a: the centre offset on each box's axes and
+/// c(i, j) = a_i · b_j. The gaps along the 15 axes come from these (Gottschalk's OBB test) at a
+/// sixth of the cost of projecting both boxes on each world axis.
+struct RelativePlacement {
+  Vec3 half_a, half_b;
+  Vec3 offset_a, offset_b;  ///< (centre a − centre b) · a_i, · b_j
+  Mat3 c, abs_c;
+
+  RelativePlacement(const PlacedPrimitive& a, const PlacedPrimitive& b)
+      : half_a(a.HalfSize()), half_b(b.HalfSize()) {
+    const Vec3 offset = a.Center() - b.Center();
+    offset_a = a.X_WS.linear().transpose() * offset;
+    offset_b = b.X_WS.linear().transpose() * offset;
+    c = a.X_WS.linear().transpose() * b.X_WS.linear();
+    abs_c = c.cwiseAbs();
   }
-  return std::abs(axis.dot(a.Center() - b.Center())) - reach;
-}
+  /// gap along face axis `face` (0..2: a's axes, 3..5: b's), negative where they overlap (m)
+  double FaceGap(int face) const {
+    if (face < 3) return std::abs(offset_a[face]) - half_a[face] - half_b.dot(abs_c.row(face));
+    const int j = face - 3;
+    return std::abs(offset_b[j]) - half_a.dot(abs_c.col(j)) - half_b[j];
+  }
+  /// gap along a_i × b_j times its length `sine` (a_i × b_j = c(i1,j) a_i2 − c(i2,j) a_i1 for
+  /// the next axes i1, i2 of a; the signs of a's handedness fall under the absolute values)
+  double EdgeGapTimesSine(int i, int j) const {
+    const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+    const double distance = c(i1, j) * offset_a[i2] - c(i2, j) * offset_a[i1];
+    const double reach_a = half_a[i1] * abs_c(i2, j) + half_a[i2] * abs_c(i1, j);
+    const double reach_b = half_b[j1] * abs_c(i, j2) + half_b[j2] * abs_c(i, j1);
+    return std::abs(distance) - reach_a - reach_b;
+  }
+};
 
 /// Fills `axes`; false as soon as an axis separates the boxes by `tolerance` or more (then the
 /// boxes are at least that far apart).
 bool FindAxes(const PlacedPrimitive& a, const PlacedPrimitive& b, double tolerance,
               SeparatingAxes* axes) {
+  const RelativePlacement placement(a, b);
   for (int face = 0; face < 6; ++face) {
-    const Vec3 axis = face < 3 ? a.Axis(face) : b.Axis(face - 3);
-    const double separation = Separation(a, b, axis);
+    const double separation = placement.FaceGap(face);
     if (separation >= tolerance) return false;
     if (separation > axes->face_separation) {
       axes->face_separation = separation;
@@ -80,7 +102,7 @@ bool FindAxes(const PlacedPrimitive& a, const PlacedPrimitive& b, double toleran
       const Vec3 cross = a.Axis(i).cross(b.Axis(j));
       const double sine = cross.norm();
       if (sine < kParallelEdgeSine) continue;
-      const double separation = Separation(a, b, cross / sine);
+      const double separation = placement.EdgeGapTimesSine(i, j) / sine;
       if (separation >= tolerance) return false;
       if (separation > axes->edge_separation) {
         *axes = SeparatingAxes{axes->face_separation, axes->face, separation, i, j, cross / sine};
