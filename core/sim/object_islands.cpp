@@ -8,6 +8,7 @@
 #include <ode/ode.h>
 
 #include "core/sim/direct_solver.h"
+#include "core/sim/free_body_step.h"
 #include "core/sim/newton_solver.h"
 #include "core/sim/ode_contact_rows.h"
 #include "core/sim/ode_conversions.h"
@@ -58,8 +59,9 @@ struct ObjectIslands::Island {
 
   void Clear();
   void AddBody(int id, dBodyID body, dWorldID world, double step);
+  void AddWrench(size_t k, double step) const;
   /// for the kept contacts `members` (this island's)
-  void ApplyForces(const std::vector<Kept>& kept, double step) const;
+  void ReportFeedback(const std::vector<Kept>& kept) const;
 };
 
 ObjectIslands::ObjectIslands() : island_(std::make_unique<Island>()) {}
@@ -143,6 +145,8 @@ void ObjectIslands::Solve(dWorldID world, dJointGroupID group, double step) {
 void ObjectIslands::Restore() {
   for (dJointID joint : disabled_) dJointEnable(joint);
   disabled_.clear();
+  for (const SetAsideBody& aside : set_aside_) dBodyEnable(aside.body);  // (a failed step)
+  set_aside_.clear();
 }
 
 void ObjectIslands::Island::Clear() {
@@ -157,8 +161,8 @@ void ObjectIslands::Island::Clear() {
   centres.clear();
 }
 
-// a free body of the island: its mass, world inertia and the velocity ODE's step gives it
-// without the rows (applied forces, gravity, the gyroscopic torque: ode/src/step.cpp)
+// a free body of the island: its mass, world inertia and the velocity ODE's step would give it
+// without the rows (applied forces, gravity, the implicit gyroscopic torque: free_body_step.h)
 void ObjectIslands::Island::AddBody(int id, dBodyID body, dWorldID world, double step) {
   ids.push_back(id);
   odes.push_back(body);
@@ -176,11 +180,10 @@ void ObjectIslands::Island::AddBody(int id, dBodyID body, dWorldID world, double
     dWorldGetGravity(world, gravity);
     force += b.mass * ToVec3(gravity);
   }
-  const Vec3 omega = b.start.tail<3>();
-  const Vec3 torque = ToVec3(dBodyGetTorque(body)) - omega.cross(b.inertia * omega);
-  b.free_velocity = b.start;
-  b.free_velocity.head<3>() += step * force / b.mass;
-  b.free_velocity.tail<3>() += step * b.inertia.ldlt().solve(torque);
+  b.free_velocity.head<3>() = b.start.head<3>() + step * force / b.mass;
+  b.free_velocity.tail<3>() =
+      FreeAngularVelocity(b.inertia, b.start.tail<3>(), ToVec3(dBodyGetTorque(body)), step,
+                          dBodyGetGyroscopicMode(body) != 0);
   bodies.push_back(b);
   centres.push_back(ToVec3(dBodyGetPosition(body)));
 }
@@ -220,22 +223,70 @@ void ObjectIslands::SolveIsland(dWorldID world, dJointGroupID group, double step
   Finish(step, false);
 }
 
-// the solved island's forces into its bodies; its robot joints off for ODE's step (it only
-// integrates: Restore enables them again), and after a reduced step remembered for
-// SolvedReduced
+// the solved island's bodies set aside for StepSetAside (or, where ODE must integrate one, its
+// constraint wrench into its accumulators); its robot joints off for ODE's step (Restore enables
+// them again), and after a reduced step remembered for SolvedReduced
 void ObjectIslands::Finish(double step, bool reduced) {
   Island& island = *island_;
-  island.ApplyForces(kept_, step);
   for (size_t j : island.joint_members) {
     dJointDisable(joints_[j].joint);
     disabled_.push_back(joints_[j].joint);
     if (reduced) reduced_joints_.push_back(joints_[j].joint);
+  }
+  island.ReportFeedback(kept_);
+  for (size_t k = 0; k < island.bodies.size(); ++k) {
+    if (StepsItself(island.odes[k])) {
+      set_aside_.push_back({island.odes[k], island.result.velocity[k]});
+    } else {
+      island.AddWrench(k, step);
+    }
   }
   if (!reduced) return;
   for (int k : island.basis.order()) {
     const int e = island.child_edge[k];
     if (e >= 0) reduced_tree_.push_back({island.edge_joints[e], island.edges[e].first == k});
   }
+}
+
+// a body integrated here rather than by ODE: in finite rotation mode about no axis, undamped
+// (what free_body_step.h replicates), enabled and held by no enabled ODE joint (ODE's step
+// would enable it through one, and step it)
+bool ObjectIslands::StepsItself(dBodyID body) {
+  dVector3 axis;
+  dBodyGetFiniteRotationAxis(body, axis);
+  if (dBodyGetFiniteRotationMode(body) == 0 || axis[0] != 0.0 || axis[1] != 0.0 || axis[2] != 0.0 ||
+      dBodyGetLinearDamping(body) != 0.0 || dBodyGetAngularDamping(body) != 0.0 ||
+      dBodyIsEnabled(body) == 0) {
+    return false;
+  }
+  for (int j = 0; j < dBodyGetNumJoints(body); ++j) {
+    if (dJointIsEnabled(dBodyGetJoint(body, j)) != 0) return false;
+  }
+  return true;
+}
+
+void ObjectIslands::SetAside() {
+  for (const SetAsideBody& aside : set_aside_) dBodyDisable(aside.body);
+}
+
+void ObjectIslands::StepSetAside(double step) {
+  for (const SetAsideBody& aside : set_aside_) {
+    dBodyID body = aside.body;
+    const dReal* q = dBodyGetQuaternion(body);
+    const FreeBodyPose pose = StepFreeBody(ToVec3(dBodyGetPosition(body)), {q[0], q[1], q[2], q[3]},
+                                           aside.velocity.head<3>(), aside.velocity.tail<3>(),
+                                           dBodyGetMaxAngularSpeed(body), step);
+    dBodySetPosition(body, pose.position.x(), pose.position.y(), pose.position.z());
+    const dQuaternion rotation = {pose.rotation[0], pose.rotation[1], pose.rotation[2],
+                                  pose.rotation[3]};
+    dBodySetQuaternion(body, rotation);
+    dBodySetLinearVel(body, aside.velocity[0], aside.velocity[1], aside.velocity[2]);
+    dBodySetAngularVel(body, pose.omega.x(), pose.omega.y(), pose.omega.z());
+    dBodySetForce(body, 0.0, 0.0, 0.0);  // (as ODE's step leaves its bodies)
+    dBodySetTorque(body, 0.0, 0.0, 0.0);
+    dBodyEnable(body);
+  }
+  set_aside_.clear();
 }
 
 // the robot island in its generalized velocities (reduced_basis.h): a few Newton steps, then the
@@ -425,19 +476,20 @@ void ObjectIslands::HandBack(dWorldID world, dJointGroupID group) {
   }
 }
 
-// each body's constraint wrench M (v' − v_free) / h into its accumulators, so that ODE's step
+// body k's constraint wrench M (v' − v_free) / h into its accumulators, so that ODE's step
 // lands on the solver's velocity (λ itself is as sensitive to v' as 1 / cfm: a velocity error of
-// 1e-12 m/s is 1e-3 N on a hard row, and h M⁻¹ Σ Jᵀλ would not land on v'); the kept contacts'
-// feedback as ODE reports it, from λ
-void ObjectIslands::Island::ApplyForces(const std::vector<Kept>& kept, double step) const {
-  for (size_t k = 0; k < bodies.size(); ++k) {
-    const NewtonBody& body = bodies[k];
-    const Vec6 change = result.velocity[k] - body.free_velocity;
-    const Vec3 force = body.mass * change.head<3>() / step;
-    const Vec3 torque = body.inertia * change.tail<3>() / step;
-    dBodyAddForce(odes[k], force.x(), force.y(), force.z());
-    dBodyAddTorque(odes[k], torque.x(), torque.y(), torque.z());
-  }
+// 1e-12 m/s is 1e-3 N on a hard row, and h M⁻¹ Σ Jᵀλ would not land on v')
+void ObjectIslands::Island::AddWrench(size_t k, double step) const {
+  const NewtonBody& body = bodies[k];
+  const Vec6 change = result.velocity[k] - body.free_velocity;
+  const Vec3 force = body.mass * change.head<3>() / step;
+  const Vec3 torque = body.inertia * change.tail<3>() / step;
+  dBodyAddForce(odes[k], force.x(), force.y(), force.z());
+  dBodyAddTorque(odes[k], torque.x(), torque.y(), torque.z());
+}
+
+// the kept contacts' feedback as ODE reports it, from λ
+void ObjectIslands::Island::ReportFeedback(const std::vector<Kept>& kept) const {
   for (size_t m = 0; m < members.size(); ++m) {
     dJointFeedback* feedback = kept[members[m]].feedback;
     if (feedback == nullptr) continue;

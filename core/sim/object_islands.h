@@ -9,17 +9,19 @@
 // the island.
 //
 // - The contact joints of such an island are kept as dContacts instead of being created in ODE.
-//   After the solve (newton_solver.h) every body gets its constraint wrench M (v' − v_free) / h
-//   (= Σ Jᵀλ at the answer) added to its force accumulators, so ODE's step integrates v' and the
-//   positions just as when its own solver has found λ: one integrator, one place where gravity,
-//   the gyroscopic torque and finite rotation are applied.
+//   After the solve (newton_solver.h) the island's bodies are set aside: disabled for ODE's step,
+//   which steps only the rest of the world, then integrated at the solver's velocity v' as ODE's
+//   step integrates a body (free_body_step.h: the pose to the last bit) and enabled again. Their
+//   free velocity takes ODE's implicit gyroscopic term. (A body ODE must integrate itself, one it
+//   would step through an enabled joint or with damping: StepsItself, gets its constraint wrench
+//   M (v' − v_free) / h in its force accumulators instead, so that ODE's step lands on v'.)
 // - The rows are ODE's own (ContactJointRows: ode/src/joints/contact.cpp, getInfo2, including
 //   the swap of a joint whose first body is the fixed world), so the answer is dWorldStep's to the
 //   solver's tolerance where ODE's Dantzig solver is exact (newton_solver.h: where friction
 //   saturates, this answer is the consistent one).
 // - A robot's joints and motors (ode_robot.h) are kept too: their rows are ODE's
 //   (ode_joint_rows.h), and when the island's solve converges the joints are disabled for ODE's
-//   step, which then only integrates the bodies, and enabled again after it (Restore).
+//   step, and enabled again after it (Restore); the bodies are set aside as above.
 // - An island with a body held by another persistent ODE joint (a world joint, the mouse
 //   spring), with a joint outside what ode_joint_rows.h replicates, or whose solve does not
 //   converge gets its ODE joints as before, and ODE's solver takes it in the same step. (Under
@@ -146,7 +148,14 @@ class ObjectIslands {
   /// contact joints in `group` (and keeps its joints), unless it has more than
   /// kMostHandBackRows rows (then Gauss–Seidel sweeps solve it: row_relaxation.h).
   void Solve(dxWorld* world, dxJointGroup* group, double step);
-  /// After ODE's step (or a failure before it): the joints Solve disabled are enabled again.
+  /// Just before ODE's step: the bodies of the islands Solve solved are disabled in ODE, which
+  /// then steps only the rest of the world (StepsItself says which: nearly all).
+  void SetAside();
+  /// After ODE's step: those bodies integrated at the solver's velocity as ODE's step would
+  /// (free_body_step.h, to the last bit of the pose), their accumulators cleared, and enabled.
+  void StepSetAside(double step);
+  /// After ODE's step (or a failure before it): the joints Solve disabled are enabled again,
+  /// and bodies still set aside (a failed step: not integrated).
   void Restore();
   const Statistics& statistics() const { return statistics_; }
 
@@ -175,6 +184,7 @@ class ObjectIslands {
   void AddTreeEdge(dxJoint* joint, int first, int second);
   bool SolveReduced(dxWorld* world, double step);
   void Finish(double step, bool reduced);
+  static bool StepsItself(dxBody* body);
   void HandBack(dxWorld* world, dxJointGroup* group);
 
   std::vector<int> parent_;
@@ -182,6 +192,11 @@ class ObjectIslands {
   std::vector<Kept> kept_;
   std::vector<KeptJoint> joints_;
   std::vector<dxJoint*> disabled_;
+  struct SetAsideBody {
+    dxBody* body;
+    Vec6 velocity;  ///< the solver's
+  };
+  std::vector<SetAsideBody> set_aside_;
   std::vector<int> local_;  ///< world id -> index in the island being solved, or -1
   std::unique_ptr<Island> island_;
   Statistics statistics_;

@@ -438,10 +438,13 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
       // runs) share the generator, so their quick steps take turns
       std::lock_guard<std::mutex> lock(QuickStepMutex());
       dRandSetSeed(QuickStepSeed(time_));
+      islands_.SetAside();
       dWorldQuickStep(ode_world_.get(), step);
     } else {
+      islands_.SetAside();
       dWorldStep(ode_world_.get(), step);
     }
+    islands_.StepSetAside(step);  // (the bodies of the islands Lamina solved)
   } catch (const std::exception& error) {
     statistics_.error = error.what();
     result = IntegrateResult::kOdeError;
