@@ -63,8 +63,8 @@ void AddPairAllowance(const ContactPair& pair, double mass, double k, double ste
 }  // namespace
 
 // (a body's sum in the pairs' order, as one pass per body had it: the same to the last bit, in
-// time linear in the pairs rather than bodies × pairs, 0.13 M pair visits a step on a 210-box
-// pyramid)
+// time linear in the pairs rather than bodies × pairs: on the 210-box pyramid, about 400 pairs,
+// 84,000 pair visits a step before)
 void ContactEnergyAllowances(const std::vector<ContactPair>& pairs,
                              const std::vector<double>& masses, const PairStiffness& stiffness,
                              double step, std::vector<double>* allowances) {
