@@ -3,20 +3,22 @@
 
 #include <cmath>
 
+#include <Eigen/Cholesky>
 #include <Eigen/LU>
 
 namespace lamina::core {
 
 Vec3 FreeAngularVelocity(const Mat3& inertia, const Vec3& omega, const Vec3& torque, double step,
                          bool gyroscopic) {
-  const Vec3 pushed = step * inertia.ldlt().solve(torque);
+  // (no solve for the usual zero torque)
+  const Vec3 pushed = torque.isZero(0.0) ? Vec3::Zero() : Vec3(step * inertia.ldlt().solve(torque));
   if (!gyroscopic) return omega + pushed;
   const Vec3 momentum = inertia * omega;
   Mat3 cross;  // [L]×
   cross << 0.0, -momentum.z(), momentum.y(), momentum.z(), 0.0, -momentum.x(), -momentum.y(),
       momentum.x(), 0.0;
-  // (never singular: its symmetric part is I)
-  return (inertia - step * cross).partialPivLu().solve(momentum) + pushed;
+  // the closed-form inverse, as ODE's dInvertMatrix3 (never singular: its symmetric part is I)
+  return (inertia - step * cross).inverse() * momentum + pushed;
 }
 
 namespace {
