@@ -2,7 +2,7 @@
 // ODE's integration of one free rigid body over a step, for the bodies whose velocity Lamina's
 // own solvers found (object_islands.h): their island is integrated here instead of in
 // dWorldStep, which would make each of them an island of its own and cost about 2,000
-// instructions a body in ODE's threading-job machinery (a tenth of a 10-box stack's step).
+// instructions a body in ODE's threading-job machinery (7 % of a 10-box stack's step).
 //
 // - FreeAngularVelocity: the angular velocity without the constraint rows, with ODE's implicit
 //   gyroscopic term (Lacoursière 2006, as dxStepIsland_Stage0_Bodies in ode/src/step.cpp):

@@ -430,6 +430,7 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
     dWorldSetGravity(ode_world_.get(), gravity.x(), gravity.y(), gravity.z());
     BuildConstraints(step);
     PrepareJointStabilization();
+    islands_.SetAside();  // (the bodies of the islands Lamina solved: StepSetAside steps them)
     if (world_.settings.solver == SolverType::kQuickStep) {
       dWorldSetQuickStepNumIterations(ode_world_.get(), world_.settings.quick_step_iterations);
       // QuickStep shuffles its rows with ODE's process-wide random generator: seeded from the
@@ -438,13 +439,11 @@ Simulator::IntegrateResult Simulator::Integrate(double step) {
       // runs) share the generator, so their quick steps take turns
       std::lock_guard<std::mutex> lock(QuickStepMutex());
       dRandSetSeed(QuickStepSeed(time_));
-      islands_.SetAside();
       dWorldQuickStep(ode_world_.get(), step);
     } else {
-      islands_.SetAside();
       dWorldStep(ode_world_.get(), step);
     }
-    islands_.StepSetAside(step);  // (the bodies of the islands Lamina solved)
+    islands_.StepSetAside(step);
   } catch (const std::exception& error) {
     statistics_.error = error.what();
     result = IntegrateResult::kOdeError;

@@ -105,15 +105,15 @@ TEST_F(FreeBodyStepTest, TheImplicitGyroscopicVelocityIsOdesToRounding) {
   dBodyAddTorque(body_, 0.02, -0.01, 0.03);
   for (double step : {1e-3, 0.05}) {
     const Vec3 omega = ToVec3(dBodyGetAngularVel(body_));
-    const Vec3 expected =
-        FreeAngularVelocity(WorldInertia(), omega, Vec3(0.02, -0.01, 0.03), step, true);
+    const Mat3 inertia = WorldInertia();
+    const Vec3 torque(0.02, -0.01, 0.03);
+    const Vec3 expected = FreeAngularVelocity(inertia, omega, torque, step, true);
     dWorldStep(world_, step);
     const Vec3 stepped = ToVec3(dBodyGetAngularVel(body_));
     EXPECT_LT((stepped - expected).norm(), 1e-13 * omega.norm()) << step;
-    // and not the explicit term −ω × I ω: the two differ by O(h²) (the step's ω changed)
-    const Mat3 inertia = WorldInertia();  // (after the step: only the size matters here)
+    // and not the explicit term −ω × I ω, which differs from it by O(h²)
     const Vec3 explicit_term =
-        omega + step * inertia.inverse() * (Vec3(0.02, -0.01, 0.03) - omega.cross(inertia * omega));
+        omega + step * inertia.inverse() * (torque - omega.cross(inertia * omega));
     EXPECT_GT((stepped - explicit_term).norm(), 1e-8) << step;
     dBodyAddTorque(body_, 0.02, -0.01, 0.03);
   }
