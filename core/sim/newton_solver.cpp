@@ -92,7 +92,6 @@ class NewtonSolver::BodySpace {
 
   Eigen::Index size() const { return 6 * static_cast<Eigen::Index>(bodies_.size()); }
   void Start(VecX* v) {
-    s_.SetProfile(bodies_.size(), rows_);
     v->resize(size());
     s_.v_free_.resize(size());
     for (size_t k = 0; k < bodies_.size(); ++k) {
@@ -128,6 +127,7 @@ class NewtonSolver::BodySpace {
     return 0.5 * newton_detail::MassProduct(bodies_, v - s_.v_free_, v - s_.v_free_);
   }
   void BeginHessian() {
+    s_.SetProfile(bodies_.size(), rows_);  // (here: a kept factorization needs none)
     s_.cholesky_.Reset(s_.lowest_body_);
     for (size_t k = 0; k < bodies_.size(); ++k) {
       ProfileCholesky::Block& diagonal =
@@ -159,6 +159,8 @@ class NewtonSolver::BodySpace {
     return std::sqrt(largest);
   }
   Vec6 BodyVelocity(size_t k, const VecX& v) const { return v.segment<6>(6 * k); }
+  // the bodies, for a factorization kept from solve to solve
+  const std::vector<NewtonBody>* KeptBodies() const { return &bodies_; }
 
  private:
   NewtonSolver& s_;
@@ -270,6 +272,8 @@ class NewtonSolver::ReducedSpace {
     return basis_.Velocity(static_cast<int>(k), u);
   }
 
+  const std::vector<NewtonBody>* KeptBodies() const { return nullptr; }  // (not kept)
+
  private:
   // the group's block into the Hessian's lower triangle (its columns ascend)
   void Flush() {
@@ -294,7 +298,15 @@ class NewtonSolver::ReducedSpace {
   size_t group_row_ = 0;  ///< its first row
 };
 
-NewtonSolver::NewtonSolver() : reduced_(std::make_unique<Reduced>()) {}
+struct NewtonSolver::Kept {
+  unsigned long long island = 0;  ///< 0: nothing kept
+  std::vector<NewtonBody> bodies;
+  std::vector<NewtonRow> rows;
+  std::vector<signed char> regime;
+};
+
+NewtonSolver::NewtonSolver()
+    : reduced_(std::make_unique<Reduced>()), kept_(std::make_unique<Kept>()) {}
 NewtonSolver::~NewtonSolver() = default;
 
 // the first block column of each body's block row: the lowest body a row couples it with (the
@@ -308,6 +320,59 @@ void NewtonSolver::SetProfile(size_t bodies, const std::vector<NewtonRow>& rows)
     const int high = std::max(row.a, row.b), low = std::min(row.a, row.b);
     lowest[high] = std::min(lowest[high], low);
   }
+}
+
+namespace {
+
+bool NearBody(const NewtonBody& a, const NewtonBody& b, double tolerance) {
+  return std::abs(a.mass - b.mass) <= tolerance * a.mass &&
+         (a.inertia - b.inertia).cwiseAbs().maxCoeff() <= tolerance * a.inertia.trace();
+}
+
+bool NearRow(const NewtonRow& a, const NewtonRow& b, double tolerance) {
+  return a.a == b.a && a.b == b.b && std::abs(a.cfm - b.cfm) <= tolerance * a.cfm &&
+         (a.ja - b.ja).cwiseAbs().maxCoeff() <= tolerance &&
+         (a.jb - b.jb).cwiseAbs().maxCoeff() <= tolerance;
+}
+
+}  // namespace
+
+// whether the kept factorization is that of the island of `options` (not 0) with these bodies
+// and rows, to its tolerance
+bool NewtonSolver::KeptFits(const std::vector<NewtonBody>& bodies,
+                            const std::vector<NewtonRow>& rows,
+                            const NewtonOptions& options) const {
+  const Kept& kept = *kept_;
+  const double tolerance = options.kept_tolerance;
+  if (options.island == 0 || kept.island != options.island || kept.bodies.size() != bodies.size() ||
+      kept.rows.size() != rows.size()) {
+    return false;
+  }
+  for (size_t k = 0; k < bodies.size(); ++k) {
+    if (!NearBody(bodies[k], kept.bodies[k], tolerance)) return false;
+  }
+  for (size_t i = 0; i < rows.size(); ++i) {
+    if (!NearRow(rows[i], kept.rows[i], tolerance)) return false;
+  }
+  return true;
+}
+
+// after a solve: a factorization formed in it is kept with what it was formed from (the rows do
+// not change within a solve), one kept before stays as it was, and nothing is kept after a solve
+// that did not converge
+void NewtonSolver::KeepFactor(const std::vector<NewtonBody>* bodies,
+                              const std::vector<NewtonRow>& rows, unsigned long long island,
+                              bool converged) {
+  Kept& kept = *kept_;
+  if (bodies == nullptr || island == 0 || !converged || !factored_) {
+    kept.island = 0;
+    return;
+  }
+  if (stale_) return;
+  kept.island = island;
+  kept.bodies = *bodies;
+  kept.rows = rows;
+  kept.regime = regime_;
 }
 
 double NewtonSolver::RowForce(size_t i, double x) const {
@@ -364,6 +429,8 @@ bool NewtonSolver::Factor(Space& space, size_t rows) {
     for (size_t i = 0; i < rows && same; ++i) same = Regime(i, x_[i]) == regime_[i];
     if (same) return true;
   }
+  stale_ = false;
+  ++factorizations_;
   space.BeginHessian();
   for (size_t i = 0; i < rows; ++i) {
     regime_[i] = Regime(i, x_[i]);
@@ -443,6 +510,7 @@ double NewtonSolver::LineSearch(const Space& space, size_t rows) {
 template <class Space>
 bool NewtonSolver::NewtonSteps(Space& space, const std::vector<NewtonRow>& rows,
                                const NewtonOptions& options, int* budget) {
+  chord_size_ = kInf;
   while (*budget > 0) {
     RowOffsets(space, rows);
     Gradient(space, rows.size(), v_);
@@ -452,6 +520,11 @@ bool NewtonSolver::NewtonSteps(Space& space, const std::vector<NewtonRow>& rows,
     d_m_d_ = space.MassProduct(direction_, direction_);
     const double size = space.StepSize(direction_);
     if (size <= options.velocity_tolerance) return true;
+    if (stale_ && size > kChordContraction * chord_size_) {
+      factored_ = false;  // the kept matrix is too far off: the Hessian, and this step again
+      continue;
+    }
+    chord_size_ = size;
     d_m_offset_ = space.MassOffset(direction_, v_);
     const double alpha = LineSearch(space, rows.size());
     --*budget;
@@ -462,7 +535,7 @@ bool NewtonSolver::NewtonSteps(Space& space, const std::vector<NewtonRow>& rows,
     // next Newton step would be (1 − α) d
     bool same = true;
     for (size_t i = 0; i < rows.size() && same; ++i) same = Regime(i, x_[i] - q_[i]) == regime_[i];
-    if (same && std::abs(1.0 - alpha) * size <= options.velocity_tolerance) {
+    if (same && !stale_ && std::abs(1.0 - alpha) * size <= options.velocity_tolerance) {
       return true;
     }
   }
@@ -519,8 +592,12 @@ bool NewtonSolver::SolveIn(Space* space, size_t bodies, const std::vector<Newton
   cfm_.resize(m);
   regime_.assign(m, 0);
   for (size_t i = 0; i < m; ++i) cfm_[i] = rows[i].cfm;
-  factored_ = false;
   offsets_current_ = false;
+  factorizations_ = 0;
+  const std::vector<NewtonBody>* kept_bodies = space->KeptBodies();
+  stale_ = kept_bodies != nullptr && KeptFits(*kept_bodies, rows, options);
+  if (stale_) regime_ = kept_->regime;
+  factored_ = stale_;
   // the first round's friction bounds from the normal forces at the free velocity (with gravity
   // on every contact it loads), the start where the step began
   for (size_t i = 0; i < m; ++i) x_[i] = rows[i].rhs - space->FreeRowVelocity(i);
@@ -539,6 +616,8 @@ bool NewtonSolver::SolveIn(Space* space, size_t bodies, const std::vector<Newton
     }
   }
   result->iterations = options.max_iterations - budget;
+  result->factorizations = factorizations_;
+  KeepFactor(kept_bodies, rows, options.island, result->converged);
   result->velocity.resize(bodies);
   for (size_t k = 0; k < bodies; ++k) result->velocity[k] = space->BodyVelocity(k, v_);
   result->force.resize(m);

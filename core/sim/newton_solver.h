@@ -25,6 +25,16 @@
 // A Newton step whose rows inside their bounds are those of the factorization in hand (a new
 // round of friction bounds, most often) keeps it: the matrix is the same.
 //
+// Kept from step to step (NewtonOptions::island): an island solved again with the same bodies
+// and rows, none of whose Jacobians, CFMs, masses or inertias moved by more than
+// kKeptFactorTolerance since its Hessian was factored (a resting stack, a pile at rest), starts
+// from that factorization instead of forming and factoring the Hessian again. Its steps are then
+// chord steps (the direction from a matrix a little off the Hessian): still descent directions,
+// and the line search is the same, but a full step no longer lands on the minimum, so the solve
+// goes on until a step is below the tolerance, as far as each chord step shrinks to at most
+// kChordContraction of the one before; when one does not, the Hessian is formed and factored
+// as without. The answer is the same minimum to the tolerance; only the way there differs.
+//
 // Warm start: Newton starts from `start` (the bodies' velocity before the step): a resting or
 // steadily moving island keeps the rows it had, and the first step lands on the answer. The
 // first round's friction bounds come from the normal forces at the free velocity, where gravity
@@ -66,9 +76,19 @@ struct NewtonRow {
   int normal = -1;         ///< the normal row of a friction row (ODE's findex), or -1
 };
 
+/// How far a Jacobian entry (1 or m), and relatively a CFM, mass or inertia, may move from those
+/// of the kept factorization (above).
+inline constexpr double kKeptFactorTolerance = 1e-10;
+/// A chord step at most this fraction of the one before, or the Hessian is factored again.
+inline constexpr double kChordContraction = 0.25;
+
 struct NewtonOptions {
   int max_iterations = 100;  ///< Newton steps in all rounds together
-  int max_rounds = 100;      ///< rounds of friction bounds (each takes a Newton step or more)
+  /// the caller's key of the island (0: none): a solve with the key of the last converged solve
+  /// may start from its factorization (above); only for the body space (Solve)
+  unsigned long long island = 0;
+  double kept_tolerance = kKeptFactorTolerance;  ///< (for tests)
+  int max_rounds = 100;  ///< rounds of friction bounds (each takes a Newton step or more)
   double velocity_tolerance = 1e-12;  ///< a Newton step smaller than this on every body (m/s,
                                       ///< √(dᵀ M d / m) per body) ends
   double bound_tolerance = 1e-9;      ///< relative change of a friction force that needs a round
@@ -83,6 +103,7 @@ struct NewtonResult {
   std::vector<Vec6> velocity;  ///< v' per body
   std::vector<double> force;   ///< λ per row (N or N·m)
   int iterations = 0;          ///< Newton steps taken
+  int factorizations = 0;      ///< Hessians formed and factored (0: the kept one served)
   int rounds = 0;              ///< rounds of friction bounds
   bool converged = false;      ///< false: the last iterate, not the answer (the caller falls back)
 };
@@ -121,6 +142,7 @@ class NewtonSolver {
   class BodySpace;     ///< every body's velocity, the Hessian in its block profile
   class ReducedSpace;  ///< a ReducedBasis' u (reduced_system.h)
   struct Reduced;      ///< the reduced space's system and factorization
+  struct Kept;         ///< what the kept factorization was formed from
 
   template <class Space>
   bool SolveIn(Space* space, size_t bodies, const std::vector<NewtonRow>& rows, double step,
@@ -145,6 +167,10 @@ class NewtonSolver {
   template <class Space>
   bool NewtonSteps(Space& space, const std::vector<NewtonRow>& rows, const NewtonOptions& options,
                    int* budget);
+  bool KeptFits(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
+                const NewtonOptions& options) const;
+  void KeepFactor(const std::vector<NewtonBody>* bodies, const std::vector<NewtonRow>& rows,
+                  unsigned long long island, bool converged);
   template <class Space>
   bool BoundsSettled(const Space& space, const std::vector<NewtonRow>& rows, double tolerance,
                      bool damped);
@@ -160,7 +186,11 @@ class NewtonSolver {
   double d_m_d_ = 0.0, d_m_offset_ = 0.0;
   bool factored_ = false;             ///< the factorization in hand is that of regime_
   bool offsets_current_ = false;      ///< x_ is c − J v_ as RowOffsets computes it
+  bool stale_ = false;                ///< the factorization in hand is a kept one (chord steps)
+  double chord_size_ = 0.0;           ///< the last chord step's size
+  int factorizations_ = 0;            ///< in this solve
   std::unique_ptr<Reduced> reduced_;  ///< the reduced space's
+  std::unique_ptr<Kept> kept_;
 };
 
 }  // namespace lamina::core

@@ -310,6 +310,7 @@ bool ObjectIslands::SolveReduced(dWorldID world, double step) {
     converged = island.solver.SolveReduced(island.bodies, island.rows, island.basis, step, options,
                                            &island.result);
     statistics_.iterations += island.result.iterations;
+    statistics_.factorizations += island.result.factorizations;
     RecordNewton(&backoff, converged);
   }
   if (!converged) {
@@ -387,10 +388,21 @@ bool ObjectIslands::SolveNewton(int max_iterations, double step) {
   island.newton_tried = true;
   NewtonOptions options;
   if (max_iterations > 0) options.max_iterations = max_iterations;
+  // (a robot's island gets one or two Newton steps: no chord steps there)
+  if (island.joint_members.empty()) options.island = IslandKey(island.ids);
   const bool converged =
       island.solver.Solve(island.bodies, island.rows, step, options, &island.result);
   statistics_.iterations += island.result.iterations;
+  statistics_.factorizations += island.result.factorizations;
   return converged;
+}
+
+// the island's bodies (world ids, in order) as a key for the Newton solver's kept factorization
+// (newton_solver.h): FNV-1a, never 0
+unsigned long long ObjectIslands::IslandKey(const std::vector<int>& ids) {
+  unsigned long long key = 14695981039346656037ull;
+  for (int id : ids) key = (key ^ static_cast<unsigned>(id)) * 1099511628211ull;
+  return key == 0 ? 1 : key;
 }
 
 // The Newton steps an island gets (not a large robot's: SolveLargeRobot): the solver's own budget

@@ -52,6 +52,7 @@ class ObjectIslands {
     /// (kRelaxSweeps)
     long long unconverged = 0;
     long long iterations = 0;         ///< Newton steps in all
+    long long factorizations = 0;     ///< Hessians the Newton solver factored (newton_solver.h)
     long long direct_islands = 0;     ///< islands the direct solve was given
     long long direct_fallbacks = 0;   ///< of those, not settled (then ODE's)
     long long reduced_islands = 0;    ///< robot islands given the reduced step
@@ -169,6 +170,7 @@ class ObjectIslands {
   bool SolveDirectly(double step);
   bool SolveNewton(int max_iterations, double step);
   int NewtonBudget() const;
+  static unsigned long long IslandKey(const std::vector<int>& ids);
   bool SolveLargeRobot(double step);
   /// The count of steps to go straight to the direct solve, and of failed Newton steps in a
   /// row, of a large robot (keyed by its first kept joint).

@@ -558,6 +558,7 @@ void Simulator::BuildConstraints(double step) {
     statistics_.newton_unconverged += after.unconverged - before.unconverged;
     islands_unconverged_ = after.unconverged > before.unconverged;
     statistics_.newton_iterations += after.iterations - before.iterations;
+    statistics_.newton_factorizations += after.factorizations - before.factorizations;
     statistics_.reduced_islands += after.reduced_islands - before.reduced_islands;
     statistics_.reduced_fallbacks += after.reduced_fallbacks - before.reduced_fallbacks;
   }

@@ -75,6 +75,9 @@ struct SimStatistics {
   /// unreliable"
   long newton_unconverged = 0;
   long newton_iterations = 0;  ///< Newton steps in all
+  /// Hessians factored for them (fewer than Newton steps where a kept one served:
+  /// newton_solver.h)
+  long newton_factorizations = 0;
   /// robot islands solved directly (direct_solver.h): the exact solver's robots, and under the
   /// Newton solver the islands with a robot of at least Simulator::kDirectRobotBodies bodies
   /// that one Newton step did not settle (object_islands.h)

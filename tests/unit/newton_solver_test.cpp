@@ -122,5 +122,140 @@ TEST(NewtonSolverTest, AnIslandWithoutRowsKeepsItsFreeVelocity) {
   EXPECT_LE((result.velocity[0] - bodies[0].free_velocity).norm(), 1e-14);
 }
 
+// ---- the factorization kept from solve to solve (newton_solver.h) ---------------------------
+
+// a stack of three boxes of 1, 3 and 10 kg on the ground, 10 ms steps; `push` along x on the top
+// box's start gives the next step a correction to make (1e-5 m/s: every friction row stays
+// inside its bound from the start, λ = push / cfm = 10 N < μ N, so the rows inside their bounds
+// are those of the kept factorization; a larger push saturates them at the start, and the
+// solver factors the Hessian of the rows then inside, as for any island)
+struct KeptStack {
+  static constexpr double kStep = 0.01;
+  std::vector<NewtonBody> bodies;
+  std::vector<NewtonRow> rows;
+
+  KeptStack() {
+    const double masses[3] = {1.0, 3.0, 10.0};
+    for (int k = 0; k < 3; ++k) {
+      bodies.push_back(IslandBody(masses[k], Vec6::Zero(), kStep));
+      AddFace(&rows, k, k - 1, 0.5);
+    }
+  }
+  // the next step's island: the answer as the start, the top box pushed, every Jacobian entry
+  // moved by `shift` and every mass and inertia scaled by `scale`
+  void Next(const NewtonResult& answer, double push, double shift, double scale = 1.0) {
+    for (size_t k = 0; k < bodies.size(); ++k) {
+      NewtonBody& body = bodies[k];
+      body.mass *= scale;
+      body.inertia *= scale;
+      body.start = answer.velocity[k];
+      body.free_velocity = body.start;
+      body.free_velocity(2) -= test::kIslandGravity * kStep;
+    }
+    bodies.back().start(0) += push;
+    bodies.back().free_velocity(0) += push;
+    for (NewtonRow& row : rows) {
+      row.ja.array() += shift;
+      row.jb.array() -= shift;
+    }
+  }
+};
+
+NewtonOptions KeyedOptions(unsigned long long island) {
+  NewtonOptions options;
+  options.island = island;
+  return options;
+}
+
+// The same island a step later, its rows moved within the tolerance: no factorization, and the
+// answer of a solver that factors (velocities to 1e-12 m/s; the forces then agree to
+// cfm⁻¹ · 1e-12 = 1e-3 N on the hard rows, of a normal force of about 34 N per contact under
+// the bottom box)
+TEST(NewtonSolverTest, AKeptFactorizationServesTheSameIslandAStepLaterWithTheSameAnswer) {
+  KeptStack stack;
+  NewtonSolver kept, fresh;
+  NewtonResult first, again, check;
+  ASSERT_TRUE(kept.Solve(stack.bodies, stack.rows, KeptStack::kStep, KeyedOptions(7), &first));
+  EXPECT_GE(first.factorizations, 1);
+  stack.Next(first, 1e-5, 3e-11);
+  ASSERT_TRUE(kept.Solve(stack.bodies, stack.rows, KeptStack::kStep, KeyedOptions(7), &again));
+  ASSERT_TRUE(fresh.Solve(stack.bodies, stack.rows, KeptStack::kStep, {}, &check));
+  EXPECT_EQ(again.factorizations, 0);
+  EXPECT_GE(check.factorizations, 1);
+  EXPECT_GE(again.iterations, 1);  // the push is corrected by chord steps
+  for (size_t k = 0; k < stack.bodies.size(); ++k) {
+    EXPECT_LE((again.velocity[k] - check.velocity[k]).cwiseAbs().maxCoeff(), 1e-12) << k;
+  }
+  EXPECT_NEAR(NormalSum(stack.rows, again, 0, -1), NormalSum(stack.rows, check, 0, -1), 1e-2);
+  // friction held the push, to its rows' give (cfm 1e-6 (m/s)/N times at most 10 N)
+  EXPECT_NEAR(again.velocity[2](0), 0.0, 1e-5);
+}
+
+// Anything else factors: another island's key, no key, rows or masses moved beyond the
+// tolerance, and a solve after one that did not converge
+TEST(NewtonSolverTest, AFactorizationIsKeptOnlyForTheSameIslandWithinTheTolerance) {
+  auto factorizations_after = [](auto change, unsigned long long key = 7) {
+    KeptStack stack;
+    NewtonSolver solver;
+    NewtonResult first, second;
+    EXPECT_TRUE(solver.Solve(stack.bodies, stack.rows, KeptStack::kStep, KeyedOptions(7), &first));
+    NewtonOptions options = KeyedOptions(key);
+    change(&stack, &solver, &first, &options);
+    EXPECT_TRUE(solver.Solve(stack.bodies, stack.rows, KeptStack::kStep, options, &second));
+    return second.factorizations;
+  };
+  auto nothing = [](KeptStack* stack, NewtonSolver*, NewtonResult* first, NewtonOptions*) {
+    stack->Next(*first, 0.0, 0.0);
+  };
+  EXPECT_EQ(factorizations_after(nothing), 0);  // (the control)
+  EXPECT_GE(factorizations_after(nothing, 8), 1);
+  EXPECT_GE(factorizations_after(nothing, 0), 1);
+  EXPECT_GE(factorizations_after([](KeptStack* stack, NewtonSolver*, NewtonResult* first,
+                                    NewtonOptions*) { stack->Next(*first, 0.0, 3e-10); }),
+            1);
+  EXPECT_GE(factorizations_after([](KeptStack* stack, NewtonSolver*, NewtonResult* first,
+                                    NewtonOptions*) { stack->Next(*first, 0.0, 0.0, 1.0 + 1e-9); }),
+            1);
+  EXPECT_GE(factorizations_after(
+                [](KeptStack* stack, NewtonSolver*, NewtonResult* first, NewtonOptions*) {
+                  stack->Next(*first, 0.0, 0.0);
+                  stack->rows[0].cfm *= 2.0;
+                }),
+            1);
+  EXPECT_GE(factorizations_after(
+                [](KeptStack* stack, NewtonSolver* solver, NewtonResult* first, NewtonOptions*) {
+                  stack->Next(*first, 0.02, 0.0);
+                  NewtonOptions none = KeyedOptions(7);
+                  none.max_iterations = 0;  // not converged: the push is not corrected
+                  NewtonResult unconverged;
+                  EXPECT_FALSE(solver->Solve(stack->bodies, stack->rows, KeptStack::kStep, none,
+                                             &unconverged));
+                }),
+            1);
+}
+
+// With a kept matrix far off the Hessian (the ground contacts' CFM four times what it was,
+// allowed by a loose tolerance) a chord step shrinks the next to about a third: the Hessian is
+// factored again, and the answer is the factoring solver's. 0.1 % off, the chord steps shrink
+// fast and need no factorization.
+TEST(NewtonSolverTest, ChordStepsThatDoNotShrinkEnoughFactorTheHessianAgain) {
+  for (double scale : {4.0, 1.001}) {
+    KeptStack stack;
+    NewtonSolver kept, fresh;
+    NewtonOptions options = KeyedOptions(7);
+    options.kept_tolerance = 10.0;
+    NewtonResult first, again, check;
+    ASSERT_TRUE(kept.Solve(stack.bodies, stack.rows, KeptStack::kStep, options, &first));
+    stack.Next(first, 1e-5, 0.0);
+    for (NewtonRow& row : stack.rows) row.cfm *= row.b < 0 ? scale : 1.0;
+    ASSERT_TRUE(kept.Solve(stack.bodies, stack.rows, KeptStack::kStep, options, &again));
+    ASSERT_TRUE(fresh.Solve(stack.bodies, stack.rows, KeptStack::kStep, {}, &check));
+    EXPECT_EQ(again.factorizations, scale > 2.0 ? 1 : 0) << scale;
+    for (size_t k = 0; k < stack.bodies.size(); ++k) {
+      EXPECT_LE((again.velocity[k] - check.velocity[k]).cwiseAbs().maxCoeff(), 1e-12) << scale;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace lamina::core
