@@ -298,15 +298,18 @@ class NewtonSolver::ReducedSpace {
   size_t group_row_ = 0;  ///< its first row
 };
 
+// one island's kept factorization and what it was formed from
 struct NewtonSolver::Kept {
-  unsigned long long island = 0;  ///< 0: nothing kept
+  unsigned long long island = 0;  ///< 0: a free slot
+  long long used = 0;             ///< the solve that last used it (the oldest goes first)
+  double step = 0.0;
   std::vector<NewtonBody> bodies;
   std::vector<NewtonRow> rows;
   std::vector<signed char> regime;
+  ProfileCholesky cholesky;
 };
 
-NewtonSolver::NewtonSolver()
-    : reduced_(std::make_unique<Reduced>()), kept_(std::make_unique<Kept>()) {}
+NewtonSolver::NewtonSolver() : reduced_(std::make_unique<Reduced>()) {}
 NewtonSolver::~NewtonSolver() = default;
 
 // the first block column of each body's block row: the lowest body a row couples it with (the
@@ -337,14 +340,12 @@ bool NearRow(const NewtonRow& a, const NewtonRow& b, double tolerance) {
 
 }  // namespace
 
-// whether the kept factorization is that of the island of `options` (not 0) with these bodies
-// and rows, to its tolerance
-bool NewtonSolver::KeptFits(const std::vector<NewtonBody>& bodies,
+// whether `kept` is the factorization of these bodies and rows, at this step, to the tolerance
+bool NewtonSolver::KeptFits(const Kept& kept, const std::vector<NewtonBody>& bodies,
                             const std::vector<NewtonRow>& rows,
                             const NewtonOptions& options) const {
-  const Kept& kept = *kept_;
   const double tolerance = options.kept_tolerance;
-  if (options.island == 0 || kept.island != options.island || kept.bodies.size() != bodies.size() ||
+  if (kept.step != step_ || kept.bodies.size() != bodies.size() ||
       kept.rows.size() != rows.size()) {
     return false;
   }
@@ -357,22 +358,62 @@ bool NewtonSolver::KeptFits(const std::vector<NewtonBody>& bodies,
   return true;
 }
 
-// after a solve: a factorization formed in it is kept with what it was formed from (the rows do
-// not change within a solve), one kept before stays as it was, and nothing is kept after a solve
-// that did not converge
-void NewtonSolver::KeepFactor(const std::vector<NewtonBody>* bodies,
-                              const std::vector<NewtonRow>& rows, unsigned long long island,
-                              bool converged) {
-  Kept& kept = *kept_;
-  if (bodies == nullptr || island == 0 || !converged || !factored_) {
-    kept.island = 0;
-    return;
+// Before a solve: the slot of the island of `options` (-1: none; a solve of fewer than two
+// Newton steps keeps nothing: a chord step needs a second to find it is done), and whether its
+// factorization serves this solve: then it is swapped into cholesky_ with its regimes, and the
+// slot is free until KeepFactor gives it back (a slot's description is always that of its
+// factorization).
+int NewtonSolver::TakeKept(const std::vector<NewtonBody>* bodies,
+                           const std::vector<NewtonRow>& rows, const NewtonOptions& options) {
+  stale_ = false;
+  if (bodies == nullptr || options.island == 0 || options.max_iterations < 2) return -1;
+  ++solves_;
+  int slot = -1;
+  for (size_t k = 0; k < kept_.size(); ++k) {
+    if (kept_[k].island == options.island) slot = static_cast<int>(k);
   }
+  if (slot < 0 || !KeptFits(kept_[slot], *bodies, rows, options)) return slot;
+  Kept& kept = kept_[slot];
+  std::swap(cholesky_, kept.cholesky);
+  kept.island = 0;
+  regime_ = kept.regime;
+  stale_ = true;
+  return slot;
+}
+
+// After a solve (`slot`: TakeKept's): a kept factorization that served to the end goes back to
+// its slot; one formed in the solve is kept there, or in a free or the oldest slot, with what it
+// was formed from (the rows do not change within a solve); after a solve that did not converge
+// nothing is kept (a slot TakeKept freed stays free).
+void NewtonSolver::KeepFactor(int slot, const std::vector<NewtonBody>* bodies,
+                              const std::vector<NewtonRow>& rows, const NewtonOptions& options,
+                              bool converged) {
+  if (bodies == nullptr || options.island == 0 || options.max_iterations < 2) return;
+  if (!converged || !factored_) return;
+  if (slot < 0) slot = FreeSlot();
+  Kept& kept = kept_[slot];
+  std::swap(cholesky_, kept.cholesky);
+  kept.used = solves_;
+  kept.island = options.island;
   if (stale_) return;
-  kept.island = island;
+  kept.step = step_;
   kept.bodies = *bodies;
   kept.rows = rows;
   kept.regime = regime_;
+}
+
+// a slot for another island: a free one, a new one up to kMostKeptIslands, or the oldest
+int NewtonSolver::FreeSlot() {
+  int oldest = -1;
+  for (size_t k = 0; k < kept_.size(); ++k) {
+    if (kept_[k].island == 0) return static_cast<int>(k);
+    if (oldest < 0 || kept_[k].used < kept_[oldest].used) oldest = static_cast<int>(k);
+  }
+  if (kept_.size() < kMostKeptIslands) {
+    kept_.emplace_back();
+    return static_cast<int>(kept_.size()) - 1;
+  }
+  return oldest;
 }
 
 double NewtonSolver::RowForce(size_t i, double x) const {
@@ -595,8 +636,7 @@ bool NewtonSolver::SolveIn(Space* space, size_t bodies, const std::vector<Newton
   offsets_current_ = false;
   factorizations_ = 0;
   const std::vector<NewtonBody>* kept_bodies = space->KeptBodies();
-  stale_ = kept_bodies != nullptr && KeptFits(*kept_bodies, rows, options);
-  if (stale_) regime_ = kept_->regime;
+  const int slot = TakeKept(kept_bodies, rows, options);
   factored_ = stale_;
   // the first round's friction bounds from the normal forces at the free velocity (with gravity
   // on every contact it loads), the start where the step began
@@ -617,7 +657,7 @@ bool NewtonSolver::SolveIn(Space* space, size_t bodies, const std::vector<Newton
   }
   result->iterations = options.max_iterations - budget;
   result->factorizations = factorizations_;
-  KeepFactor(kept_bodies, rows, options.island, result->converged);
+  KeepFactor(slot, kept_bodies, rows, options, result->converged);
   result->velocity.resize(bodies);
   for (size_t k = 0; k < bodies; ++k) result->velocity[k] = space->BodyVelocity(k, v_);
   result->force.resize(m);

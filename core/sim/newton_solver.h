@@ -25,10 +25,11 @@
 // A Newton step whose rows inside their bounds are those of the factorization in hand (a new
 // round of friction bounds, most often) keeps it: the matrix is the same.
 //
-// Kept from step to step (NewtonOptions::island): an island solved again with the same bodies
-// and rows, none of whose Jacobians, CFMs, masses or inertias moved by more than
+// Kept from step to step (NewtonOptions::island): an island solved again at the same step with
+// the same bodies and rows, none of whose Jacobians, CFMs, masses or inertias moved by more than
 // kKeptFactorTolerance since its Hessian was factored (a resting stack, a pile at rest), starts
-// from that factorization instead of forming and factoring the Hessian again. Its steps are then
+// from that factorization instead of forming and factoring the Hessian again (the last
+// kMostKeptIslands islands keep theirs). Its steps are then
 // chord steps (the direction from a matrix a little off the Hessian): still descent directions,
 // and the line search is the same, but a full step no longer lands on the minimum, so the solve
 // goes on until a step is below the tolerance, as far as each chord step shrinks to at most
@@ -81,11 +82,14 @@ struct NewtonRow {
 inline constexpr double kKeptFactorTolerance = 1e-10;
 /// A chord step at most this fraction of the one before, or the Hessian is factored again.
 inline constexpr double kChordContraction = 0.25;
+/// Islands whose factorizations are kept at once (the one used longest ago makes room).
+inline constexpr size_t kMostKeptIslands = 8;
 
 struct NewtonOptions {
   int max_iterations = 100;  ///< Newton steps in all rounds together
-  /// the caller's key of the island (0: none): a solve with the key of the last converged solve
-  /// may start from its factorization (above); only for the body space (Solve)
+  /// the caller's key of the island (0: none): a solve with the key of an earlier converged solve
+  /// may start from its factorization (above); only for the body space (Solve), and with
+  /// max_iterations of 2 or more (a chord step needs a second to find it is done)
   unsigned long long island = 0;
   double kept_tolerance = kKeptFactorTolerance;  ///< (for tests)
   int max_rounds = 100;  ///< rounds of friction bounds (each takes a Newton step or more)
@@ -167,10 +171,13 @@ class NewtonSolver {
   template <class Space>
   bool NewtonSteps(Space& space, const std::vector<NewtonRow>& rows, const NewtonOptions& options,
                    int* budget);
-  bool KeptFits(const std::vector<NewtonBody>& bodies, const std::vector<NewtonRow>& rows,
-                const NewtonOptions& options) const;
-  void KeepFactor(const std::vector<NewtonBody>* bodies, const std::vector<NewtonRow>& rows,
-                  unsigned long long island, bool converged);
+  bool KeptFits(const Kept& kept, const std::vector<NewtonBody>& bodies,
+                const std::vector<NewtonRow>& rows, const NewtonOptions& options) const;
+  int TakeKept(const std::vector<NewtonBody>* bodies, const std::vector<NewtonRow>& rows,
+               const NewtonOptions& options);
+  void KeepFactor(int slot, const std::vector<NewtonBody>* bodies,
+                  const std::vector<NewtonRow>& rows, const NewtonOptions& options, bool converged);
+  int FreeSlot();
   template <class Space>
   bool BoundsSettled(const Space& space, const std::vector<NewtonRow>& rows, double tolerance,
                      bool damped);
@@ -190,7 +197,8 @@ class NewtonSolver {
   double chord_size_ = 0.0;           ///< the last chord step's size
   int factorizations_ = 0;            ///< in this solve
   std::unique_ptr<Reduced> reduced_;  ///< the reduced space's
-  std::unique_ptr<Kept> kept_;
+  std::vector<Kept> kept_;            ///< per island (at most kMostKeptIslands)
+  long long solves_ = 0;              ///< keyed solves so far
 };
 
 }  // namespace lamina::core

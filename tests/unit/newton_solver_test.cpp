@@ -192,16 +192,17 @@ TEST(NewtonSolverTest, AKeptFactorizationServesTheSameIslandAStepLaterWithTheSam
 }
 
 // Anything else factors: another island's key, no key, rows or masses moved beyond the
-// tolerance, and a solve after one that did not converge
+// tolerance, another step, and a solve after one that did not converge
 TEST(NewtonSolverTest, AFactorizationIsKeptOnlyForTheSameIslandWithinTheTolerance) {
-  auto factorizations_after = [](auto change, unsigned long long key = 7) {
+  auto factorizations_after = [](auto change, unsigned long long key = 7,
+                                 double step = KeptStack::kStep) {
     KeptStack stack;
     NewtonSolver solver;
     NewtonResult first, second;
     EXPECT_TRUE(solver.Solve(stack.bodies, stack.rows, KeptStack::kStep, KeyedOptions(7), &first));
     NewtonOptions options = KeyedOptions(key);
     change(&stack, &solver, &first, &options);
-    EXPECT_TRUE(solver.Solve(stack.bodies, stack.rows, KeptStack::kStep, options, &second));
+    EXPECT_TRUE(solver.Solve(stack.bodies, stack.rows, step, options, &second));
     return second.factorizations;
   };
   auto nothing = [](KeptStack* stack, NewtonSolver*, NewtonResult* first, NewtonOptions*) {
@@ -222,16 +223,69 @@ TEST(NewtonSolverTest, AFactorizationIsKeptOnlyForTheSameIslandWithinTheToleranc
                   stack->rows[0].cfm *= 2.0;
                 }),
             1);
-  EXPECT_GE(factorizations_after(
-                [](KeptStack* stack, NewtonSolver* solver, NewtonResult* first, NewtonOptions*) {
-                  stack->Next(*first, 0.02, 0.0);
-                  NewtonOptions none = KeyedOptions(7);
-                  none.max_iterations = 0;  // not converged: the push is not corrected
-                  NewtonResult unconverged;
-                  EXPECT_FALSE(solver->Solve(stack->bodies, stack->rows, KeptStack::kStep, none,
-                                             &unconverged));
-                }),
+  EXPECT_GE(factorizations_after([](KeptStack* stack, NewtonSolver*, NewtonResult* first,
+                                    NewtonOptions*) { stack->Next(*first, 0.0, 0.0); },
+                                 7, 0.5 * KeptStack::kStep),
             1);
+}
+
+// A solve that did not converge (a push that saturates the friction rows, two Newton steps)
+// after one that kept its factorization: the island keeps nothing, and the next step, which the
+// kept matrix would have served (as the control of the test above shows), factors and takes the
+// Newton steps of a solver that keeps nothing, to the same answer (a kept slot whose description
+// were not that of its factorization would take a chord step of a wrong matrix first)
+TEST(NewtonSolverTest, AfterASolveThatDidNotConvergeTheIslandKeepsNothing) {
+  KeptStack stack;
+  NewtonSolver solver, fresh;
+  NewtonResult first, unconverged, again, check;
+  ASSERT_TRUE(solver.Solve(stack.bodies, stack.rows, KeptStack::kStep, KeyedOptions(7), &first));
+  KeptStack pushed = stack;
+  pushed.Next(first, 0.02, 0.0);
+  NewtonOptions two = KeyedOptions(7);
+  two.max_iterations = 2;
+  EXPECT_FALSE(solver.Solve(pushed.bodies, pushed.rows, KeptStack::kStep, two, &unconverged));
+  stack.Next(first, 1e-5, 0.0);
+  ASSERT_TRUE(solver.Solve(stack.bodies, stack.rows, KeptStack::kStep, KeyedOptions(7), &again));
+  ASSERT_TRUE(fresh.Solve(stack.bodies, stack.rows, KeptStack::kStep, {}, &check));
+  EXPECT_EQ(again.factorizations, 1);
+  EXPECT_EQ(again.iterations, check.iterations);
+  for (size_t k = 0; k < stack.bodies.size(); ++k) {
+    EXPECT_LE((again.velocity[k] - check.velocity[k]).cwiseAbs().maxCoeff(), 1e-12) << k;
+  }
+}
+
+// Under a budget of one Newton step nothing is kept (a chord step needs a second to find it is
+// done): every solve factors and converges
+TEST(NewtonSolverTest, ASolveOfOneNewtonStepKeepsNoFactorization) {
+  KeptStack stack;
+  NewtonSolver solver;
+  NewtonOptions options = KeyedOptions(7);
+  options.max_iterations = 1;
+  NewtonResult result;
+  for (int step = 0; step < 4; ++step) {
+    ASSERT_TRUE(solver.Solve(stack.bodies, stack.rows, KeptStack::kStep, options, &result)) << step;
+    EXPECT_EQ(result.factorizations, 1) << step;
+    stack.Next(result, 1e-5, 0.0);
+  }
+}
+
+// Two islands solved in turn by one solver (as ObjectIslands does) each keep their own
+TEST(NewtonSolverTest, IslandsSolvedInTurnEachKeepTheirOwnFactorization) {
+  KeptStack first, second;
+  second.bodies.pop_back();
+  second.rows.resize(second.rows.size() - 12);
+  NewtonSolver solver;
+  NewtonResult a, b;
+  for (int step = 0; step < 3; ++step) {
+    ASSERT_TRUE(solver.Solve(first.bodies, first.rows, KeptStack::kStep, KeyedOptions(7), &a));
+    ASSERT_TRUE(solver.Solve(second.bodies, second.rows, KeptStack::kStep, KeyedOptions(8), &b));
+    EXPECT_EQ(a.factorizations, step == 0 ? 1 : 0) << step;
+    EXPECT_EQ(b.factorizations, step == 0 ? 1 : 0) << step;
+    // (1e-6 m/s: the two-box stack's top box is 3 kg, and its friction bounds are 1.8 N a
+    // contact)
+    first.Next(a, 1e-6, 0.0);
+    second.Next(b, 1e-6, 0.0);
+  }
 }
 
 // With a kept matrix far off the Hessian (the ground contacts' CFM four times what it was,
