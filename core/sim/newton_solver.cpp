@@ -332,6 +332,12 @@ bool NearBody(const NewtonBody& a, const NewtonBody& b, double tolerance) {
          (a.inertia - b.inertia).cwiseAbs().maxCoeff() <= tolerance * a.inertia.trace();
 }
 
+// whether a solve may keep or use a kept factorization: the body space (`bodies`), a key, and
+// two Newton steps or more (a chord step needs a second to find it is done)
+bool Keyable(const std::vector<NewtonBody>* bodies, const NewtonOptions& options) {
+  return bodies != nullptr && options.island != 0 && options.max_iterations >= 2;
+}
+
 bool NearRow(const NewtonRow& a, const NewtonRow& b, double tolerance) {
   return a.a == b.a && a.b == b.b && std::abs(a.cfm - b.cfm) <= tolerance * a.cfm &&
          (a.ja - b.ja).cwiseAbs().maxCoeff() <= tolerance &&
@@ -358,15 +364,14 @@ bool NewtonSolver::KeptFits(const Kept& kept, const std::vector<NewtonBody>& bod
   return true;
 }
 
-// Before a solve: the slot of the island of `options` (-1: none; a solve of fewer than two
-// Newton steps keeps nothing: a chord step needs a second to find it is done), and whether its
+// Before a solve: the slot of the island of `options` (-1: none, or not Keyable), and whether its
 // factorization serves this solve: then it is swapped into cholesky_ with its regimes, and the
 // slot is free until KeepFactor gives it back (a slot's description is always that of its
 // factorization).
 int NewtonSolver::TakeKept(const std::vector<NewtonBody>* bodies,
                            const std::vector<NewtonRow>& rows, const NewtonOptions& options) {
   stale_ = false;
-  if (bodies == nullptr || options.island == 0 || options.max_iterations < 2) return -1;
+  if (!Keyable(bodies, options)) return -1;
   ++solves_;
   int slot = -1;
   for (size_t k = 0; k < kept_.size(); ++k) {
@@ -388,8 +393,7 @@ int NewtonSolver::TakeKept(const std::vector<NewtonBody>* bodies,
 void NewtonSolver::KeepFactor(int slot, const std::vector<NewtonBody>* bodies,
                               const std::vector<NewtonRow>& rows, const NewtonOptions& options,
                               bool converged) {
-  if (bodies == nullptr || options.island == 0 || options.max_iterations < 2) return;
-  if (!converged || !factored_) return;
+  if (!Keyable(bodies, options) || !converged || !factored_) return;
   if (slot < 0) slot = FreeSlot();
   Kept& kept = kept_[slot];
   std::swap(cholesky_, kept.cholesky);
@@ -551,7 +555,7 @@ double NewtonSolver::LineSearch(const Space& space, size_t rows) {
 template <class Space>
 bool NewtonSolver::NewtonSteps(Space& space, const std::vector<NewtonRow>& rows,
                                const NewtonOptions& options, int* budget) {
-  chord_size_ = kInf;
+  double chord_size = kInf;  // the last chord step's
   while (*budget > 0) {
     RowOffsets(space, rows);
     Gradient(space, rows.size(), v_);
@@ -561,11 +565,11 @@ bool NewtonSolver::NewtonSteps(Space& space, const std::vector<NewtonRow>& rows,
     d_m_d_ = space.MassProduct(direction_, direction_);
     const double size = space.StepSize(direction_);
     if (size <= options.velocity_tolerance) return true;
-    if (stale_ && size > kChordContraction * chord_size_) {
+    if (stale_ && size > kChordContraction * chord_size) {
       factored_ = false;  // the kept matrix is too far off: the Hessian, and this step again
       continue;
     }
-    chord_size_ = size;
+    chord_size = size;
     d_m_offset_ = space.MassOffset(direction_, v_);
     const double alpha = LineSearch(space, rows.size());
     --*budget;

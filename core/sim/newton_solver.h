@@ -194,7 +194,6 @@ class NewtonSolver {
   bool factored_ = false;             ///< the factorization in hand is that of regime_
   bool offsets_current_ = false;      ///< x_ is c − J v_ as RowOffsets computes it
   bool stale_ = false;                ///< the factorization in hand is a kept one (chord steps)
-  double chord_size_ = 0.0;           ///< the last chord step's size
   int factorizations_ = 0;            ///< in this solve
   std::unique_ptr<Reduced> reduced_;  ///< the reduced space's
   std::vector<Kept> kept_;            ///< per island (at most kMostKeptIslands)

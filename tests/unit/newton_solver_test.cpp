@@ -169,8 +169,8 @@ NewtonOptions KeyedOptions(unsigned long long island) {
 
 // The same island a step later, its rows moved within the tolerance: no factorization, and the
 // answer of a solver that factors (velocities to 1e-12 m/s; the forces then agree to
-// cfm⁻¹ · 1e-12 = 1e-3 N on the hard rows, of a normal force of about 34 N per contact under
-// the bottom box)
+// cfm⁻¹ · 1e-12 = 1e-3 N on each hard row, so the four normal rows under the bottom box, about
+// 34 N each, to 4e-3 N in sum: checked at 1e-2 N)
 TEST(NewtonSolverTest, AKeptFactorizationServesTheSameIslandAStepLaterWithTheSameAnswer) {
   KeptStack stack;
   NewtonSolver kept, fresh;
@@ -192,7 +192,7 @@ TEST(NewtonSolverTest, AKeptFactorizationServesTheSameIslandAStepLaterWithTheSam
 }
 
 // Anything else factors: another island's key, no key, rows or masses moved beyond the
-// tolerance, another step, and a solve after one that did not converge
+// tolerance, a changed CFM, another step (a solve after one that did not converge: below)
 TEST(NewtonSolverTest, AFactorizationIsKeptOnlyForTheSameIslandWithinTheTolerance) {
   auto factorizations_after = [](auto change, unsigned long long key = 7,
                                  double step = KeptStack::kStep) {
