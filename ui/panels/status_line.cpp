@@ -23,7 +23,10 @@ void DrawStatusLine(const PanelContext& context) {
   const SessionFrame& frame = context.frame;
   const ViewerState& state = *context.state;
   if (BeginStatusStrip("##status")) {
-    ImGui::Text("%s  t = %.3f s  %.2fx real time (speed %.2fx)  %s  %.1f ms/frame%s",
+    // (the two wall-clock figures in fields of fixed width: the default font is monospaced, so
+    // what follows them stays in place whatever their digits; a lockstep capture's pixels then
+    // differ only in those digits)
+    ImGui::Text("%s  t = %.3f s  %6.2fx real time (speed %.2fx)  %s  %6.1f ms/frame%s",
                 frame.playing ? "playing" : "paused ", frame.time, frame.real_time_factor,
                 frame.speed, core::StepStatusName(frame.status), state.frame_milliseconds,
                 frame.dirty ? "  [unsaved]" : "");
