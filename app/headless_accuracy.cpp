@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "app/headless_accuracy.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -101,7 +102,10 @@ bool WriteFile(const fs::path& path, const std::string& text) {
   return static_cast<bool>(file);
 }
 
-std::string Machine() {
+// the cores, the CPU and how many runs shared them at a time (`threads`, 0: one per core)
+std::string Machine(int threads) {
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned at_once = threads > 0 ? static_cast<unsigned>(threads) : cores;
   std::ifstream cpuinfo("/proc/cpuinfo");
   std::string line, model = "unknown CPU";
   while (std::getline(cpuinfo, line)) {
@@ -110,7 +114,8 @@ std::string Machine() {
       break;
     }
   }
-  return std::to_string(std::thread::hardware_concurrency()) + " cores, " + model;
+  return std::to_string(cores) + " cores, " + model + ", " + std::to_string(at_once) +
+         (at_once == 1 ? " run" : " runs") + " at a time";
 }
 
 std::string Today() {
@@ -141,7 +146,7 @@ bool WriteMarkdown(const std::vector<core::AccuracyRun>& runs,
   core::MarkdownContext context;
   context.plots_dir = fs::relative(fs::absolute(options.out), file.parent_path()).generic_string();
   context.command = "make accuracy";
-  context.machine = Machine();
+  context.machine = Machine(options.threads);
   context.date = Today();
   return WriteFile(file, core::AccuracyMarkdown(runs, bars, context));
 }

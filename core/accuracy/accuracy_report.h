@@ -41,7 +41,7 @@ std::string AccuracyPlotName(const AccuracyScene& scene, PlotAxis axis);
 struct MarkdownContext {
   std::string plots_dir;  ///< relative to the Markdown file, e.g. "accuracy"
   std::string command;    ///< the command that produced it
-  std::string machine;    ///< e.g. "2 cores, Intel Xeon ..."
+  std::string machine;    ///< e.g. "2 cores, Intel Xeon ..., 2 runs at a time"
   std::string date;       ///< UTC date of the run
 };
 std::string AccuracyMarkdown(const std::vector<AccuracyRun>& runs,

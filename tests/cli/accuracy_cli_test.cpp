@@ -41,7 +41,10 @@ TEST(AccuracyCliTest, SmallSweepWritesEveryOutput) {
   const std::string csv = test::ReadFile(out + "/runs.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
   EXPECT_THAT(test::ReadFile(out + "/bouncing_ball-time.svg"), HasSubstr("exact (slope"));
-  EXPECT_THAT(test::ReadFile(out + "/page.md"), HasSubstr("](./bouncing_ball-step.svg)"));
+  const std::string page = test::ReadFile(out + "/page.md");
+  EXPECT_THAT(page, HasSubstr("](./bouncing_ball-step.svg)"));
+  // the runs shared the machine two at a time, and the page says so
+  EXPECT_THAT(page, HasSubstr(", 2 runs at a time, by `make accuracy`"));
 }
 
 TEST(AccuracyCliTest, UnknownSceneAndSolverAreNamed) {
