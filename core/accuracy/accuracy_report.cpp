@@ -312,9 +312,9 @@ std::string Method() {
 - **Time.** The CPU time of the stepping loop on the run's own thread
   (`CLOCK_THREAD_CPUTIME_ID`): loading and building are left out, and runs in parallel do not
   count each other's time. They still share the machine (caches, memory, the host under a
-  virtual machine): on the 2-core machine of these pages a run beside another took up to 70 %
-  more CPU time than alone, so the first line says how many ran at a time, and `--threads 1`
-  runs them one by one. Real time factor = simulated time / that CPU time.
+  virtual machine): on the project's 2-core virtual machine (2026-12-01) a run beside another
+  took up to 70 % more CPU time than alone, so the first line says how many ran at a time, and
+  `--threads 1` runs them one by one. Real time factor = simulated time / that CPU time.
 - **Flags.** A run's status is the worst step status it saw (`adaptive step`, `contact
   unreliable`, `unstable`, `error`); rollbacks, the shortest step taken, instability corrections
   and non-finite states undone are in `runs.csv` and `runs.json`.
