@@ -288,6 +288,25 @@ TEST(NewtonSolverTest, IslandsSolvedInTurnEachKeepTheirOwnFactorization) {
   }
 }
 
+// One island more than kMostKeptIslands: the one solved longest ago makes room, and the others
+// keep theirs (each island here is the same resting stack under its own key, which its kept
+// factorization serves unchanged)
+TEST(NewtonSolverTest, TheIslandSolvedLongestAgoMakesRoomForAnother) {
+  const KeptStack stack;
+  NewtonSolver solver;
+  auto factorizations = [&](unsigned long long key) {
+    NewtonResult result;
+    EXPECT_TRUE(
+        solver.Solve(stack.bodies, stack.rows, KeptStack::kStep, KeyedOptions(key), &result));
+    return result.factorizations;
+  };
+  const unsigned long long last = kMostKeptIslands + 1;
+  for (unsigned long long key = 1; key <= last; ++key) EXPECT_EQ(factorizations(key), 1) << key;
+  EXPECT_EQ(factorizations(last), 0);  // the newest keeps its own
+  EXPECT_EQ(factorizations(2), 0);     // the second oldest too
+  EXPECT_EQ(factorizations(1), 1);     // the oldest made room for the last
+}
+
 // With a kept matrix far off the Hessian (the ground contacts' CFM four times what it was,
 // allowed by a loose tolerance) a chord step shrinks the next to about a third: the Hessian is
 // factored again, and the answer is the factoring solver's. 0.1 % off, the chord steps shrink
